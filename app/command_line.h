@@ -1,0 +1,34 @@
+#pragma once
+// The shape every facet subcommand shares: the scene file as the positional
+// argument (none: the default scene), --settings FILE.json, --set key=value
+// (repeatable), --size WxH, -o/--output FILE.
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "scene/scene.h"
+#include "settings/render_settings.h"
+
+namespace facet {
+
+struct CommonOptions {
+  std::string scenePath;              // empty: the default scene
+  std::string settingsPath;           // empty: default settings
+  std::vector<std::string> assignments;  // --set key=value, in order
+  std::string size;                   // WxH, empty: from settings
+  std::string output;                 // -o
+};
+
+void addCommonOptions(CLI::App& command, CommonOptions& options, const std::string& outputHelp);
+
+// The settings a command runs with: the file (or the defaults), then each
+// --set in order, then --size. A --set of a camera or light key while that
+// source is auto first fixes the camera or lights where auto put them for
+// this scene, then changes the key.
+RenderSettings settingsFor(const CommonOptions& options, const Scene& scene);
+
+// Parses "WxH" (1..16384 each) or throws facet::Error.
+void parseSize(const std::string& text, int& width, int& height);
+
+}  // namespace facet

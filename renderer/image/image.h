@@ -1,0 +1,41 @@
+#pragma once
+#include <cstdint>
+#include <vector>
+
+namespace facet {
+
+// An RGBA8 image. Rows are stored bottom row first, as OpenGL's window
+// coordinates have their origin at the lower left; files are written top row
+// first, so rows flip exactly once, in the PNG writer and reader.
+struct Rgba8 {
+  std::uint8_t r = 0, g = 0, b = 0, a = 0;
+  friend bool operator==(const Rgba8&, const Rgba8&) = default;
+};
+
+class Image {
+ public:
+  Image() = default;
+  Image(int width, int height, Rgba8 fill = {});
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  bool empty() const { return width_ == 0 || height_ == 0; }
+
+  // (x, y) with y = 0 at the bottom row.
+  Rgba8& at(int x, int y) { return pixels_[index(x, y)]; }
+  const Rgba8& at(int x, int y) const { return pixels_[index(x, y)]; }
+
+  Rgba8* data() { return pixels_.data(); }
+  const Rgba8* data() const { return pixels_.data(); }
+
+  friend bool operator==(const Image&, const Image&) = default;
+
+ private:
+  std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x); }
+
+  int width_ = 0;
+  int height_ = 0;
+  std::vector<Rgba8> pixels_;
+};
+
+}  // namespace facet

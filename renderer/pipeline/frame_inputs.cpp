@@ -1,0 +1,79 @@
+#include "pipeline/frame_inputs.h"
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "common/error.h"
+#include "math/eye_matrix.h"
+#include "math/normal_matrix.h"
+#include "math/projection.h"
+#include "math/viewport.h"
+#include "pipeline/view_setup.h"
+
+namespace facet {
+
+FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings) {
+  FrameInputs f;
+  f.width = settings.width;
+  f.height = settings.height;
+  f.camera = resolveCamera(scene, settings);
+  const CameraSettings& c = f.camera;
+  if (!eyeFrameIsValid(c.eye, c.reference, c.up))
+    throw Error("settings key 'camera': eye, reference and up do not define a view (eye on the reference point, or up along the line of sight)");
+  if (!(c.near > 0.0f) || !(c.far > c.near)) throw Error("settings key 'camera.far': must be greater than camera.near > 0");
+
+  const float aspect = static_cast<float>(f.width) / static_cast<float>(f.height);
+  f.eyePosition = c.eye;
+  f.towardEye = -glm::normalize(c.reference - c.eye);
+  f.perspective = c.projection == ProjectionKind::Perspective;
+  f.eyeFromWorld = eyeMatrix(c.eye, c.reference, c.up);
+  f.clipFromEye = f.perspective ? perspective(glm::radians(c.halfAngleDeg), aspect, c.near, c.far)
+                                : parallel(c.parallelWidth, c.parallelWidth / aspect, c.near, c.far);
+  f.clipFromWorld = f.clipFromEye * f.eyeFromWorld;
+  f.windowFromNdc = viewportMatrix(f.width, f.height);
+
+  for (const Material& m : scene.materials) f.materials.push_back(courseMaterial(m, settings.material));
+  f.materials.push_back(courseMaterial(Material{}, settings.material));  // glTF's default material
+  const int defaultMaterial = static_cast<int>(f.materials.size() - 1);
+
+  f.instances.reserve(scene.instances.size());
+  for (const MeshInstance& instance : scene.instances) {
+    FrameInstance fi;
+    fi.mesh = instance.mesh;
+    fi.worldFromModel = instance.worldFromModel;
+    fi.normalMatrix = normalMatrix(instance.worldFromModel);
+    fi.clipFromModel = f.clipFromWorld * instance.worldFromModel;
+    const int material = scene.meshes[static_cast<std::size_t>(instance.mesh)].material;
+    fi.material = material >= 0 && material < defaultMaterial ? material : defaultMaterial;
+    f.instances.push_back(fi);
+  }
+
+  // Shadow-map window coordinates: [-1,1]² of the light's NDC onto [0,1]².
+  const glm::mat4 shadowWindowFromNdc = windowToViewport({-1, 1, -1, 1}, {0, 1, 0, 1});
+  const Sphere sphere = sceneSphere(scene);
+  for (const Light& light : resolveLights(scene, settings)) {
+    FrameLight fl;
+    fl.light = light;
+    if (light.kind != LightKind::Point) fl.light.direction = glm::normalize(light.direction);
+    if (light.kind == LightKind::Spot) fl.cosCutoff = std::cos(glm::radians(light.spotCutoffDeg));
+    fl.hasShadowMap = settings.shadows.enabled && light.castsShadow;
+    if (fl.hasShadowMap) {
+      fl.frustum = lightFrustum(fl.light, sphere);
+      for (int face = 0; face < fl.frustum.faceCount; ++face)
+        fl.shadowFromWorld[static_cast<std::size_t>(face)] = shadowWindowFromNdc * fl.frustum.clipFromWorld[static_cast<std::size_t>(face)];
+    }
+    f.lights.push_back(fl);
+  }
+
+  f.ambient = settings.ambient;
+  f.shading = settings.shading;
+  f.specular = settings.specular;
+  f.cullBackFaces = settings.cullBackFaces;
+  f.shadows = settings.shadows;
+  f.background = settings.background;
+  return f;
+}
+
+}  // namespace facet

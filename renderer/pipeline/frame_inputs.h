@@ -1,0 +1,64 @@
+#pragma once
+// Everything a backend needs for one frame, computed once on the CPU by
+// buildFrameInputs: every matrix (camera, viewport, normal, light), the
+// resolved lights and course material coefficients. Backends consume these
+// values; they never build a camera or light matrix themselves.
+#include <array>
+#include <vector>
+
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+
+#include "pipeline/light_frustum.h"
+#include "pipeline/material_coefficients.h"
+#include "scene/scene.h"
+#include "settings/render_settings.h"
+
+namespace facet {
+
+struct FrameInstance {
+  int mesh = 0;                   // index into Scene::meshes
+  glm::mat4 worldFromModel{1.0f}; // TM
+  glm::mat3 normalMatrix{1.0f};   // (TM^T)^-1, upper 3x3
+  glm::mat4 clipFromModel{1.0f};  // PM·EM·TM
+  int material = 0;               // index into FrameInputs::materials (never -1)
+};
+
+struct FrameLight {
+  Light light;                    // world space, direction normalized
+  float cosCutoff = -1.0f;        // cos β (spot); -1 for other kinds
+  bool hasShadowMap = false;      // castsShadow and shadows enabled
+  LightFrustum frustum;           // faces used in pass 1 and pass 2
+  // Per face: maps a world point to the shadow map's window coordinates:
+  // after the divide by w, (u, v) in [0,1]² and window z in [0,1].
+  std::array<glm::mat4, 6> shadowFromWorld{};
+};
+
+struct FrameInputs {
+  int width = 0, height = 0;      // pixels
+  CameraSettings camera;          // resolved (source = manual)
+  glm::vec3 eyePosition{0.0f};    // P_eye, world space
+  glm::vec3 towardEye{0.0f};      // -k, world space: V for parallel projection
+  bool perspective = true;
+  glm::mat4 eyeFromWorld{1.0f};   // EM
+  glm::mat4 clipFromEye{1.0f};    // PM (perspective or parallel)
+  glm::mat4 clipFromWorld{1.0f};  // PM·EM
+  glm::mat4 windowFromNdc{1.0f};  // window-to-viewport: [-1,1]² -> [0,W]×[0,H], z unchanged
+
+  std::vector<FrameInstance> instances;
+  std::vector<CourseMaterial> materials;  // the scene's, then the default material last
+  std::vector<FrameLight> lights;
+
+  float ambient = 0;              // I_a
+  ShadingMode shading = ShadingMode::Phong;
+  SpecularModel specular = SpecularModel::BlinnPhong;
+  bool cullBackFaces = true;
+  ShadowSettings shadows;
+  glm::vec3 background{0.0f};    // linear RGB
+};
+
+// Throws facet::Error (naming the settings key) when the camera cannot be
+// built: eye on the reference point, up along the line of sight.
+FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings);
+
+}  // namespace facet

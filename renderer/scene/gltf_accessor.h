@@ -1,0 +1,31 @@
+#pragma once
+// Reading glTF accessors with every range checked. tinygltf trusts what a file
+// says about offsets, strides and counts; these functions do not. Problems
+// are reported with the glTF-Validator's names (ACCESSOR_TOO_LONG, ...).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace tinygltf {
+class Model;
+}
+
+namespace facet {
+
+// Thrown for a problem in one accessor; the loader decides whether that
+// skips a primitive or refuses the file. what() starts with "accessors[N]".
+struct AccessorError {
+  std::string message;
+};
+
+// Float VEC3 (POSITION, NORMAL).
+std::vector<glm::vec3> readVec3(const tinygltf::Model& model, int accessor);
+// VEC2 of float, or normalized unsigned byte/short (TEXCOORD_n).
+std::vector<glm::vec2> readVec2(const tinygltf::Model& model, int accessor);
+// SCALAR unsigned byte/short/int (indices).
+std::vector<std::uint32_t> readIndices(const tinygltf::Model& model, int accessor);
+
+}  // namespace facet

@@ -1,0 +1,608 @@
+// Index of this file
+// [SECTION] Limits
+// [SECTION] File checks before tinygltf parses (size, GLB header, JSON nesting)
+// [SECTION] Callbacks that keep tinygltf inside the asset's folder and check images
+// [SECTION] Materials and textures
+// [SECTION] Primitives to meshes
+// [SECTION] Nodes: world transforms, instances, cameras, lights
+// [SECTION] loadGltf
+#include "scene/gltf_loader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <stb_image.h>
+#include <tiny_gltf.h>
+
+#include "common/atomic_file.h"
+#include "common/error.h"
+#include "math/transforms.h"
+#include "scene/gltf_accessor.h"
+#include "scene/vertex_normals.h"
+
+namespace facet {
+namespace {
+
+// [SECTION] Limits
+// Beyond these a file is refused with a message instead of a huge allocation
+// or a deep recursion.
+constexpr std::uint64_t kMaxFileBytes = 1ull << 30;     // .gltf/.glb and each external buffer
+constexpr int kMaxJsonDepth = 64;                       // glTF needs about 8
+constexpr int kMaxNodeDepth = 256;                      // node hierarchy
+constexpr int kMaxImageSide = 16384;                    // texture width/height
+constexpr std::uint64_t kMaxSceneTriangles = 100'000'000;  // over all instances
+
+using Warnings = std::vector<std::string>;
+
+std::string at(const char* array, std::size_t index) { return std::string(array) + "[" + std::to_string(index) + "]"; }
+
+// [SECTION] File checks before tinygltf parses
+
+// Deepest nesting of objects and arrays in JSON text (strings skipped).
+// tinygltf's JSON parser recurses, so a deeply nested file would overflow the stack.
+int jsonDepth(const char* text, std::size_t length) {
+  int depth = 0, deepest = 0;
+  bool inString = false;
+  for (std::size_t i = 0; i < length; ++i) {
+    const char c = text[i];
+    if (inString) {
+      if (c == '\\') ++i;
+      else if (c == '"') inString = false;
+    } else if (c == '"') {
+      inString = true;
+    } else if (c == '{' || c == '[') {
+      deepest = std::max(deepest, ++depth);
+      if (deepest > kMaxJsonDepth) return deepest;
+    } else if (c == '}' || c == ']') {
+      --depth;
+    }
+  }
+  return deepest;
+}
+
+std::uint32_t readU32(const std::string& bytes, std::size_t offset) {
+  std::uint32_t v;
+  std::memcpy(&v, bytes.data() + offset, 4);
+  return v;  // GLB is little-endian, as is every machine facet builds for
+}
+
+// The JSON text of a .glb, after checking its header and chunk lengths
+// (the glTF-Validator's GLB_* checks).
+std::pair<std::size_t, std::size_t> glbJsonChunk(const std::string& path, const std::string& bytes) {
+  if (bytes.size() < 20) throw Error(path + ": GLB file of " + std::to_string(bytes.size()) + " bytes is too short for its header (GLB_UNEXPECTED_END_OF_HEADER)");
+  if (std::memcmp(bytes.data(), "glTF", 4) != 0) throw Error(path + ": not a GLB file: magic is not 'glTF' (GLB_INVALID_MAGIC)");
+  if (readU32(bytes, 4) != 2) throw Error(path + ": GLB version " + std::to_string(readU32(bytes, 4)) + " is not 2 (GLB_INVALID_VERSION)");
+  const std::uint64_t length = readU32(bytes, 8);
+  if (length > bytes.size()) throw Error(path + ": GLB header says " + std::to_string(length) + " bytes, file has " + std::to_string(bytes.size()) + " (GLB_LENGTH_TOO_SMALL)");
+  const std::uint64_t jsonLength = readU32(bytes, 12);
+  if (readU32(bytes, 16) != 0x4E4F534Au) throw Error(path + ": first GLB chunk is not JSON (GLB_UNEXPECTED_FIRST_CHUNK)");
+  if (20 + jsonLength > length) throw Error(path + ": GLB JSON chunk of " + std::to_string(jsonLength) + " bytes runs past the end (GLB_CHUNK_TOO_BIG)");
+  const std::uint64_t next = 20 + ((jsonLength + 3) & ~3ull);
+  if (next + 8 <= length) {  // a BIN chunk follows
+    const std::uint64_t binLength = readU32(bytes, next);
+    if (next + 8 + binLength > length) throw Error(path + ": GLB BIN chunk of " + std::to_string(binLength) + " bytes runs past the end (GLB_CHUNK_TOO_BIG)");
+    if (binLength == 0) throw Error(path + ": GLB BIN chunk is empty (GLB_EMPTY_CHUNK)");
+  }
+  return {20, jsonLength};
+}
+
+// [SECTION] Callbacks that keep tinygltf inside the asset's folder and check images
+
+struct AssetFolder {
+  std::filesystem::path root;  // canonical folder of the .gltf/.glb
+};
+
+bool fileExists(const std::string& path, void*) {
+  std::error_code ec;
+  return std::filesystem::is_regular_file(path, ec);
+}
+
+std::string expandFilePath(const std::string& path, void*) { return path; }  // no ~ or $VAR expansion
+
+bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+  namespace fs = std::filesystem;
+  const auto* folder = static_cast<const AssetFolder*>(user);
+  std::error_code ec;
+  const fs::path canonical = fs::weakly_canonical(path, ec);
+  const auto [rootEnd, unused] = std::mismatch(folder->root.begin(), folder->root.end(), canonical.begin(), canonical.end());
+  (void)unused;
+  if (ec || rootEnd != folder->root.end()) {
+    if (err) *err += "'" + path + "' is outside the asset's folder\n";
+    return false;
+  }
+  try {
+    const std::string bytes = readFile(canonical.string(), kMaxFileBytes);
+    out->assign(bytes.begin(), bytes.end());
+    return true;
+  } catch (const Error& e) {
+    if (err) *err += std::string(e.what()) + "\n";
+    return false;
+  }
+}
+
+bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+  if (err) *err += "facet never writes glTF files\n";
+  return false;
+}
+
+// Decodes PNG and JPEG only, after checking magic bytes and dimensions
+// (stbi_info_from_memory) so that stb_image never sees an absurd header.
+// An image that cannot be decoded is left empty with a warning: the model is
+// still drawn, untextured.
+bool loadImage(tinygltf::Image* image, const int index, std::string*, std::string* warn, int, int,
+               const unsigned char* bytes, int size, void*) {
+  const std::string name = at("images", static_cast<std::size_t>(index));
+  const auto skip = [&](const std::string& why) {
+    if (warn) *warn += name + ": " + why + "; drawn without this texture\n";
+    image->image.clear();
+    image->width = image->height = 0;
+    return true;
+  };
+  static constexpr unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  static constexpr unsigned char kJpeg[3] = {0xFF, 0xD8, 0xFF};
+  const bool png = size >= 8 && std::memcmp(bytes, kPng, 8) == 0;
+  const bool jpeg = size >= 3 && std::memcmp(bytes, kJpeg, 3) == 0;
+  if (!png && !jpeg) return skip("not a PNG or JPEG image");
+  int w = 0, h = 0, channels = 0;
+  if (!stbi_info_from_memory(bytes, size, &w, &h, &channels)) return skip("unreadable image header");
+  if (w <= 0 || h <= 0 || w > kMaxImageSide || h > kMaxImageSide)
+    return skip("image size " + std::to_string(w) + "x" + std::to_string(h) + " is out of range");
+  stbi_uc* pixels = stbi_load_from_memory(bytes, size, &w, &h, &channels, 4);
+  if (!pixels) return skip(std::string("cannot decode image (") + stbi_failure_reason() + ")");
+  image->width = w;
+  image->height = h;
+  image->component = 4;
+  image->bits = 8;
+  image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+  image->image.assign(pixels, pixels + static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4);
+  stbi_image_free(pixels);
+  return true;
+}
+
+// [SECTION] Materials and textures
+
+glm::vec3 vec3Of(const std::vector<double>& v, glm::vec3 fallback) {
+  if (v.size() < 3) return fallback;
+  return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
+}
+
+float clamp01(double v, float fallback) { return std::isfinite(v) ? std::clamp(static_cast<float>(v), 0.0f, 1.0f) : fallback; }
+
+void convertTextures(const tinygltf::Model& model, Scene& scene, Warnings& warnings) {
+  for (std::size_t t = 0; t < model.textures.size(); ++t) {
+    Texture texture;
+    texture.name = model.textures[t].name;
+    const int source = model.textures[t].source;
+    if (source < 0 || static_cast<std::size_t>(source) >= model.images.size()) {
+      warnings.push_back(at("textures", t) + ": source " + std::to_string(source) + " does not exist (UNRESOLVED_REFERENCE); ignored");
+    } else {
+      const tinygltf::Image& img = model.images[static_cast<std::size_t>(source)];
+      const bool decoded = img.width > 0 && img.height > 0 && img.component == 4 && img.bits == 8 &&
+                           img.image.size() == static_cast<std::size_t>(img.width) * static_cast<std::size_t>(img.height) * 4;
+      if (decoded) {
+        texture.image = Image(img.width, img.height);
+        // glTF images are stored top row first; facet::Image keeps the bottom row first.
+        const std::size_t stride = static_cast<std::size_t>(img.width) * 4;
+        for (int y = 0; y < img.height; ++y)
+          std::memcpy(&texture.image.at(0, img.height - 1 - y), img.image.data() + static_cast<std::size_t>(y) * stride, stride);
+      }
+    }
+    scene.textures.push_back(std::move(texture));
+  }
+}
+
+void convertMaterials(const tinygltf::Model& model, Scene& scene, Warnings& warnings) {
+  for (std::size_t m = 0; m < model.materials.size(); ++m) {
+    const tinygltf::Material& src = model.materials[m];
+    Material material;
+    material.name = src.name;
+    const auto& pbr = src.pbrMetallicRoughness;
+    if (pbr.baseColorFactor.size() == 4)
+      material.baseColor = {clamp01(pbr.baseColorFactor[0], 1), clamp01(pbr.baseColorFactor[1], 1),
+                            clamp01(pbr.baseColorFactor[2], 1), clamp01(pbr.baseColorFactor[3], 1)};
+    material.metallic = clamp01(pbr.metallicFactor, 1.0f);
+    material.roughness = clamp01(pbr.roughnessFactor, 1.0f);
+    material.emissive = glm::clamp(vec3Of(src.emissiveFactor, glm::vec3(0.0f)), 0.0f, 1.0f);
+    if (!std::isfinite(material.emissive.x + material.emissive.y + material.emissive.z)) material.emissive = glm::vec3(0.0f);
+    const auto strength = src.extensions.find("KHR_materials_emissive_strength");
+    if (strength != src.extensions.end() && strength->second.Has("emissiveStrength")) {
+      const double s = strength->second.Get("emissiveStrength").GetNumberAsDouble();
+      if (std::isfinite(s) && s >= 0) material.emissive *= static_cast<float>(s);
+    }
+    material.doubleSided = src.doubleSided;
+    const int texture = pbr.baseColorTexture.index;
+    if (texture >= 0) {
+      if (static_cast<std::size_t>(texture) >= scene.textures.size()) {
+        warnings.push_back(at("materials", m) + ": baseColorTexture " + std::to_string(texture) + " does not exist (UNRESOLVED_REFERENCE); ignored");
+      } else if (scene.textures[static_cast<std::size_t>(texture)].image.empty()) {
+        warnings.push_back(at("materials", m) + ": baseColorTexture " + std::to_string(texture) + " has no image; drawn untextured");
+      } else {
+        material.baseColorTexture = texture;
+        if (pbr.baseColorTexture.texCoord != 0)
+          warnings.push_back(at("materials", m) + ": baseColorTexture uses TEXCOORD_" + std::to_string(pbr.baseColorTexture.texCoord) + "; TEXCOORD_0 is used instead");
+      }
+    }
+    scene.materials.push_back(material);
+  }
+}
+
+// [SECTION] Primitives to meshes
+
+// Triangle list from a primitive's index list and mode (4 list, 5 strip, 6 fan).
+std::vector<std::uint32_t> triangleList(const std::vector<std::uint32_t>& idx, int mode) {
+  std::vector<std::uint32_t> out;
+  if (mode == TINYGLTF_MODE_TRIANGLES) {
+    out.assign(idx.begin(), idx.begin() + static_cast<std::ptrdiff_t>(idx.size() / 3 * 3));
+  } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+    for (std::size_t i = 2; i < idx.size(); ++i) {  // every other triangle flips to keep the strip's winding
+      if (i % 2 == 0) out.insert(out.end(), {idx[i - 2], idx[i - 1], idx[i]});
+      else out.insert(out.end(), {idx[i - 1], idx[i - 2], idx[i]});
+    }
+  } else {  // fan
+    for (std::size_t i = 2; i < idx.size(); ++i) out.insert(out.end(), {idx[0], idx[i - 1], idx[i]});
+  }
+  return out;
+}
+
+bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// Converts one primitive; returns false (with a warning) when it is skipped.
+bool convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& prim, const std::string& name, Mesh& mesh,
+                      Warnings& warnings) {
+  const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+  if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+    static const char* kModes[] = {"POINTS", "LINES", "LINE_LOOP", "LINE_STRIP"};
+    warnings.push_back(name + ": mode " + (mode >= 0 && mode < 4 ? kModes[mode] : std::to_string(mode)) + " is not triangles; skipped");
+    return false;
+  }
+  const auto position = prim.attributes.find("POSITION");
+  if (position == prim.attributes.end()) {
+    warnings.push_back(name + ": no POSITION attribute; skipped");
+    return false;
+  }
+  try {
+    mesh.positions = readVec3(model, position->second);
+    std::vector<std::uint32_t> indices;
+    if (prim.indices >= 0) {
+      indices = readIndices(model, prim.indices);
+    } else {
+      indices.resize(mesh.positions.size());
+      for (std::size_t i = 0; i < indices.size(); ++i) indices[i] = static_cast<std::uint32_t>(i);
+    }
+    if (mode == TINYGLTF_MODE_TRIANGLES && indices.size() % 3 != 0)
+      warnings.push_back(name + ": " + std::to_string(indices.size()) + " indices is not a multiple of 3; the last " +
+                         std::to_string(indices.size() % 3) + " ignored");
+    const std::vector<std::uint32_t> triangles = triangleList(indices, mode);
+
+    // Keep the triangles whose three indices are in range and whose corners are finite.
+    const auto vertexCount = mesh.positions.size();
+    std::size_t outOfRange = 0, notFinite = 0;
+    mesh.indices.reserve(triangles.size());
+    for (std::size_t t = 0; t + 2 < triangles.size(); t += 3) {
+      const std::uint32_t a = triangles[t], b = triangles[t + 1], c = triangles[t + 2];
+      if (a >= vertexCount || b >= vertexCount || c >= vertexCount) { ++outOfRange; continue; }
+      if (!finite(mesh.positions[a]) || !finite(mesh.positions[b]) || !finite(mesh.positions[c])) { ++notFinite; continue; }
+      mesh.indices.insert(mesh.indices.end(), {a, b, c});
+    }
+    if (outOfRange)
+      warnings.push_back(name + ": " + std::to_string(outOfRange) + " triangles index past the " + std::to_string(vertexCount) +
+                         " vertices (ACCESSOR_INDEX_OOB); dropped");
+    if (notFinite)
+      warnings.push_back(name + ": " + std::to_string(notFinite) + " triangles have NaN or infinite positions (ACCESSOR_INVALID_FLOAT); dropped");
+    if (mesh.indices.empty()) {
+      warnings.push_back(name + ": no drawable triangles; skipped");
+      return false;
+    }
+
+    bool normalsOk = false;
+    if (const auto normal = prim.attributes.find("NORMAL"); normal != prim.attributes.end()) {
+      try {
+        mesh.normals = readVec3(model, normal->second);
+        if (mesh.normals.size() != vertexCount) {
+          warnings.push_back(name + ": NORMAL has " + std::to_string(mesh.normals.size()) + " elements for " + std::to_string(vertexCount) +
+                             " positions (MESH_PRIMITIVE_UNEQUAL_ACCESSOR_COUNT); normals recomputed");
+        } else {
+          std::size_t bad = 0;
+          for (glm::vec3& n : mesh.normals) {
+            const float length = glm::length(n);
+            if (!std::isfinite(length) || length < 1e-6f) ++bad;
+            else n /= length;
+          }
+          if (bad) warnings.push_back(name + ": " + std::to_string(bad) + " normals are zero, NaN or infinite; normals recomputed");
+          normalsOk = bad == 0;
+        }
+      } catch (const AccessorError& e) {
+        warnings.push_back(name + ": NORMAL " + e.message + "; normals recomputed");
+      }
+    }
+    if (!normalsOk) computeVertexNormals(mesh);
+
+    if (const auto uv = prim.attributes.find("TEXCOORD_0"); uv != prim.attributes.end()) {
+      try {
+        mesh.texcoords = readVec2(model, uv->second);
+        if (mesh.texcoords.size() != vertexCount) {
+          warnings.push_back(name + ": TEXCOORD_0 count differs from POSITION (MESH_PRIMITIVE_UNEQUAL_ACCESSOR_COUNT); ignored");
+          mesh.texcoords.clear();
+        }
+      } catch (const AccessorError& e) {
+        warnings.push_back(name + ": TEXCOORD_0 " + e.message + "; ignored");
+        mesh.texcoords.clear();
+      }
+    }
+  } catch (const AccessorError& e) {
+    warnings.push_back(name + ": " + e.message + "; skipped");
+    return false;
+  }
+  if (prim.material >= 0 && static_cast<std::size_t>(prim.material) >= model.materials.size()) {
+    warnings.push_back(name + ": material " + std::to_string(prim.material) + " does not exist (UNRESOLVED_REFERENCE); default material used");
+  } else {
+    mesh.material = prim.material;
+  }
+  if (!prim.targets.empty()) warnings.push_back(name + ": morph targets are not supported; base shape drawn");
+  return true;
+}
+
+// scene mesh index per glTF mesh and primitive (-1: skipped)
+std::vector<std::vector<int>> convertMeshes(const tinygltf::Model& model, Scene& scene, Warnings& warnings) {
+  std::vector<std::vector<int>> table(model.meshes.size());
+  for (std::size_t m = 0; m < model.meshes.size(); ++m) {
+    const tinygltf::Mesh& src = model.meshes[m];
+    for (std::size_t p = 0; p < src.primitives.size(); ++p) {
+      const std::string name = at("meshes", m) + "." + at("primitives", p);
+      Mesh mesh;
+      mesh.name = src.name.empty() ? name : src.name;
+      if (convertPrimitive(model, src.primitives[p], name, mesh, warnings)) {
+        scene.meshes.push_back(std::move(mesh));
+        table[m].push_back(static_cast<int>(scene.meshes.size() - 1));
+      } else {
+        table[m].push_back(-1);
+      }
+    }
+  }
+  return table;
+}
+
+// [SECTION] Nodes: world transforms, instances, cameras, lights
+
+bool finiteMatrix(const glm::mat4& m) {
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(m[c][r])) return false;
+  return true;
+}
+
+// The node's local matrix: its `matrix`, or T·R·S (glTF, course order).
+glm::mat4 localMatrix(const tinygltf::Node& node) {
+  if (node.matrix.size() == 16) {
+    glm::mat4 m;
+    for (int i = 0; i < 16; ++i) glm::value_ptr(m)[i] = static_cast<float>(node.matrix[static_cast<std::size_t>(i)]);  // column-major, as glTF
+    return m;
+  }
+  const glm::vec3 t = vec3Of(node.translation, glm::vec3(0.0f));
+  const glm::vec3 s = vec3Of(node.scale, glm::vec3(1.0f));
+  glm::mat4 r(1.0f);
+  if (node.rotation.size() == 4) {
+    const glm::quat q(static_cast<float>(node.rotation[3]), static_cast<float>(node.rotation[0]),
+                      static_cast<float>(node.rotation[1]), static_cast<float>(node.rotation[2]));
+    const float length = glm::length(q);
+    if (length > 0.0f && std::isfinite(length)) r = glm::mat4_cast(q / length);
+  }
+  return translation(t) * r * scaling(s);
+}
+
+struct NodeWalker {
+  const tinygltf::Model& model;
+  Scene& scene;
+  Warnings& warnings;
+  const std::vector<std::vector<int>>& meshTable;
+  std::vector<char> onPath;  // nodes on the current root-to-node path (loop detection)
+  std::uint64_t triangles = 0;
+
+  void visit(int index, const glm::mat4& parent, int depth) {
+    const auto n = static_cast<std::size_t>(index);
+    if (index < 0 || n >= model.nodes.size()) {
+      warnings.push_back("node " + std::to_string(index) + " does not exist (UNRESOLVED_REFERENCE); ignored");
+      return;
+    }
+    if (onPath[n]) {
+      warnings.push_back(at("nodes", n) + ": is its own ancestor (NODE_LOOP); the loop is cut there");
+      return;
+    }
+    if (depth > kMaxNodeDepth) {
+      warnings.push_back(at("nodes", n) + ": deeper than " + std::to_string(kMaxNodeDepth) + " levels; its subtree is skipped");
+      return;
+    }
+    const tinygltf::Node& node = model.nodes[n];
+    const glm::mat4 world = parent * localMatrix(node);
+    if (!finiteMatrix(world)) {
+      warnings.push_back(at("nodes", n) + ": transform is not finite; its subtree is skipped");
+      return;
+    }
+    onPath[n] = 1;
+    if (node.mesh >= 0) {
+      if (static_cast<std::size_t>(node.mesh) >= meshTable.size()) {
+        warnings.push_back(at("nodes", n) + ": mesh " + std::to_string(node.mesh) + " does not exist (UNRESOLVED_REFERENCE); ignored");
+      } else {
+        for (int sceneMesh : meshTable[static_cast<std::size_t>(node.mesh)]) {
+          if (sceneMesh < 0) continue;
+          triangles += scene.meshes[static_cast<std::size_t>(sceneMesh)].triangleCount();
+          if (triangles > kMaxSceneTriangles)
+            throw Error(at("nodes", n) + ": the scene exceeds " + std::to_string(kMaxSceneTriangles) + " triangles");
+          scene.instances.push_back({sceneMesh, world});
+        }
+      }
+      if (node.skin >= 0) warnings.push_back(at("nodes", n) + ": skinning is not supported; drawn in bind pose");
+    }
+    if (node.camera >= 0) addCamera(node, n, world);
+    addLight(node, n, world);
+    for (int child : node.children) visit(child, world, depth + 1);
+    onPath[n] = 0;
+  }
+
+  void addCamera(const tinygltf::Node& node, std::size_t n, const glm::mat4& world) {
+    if (static_cast<std::size_t>(node.camera) >= model.cameras.size()) {
+      warnings.push_back(at("nodes", n) + ": camera " + std::to_string(node.camera) + " does not exist (UNRESOLVED_REFERENCE); ignored");
+      return;
+    }
+    const tinygltf::Camera& src = model.cameras[static_cast<std::size_t>(node.camera)];
+    SceneCamera camera;
+    camera.name = src.name.empty() ? at("cameras", static_cast<std::size_t>(node.camera)) : src.name;
+    // A glTF camera looks down its local -z with +y up.
+    camera.eye = glm::vec3(world * glm::vec4(0, 0, 0, 1));
+    const glm::vec3 forward = glm::normalize(glm::vec3(world * glm::vec4(0, 0, -1, 0)));
+    camera.reference = camera.eye + forward;
+    camera.up = glm::normalize(glm::vec3(world * glm::vec4(0, 1, 0, 0)));
+    if (src.type == "orthographic") {
+      camera.projection = ProjectionKind::Parallel;
+      camera.xmag = static_cast<float>(std::fabs(src.orthographic.xmag));
+      camera.ymag = static_cast<float>(std::fabs(src.orthographic.ymag));
+      camera.near = static_cast<float>(src.orthographic.znear);
+      camera.far = static_cast<float>(src.orthographic.zfar);
+    } else {
+      camera.projection = ProjectionKind::Perspective;
+      camera.yfov = static_cast<float>(src.perspective.yfov);
+      if (src.perspective.aspectRatio > 0) camera.aspectRatio = static_cast<float>(src.perspective.aspectRatio);
+      camera.near = static_cast<float>(src.perspective.znear);
+      if (src.perspective.zfar > 0) camera.far = static_cast<float>(src.perspective.zfar);
+    }
+    const bool sane = finite(camera.eye) && finite(forward) && finite(camera.up) && std::isfinite(camera.near) &&
+                      (camera.projection == ProjectionKind::Parallel
+                           ? camera.xmag > 0 && camera.ymag > 0 && std::isfinite(camera.xmag + camera.ymag) && camera.far && *camera.far > camera.near
+                           : camera.yfov > 0 && camera.yfov < 3.1f && camera.near > 0 && (!camera.far || *camera.far > camera.near));
+    if (!sane) {
+      warnings.push_back(at("cameras", static_cast<std::size_t>(node.camera)) + ": invalid parameters; ignored");
+      return;
+    }
+    scene.cameras.push_back(camera);
+  }
+
+  void addLight(const tinygltf::Node& node, std::size_t n, const glm::mat4& world) {
+    const auto ext = node.extensions.find("KHR_lights_punctual");
+    if (ext == node.extensions.end() || !ext->second.Has("light")) return;
+    const int index = ext->second.Get("light").GetNumberAsInt();
+    if (index < 0 || static_cast<std::size_t>(index) >= model.lights.size()) {
+      warnings.push_back(at("nodes", n) + ": KHR_lights_punctual light " + std::to_string(index) + " does not exist (UNRESOLVED_REFERENCE); ignored");
+      return;
+    }
+    const tinygltf::Light& src = model.lights[static_cast<std::size_t>(index)];
+    Light light;
+    light.position = glm::vec3(world * glm::vec4(0, 0, 0, 1));
+    light.direction = glm::normalize(glm::vec3(world * glm::vec4(0, 0, -1, 0)));  // lights shine down local -z
+    light.color = glm::clamp(vec3Of(src.color, glm::vec3(1.0f)), 0.0f, 1.0f);
+    light.intensity = static_cast<float>(src.intensity);
+    if (src.type == "directional") {
+      light.kind = LightKind::Directional;
+      light.attenuation = {1, 0, 0};
+    } else {
+      // glTF point and spot intensities are in candela and fall off with the
+      // inverse square of the distance: c1 = c2 = 0, c3 = 1.
+      light.kind = src.type == "spot" ? LightKind::Spot : LightKind::Point;
+      light.attenuation = {0, 0, 1};
+      light.spotCutoffDeg = static_cast<float>(glm::degrees(src.spot.outerConeAngle));
+    }
+    if (!finite(light.position) || !finite(light.direction) || !std::isfinite(light.intensity) || light.intensity < 0) {
+      warnings.push_back(at("nodes", n) + ": light has non-finite placement or intensity; ignored");
+      return;
+    }
+    scene.lights.push_back(light);
+  }
+};
+
+const std::set<std::string> kSupportedExtensions = {"KHR_lights_punctual", "KHR_materials_emissive_strength"};
+
+}  // namespace
+
+// [SECTION] loadGltf
+
+Scene loadGltf(const std::string& path) {
+  namespace fs = std::filesystem;
+  const std::string bytes = readFile(path, kMaxFileBytes);
+  const std::string extension = fs::path(path).extension().string();
+  const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+  if (!binary && (extension == ".glb" || extension == ".GLB")) glbJsonChunk(path, bytes);  // throws the right GLB_* error
+  const auto [jsonOffset, jsonLength] = binary ? glbJsonChunk(path, bytes) : std::pair<std::size_t, std::size_t>{0, bytes.size()};
+  if (jsonDepth(bytes.data() + jsonOffset, jsonLength) > kMaxJsonDepth)
+    throw Error(path + ": JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+
+  AssetFolder folder;
+  std::error_code ec;
+  folder.root = fs::weakly_canonical(fs::absolute(path).parent_path(), ec);
+  tinygltf::TinyGLTF loader;
+  loader.SetFsCallbacks({fileExists, expandFilePath, readWholeFile, refuseWrite, &folder});
+  loader.SetImageLoader(loadImage, nullptr);
+  tinygltf::Model model;
+  std::string err, warn;
+  bool ok = false;
+  try {
+    const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+    const std::string base = folder.root.string();
+    ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, data, static_cast<unsigned int>(bytes.size()), base)
+                : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), static_cast<unsigned int>(bytes.size()), base);
+  } catch (const std::exception& e) {
+    throw Error(path + ": glTF parser failed (" + e.what() + ")");
+  } catch (...) {
+    throw Error(path + ": glTF parser failed");
+  }
+  const auto firstLine = [](std::string text) {
+    while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+    const auto newline = text.find('\n');
+    if (newline != std::string::npos) text = text.substr(0, newline) + " (and more)";
+    return text;
+  };
+  if (!ok || !err.empty()) throw Error(path + ": " + (err.empty() ? std::string("not a valid glTF file") : firstLine(err)));
+  if (model.asset.version.empty() || model.asset.version[0] != '2')
+    throw Error(path + ": asset.version '" + model.asset.version + "' is not glTF 2.x (UNKNOWN_ASSET_MAJOR_VERSION)");
+  for (const std::string& required : model.extensionsRequired)
+    if (!kSupportedExtensions.count(required))
+      throw Error(path + ": requires extension " + required + ", which facet does not support");
+
+  Scene scene;
+  scene.source = path;
+  Warnings warnings;
+  for (std::string line; !warn.empty();) {  // tinygltf's own warnings, one per line
+    const auto newline = warn.find('\n');
+    line = warn.substr(0, newline);
+    warn = newline == std::string::npos ? std::string() : warn.substr(newline + 1);
+    if (!line.empty()) warnings.push_back(line);
+  }
+  for (const std::string& used : model.extensionsUsed)
+    if (!kSupportedExtensions.count(used)) warnings.push_back("extension " + used + " is not supported; ignored");
+
+  convertTextures(model, scene, warnings);
+  convertMaterials(model, scene, warnings);
+  const auto meshTable = convertMeshes(model, scene, warnings);
+
+  // Roots: the default scene's nodes, else the first scene's, else every node without a parent.
+  std::vector<int> roots;
+  if (!model.scenes.empty()) {
+    int chosen = model.defaultScene;
+    if (chosen < 0 || static_cast<std::size_t>(chosen) >= model.scenes.size()) chosen = 0;
+    roots = model.scenes[static_cast<std::size_t>(chosen)].nodes;
+  } else {
+    std::vector<char> isChild(model.nodes.size(), 0);
+    for (const tinygltf::Node& node : model.nodes)
+      for (int child : node.children)
+        if (child >= 0 && static_cast<std::size_t>(child) < isChild.size()) isChild[static_cast<std::size_t>(child)] = 1;
+    for (std::size_t n = 0; n < model.nodes.size(); ++n)
+      if (!isChild[n]) roots.push_back(static_cast<int>(n));
+    if (!model.nodes.empty()) warnings.push_back("the file has no scenes; drawing every root node");
+  }
+  NodeWalker walker{model, scene, warnings, meshTable, std::vector<char>(model.nodes.size(), 0)};
+  try {
+    for (int root : roots) walker.visit(root, glm::mat4(1.0f), 0);
+  } catch (const Error& e) {
+    throw Error(path + ": " + e.what());
+  }
+  if (scene.instances.empty()) warnings.push_back("no triangles to draw");
+  scene.warnings = std::move(warnings);
+  return scene;
+}
+
+}  // namespace facet

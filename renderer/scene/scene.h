@@ -1,0 +1,93 @@
+#pragma once
+// The scene in memory: what every loader produces and both backends draw.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "image/image.h"
+#include "scene/light.h"
+
+namespace facet {
+
+// One triangle list with one material (a glTF primitive).
+struct Mesh {
+  std::string name;
+  std::vector<glm::vec3> positions;   // model space
+  std::vector<glm::vec3> normals;     // model space, unit length, one per position
+  std::vector<glm::vec2> texcoords;   // TEXCOORD_0, empty when the mesh has none
+  std::vector<std::uint32_t> indices; // three per triangle, counter-clockwise = front
+  int material = -1;                  // index into Scene::materials, -1 = the default material
+
+  std::size_t triangleCount() const { return indices.size() / 3; }
+};
+
+// A mesh placed in the world: TM is the node's world transform (T·R·S, parents first).
+struct MeshInstance {
+  int mesh = 0;                            // index into Scene::meshes
+  glm::mat4 worldFromModel{1.0f};          // TM
+};
+
+// glTF metallic-roughness material; the course coefficients k_a, k_d, k_s, n
+// are derived from it in pipeline/material_coefficients.
+struct Material {
+  std::string name;
+  glm::vec4 baseColor{1.0f};      // O_d (linear RGB) and alpha
+  int baseColorTexture = -1;      // index into Scene::textures, -1 = none
+  glm::vec3 emissive{0.0f};       // k_e, linear RGB
+  float metallic = 1.0f;          // glTF default
+  float roughness = 1.0f;         // glTF default
+  bool doubleSided = false;
+};
+
+struct Texture {
+  std::string name;
+  Image image;                     // RGBA8, sRGB-encoded as glTF stores base colour
+};
+
+enum class ProjectionKind { Perspective, Parallel, Count };
+
+// A camera as a scene file gives it. Its angle of view is vertical, as in
+// glTF; pipeline/camera turns it into the course's horizontal half-angle.
+struct SceneCamera {
+  std::string name;
+  glm::vec3 eye{0.0f};             // world space
+  glm::vec3 reference{0.0f, 0.0f, -1.0f};  // a point on the line of sight, world space
+  glm::vec3 up{0.0f, 1.0f, 0.0f};  // world space
+  ProjectionKind projection = ProjectionKind::Perspective;
+  float yfov = 0.8f;               // full vertical angle of view, radians (perspective)
+  std::optional<float> aspectRatio;// the file's W/H, informational
+  float xmag = 1.0f, ymag = 1.0f;  // half width and half height of the view (parallel)
+  float near = 0.1f;               // eye-space distance
+  std::optional<float> far;        // none: infinite (glTF), fitted to the scene later
+};
+
+struct Bounds {
+  glm::vec3 min{0.0f}, max{0.0f};
+  bool empty = true;
+
+  void include(glm::vec3 p);
+  glm::vec3 center() const { return (min + max) * 0.5f; }
+  float radius() const;  // of the sphere around the box, centred at center()
+};
+
+struct Scene {
+  std::string source;                // file path, or "default scene"
+  std::vector<Mesh> meshes;
+  std::vector<MeshInstance> instances;
+  std::vector<Material> materials;
+  std::vector<Texture> textures;
+  std::vector<Light> lights;
+  std::vector<SceneCamera> cameras;
+  std::vector<std::string> warnings; // what a loader skipped or repaired
+
+  std::size_t triangleCount() const;  // over all instances
+  Bounds worldBounds() const;         // over all instances
+};
+
+}  // namespace facet

@@ -1,0 +1,74 @@
+#pragma once
+// Every knob of the pipeline, in one struct with one set of defaults (the
+// member initializers below: the only place a default is written). The
+// command line, the viewer, the tests and the benchmarks all go through it.
+#include <array>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "scene/light.h"
+#include "scene/scene.h"
+
+namespace facet {
+
+enum class ShadingMode { Flat, Gouraud, Phong, Count };
+inline constexpr std::array<std::string_view, static_cast<int>(ShadingMode::Count)> kShadingModeNames = {"flat", "gouraud", "phong"};
+
+enum class SpecularModel { Phong, BlinnPhong, Count };
+inline constexpr std::array<std::string_view, static_cast<int>(SpecularModel::Count)> kSpecularModelNames = {"phong", "blinn-phong"};
+
+inline constexpr std::array<std::string_view, static_cast<int>(ProjectionKind::Count)> kProjectionKindNames = {"perspective", "parallel"};
+
+// auto: the scene's own (its first camera / its lights), or, when it has none,
+// fitted to the scene's bounding sphere. manual: exactly the values written here.
+enum class Source { Auto, Manual, Count };
+inline constexpr std::array<std::string_view, static_cast<int>(Source::Count)> kSourceNames = {"auto", "manual"};
+
+struct CameraSettings {
+  Source source = Source::Auto;
+  glm::vec3 eye{0.0f, 1.0f, 5.0f};        // P_eye, world space (manual)
+  glm::vec3 reference{0.0f, 0.0f, 0.0f};  // P_ref, world space (manual)
+  glm::vec3 up{0.0f, 1.0f, 0.0f};         // v_up, world space (manual)
+  ProjectionKind projection = ProjectionKind::Perspective;
+  float halfAngleDeg = 30.0f;             // θ, measured horizontally (perspective)
+  float parallelWidth = 10.0f;            // W of the parallel box, world units; H = W / aspect
+  float near = 0.1f;                      // N, eye-space distance
+  float far = 100.0f;                     // F, eye-space distance
+};
+
+// glTF materials carry no k_a, k_d, k_s, n; pipeline/material_coefficients
+// derives them. A value set here overrides the derived one for every material.
+struct MaterialOverrides {
+  std::optional<float> ka;
+  std::optional<float> kd;
+  std::optional<float> ks;
+  std::optional<float> shininess;  // n
+};
+
+struct ShadowSettings {
+  bool enabled = true;
+  int mapSize = 2048;        // S of the S×S depth map (per cube face for point lights)
+  float biasSlope = 0.005f;  // b_slope of bias = max(b_slope·(1 - N·L), b_min), in window z
+  float biasMin = 0.0005f;   // b_min
+  int pcfRadius = 1;         // r: PCF averages (2r+1)² samples; 0 = hard shadows
+};
+
+struct RenderSettings {
+  int width = 800;   // image size in pixels
+  int height = 600;
+  CameraSettings camera;
+  Source lightSource = Source::Auto;
+  std::vector<Light> lights;              // used when lightSource is manual
+  float ambient = 0.15f;                  // I_a (white)
+  ShadingMode shading = ShadingMode::Phong;
+  SpecularModel specular = SpecularModel::BlinnPhong;
+  bool cullBackFaces = true;
+  MaterialOverrides material;
+  ShadowSettings shadows;
+  glm::vec3 background{0.02f, 0.025f, 0.035f};  // linear RGB
+};
+
+}  // namespace facet

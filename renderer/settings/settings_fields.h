@@ -1,0 +1,75 @@
+#pragma once
+// The field table of RenderSettings: one visit function lists every field
+// with its key, its range and a line of help. JSON reading and writing, the
+// command line and the viewer's controls are all driven by it, so a new
+// field is added in one place.
+#include <string_view>
+
+#include "settings/render_settings.h"
+
+namespace facet {
+
+struct FieldInfo {
+  std::string_view key;   // JSON key within its group
+  std::string_view help;  // one line for --help and the viewer's tooltips
+  double min = 0, max = 0;  // inclusive range for numbers (min == max: unbounded)
+};
+
+// Visitor interface (duck-typed): v.field(info, T& value) for float, int,
+// bool, glm::vec3, std::optional<float> and enums with a names table
+// (v.choice(info, Enum& value, names)); v.group(key, fn) for nested objects;
+// v.lights(key, std::vector<Light>&) for the light list, whose elements
+// visitLight describes.
+template <class Visitor>
+void visitLight(Visitor& v, Light& l) {
+  v.choice({"kind", "point, directional or spot"}, l.kind, kLightKindNames);
+  v.field({"position", "world position (point, spot)"}, l.position);
+  v.field({"direction", "world direction the light shines in (directional, spot)"}, l.direction);
+  v.field({"color", "linear RGB, each in [0, 1]", 0, 1}, l.color);
+  v.field({"intensity", "I_p = intensity * color", 0, 1e6}, l.intensity);
+  v.field({"attenuation", "c1, c2, c3 of f_att = min(1, 1/(c1 + c2 d + c3 d^2)), each >= 0", 0, 1e6}, l.attenuation);
+  v.field({"spotCutoff", "spot cut-off angle beta in degrees", 0.1, 89.9}, l.spotCutoffDeg);
+  v.field({"castsShadow", "render a shadow map for this light"}, l.castsShadow);
+}
+
+template <class Visitor>
+void visitSettings(Visitor& v, RenderSettings& s) {
+  v.field({"width", "image width in pixels", 1, 16384}, s.width);
+  v.field({"height", "image height in pixels", 1, 16384}, s.height);
+  v.group("camera", [&] {
+    CameraSettings& c = s.camera;
+    v.choice({"source", "auto: the scene's camera or one fitted to the scene; manual: the values below"}, c.source, kSourceNames);
+    v.field({"eye", "P_eye, world position of the eye (manual)"}, c.eye);
+    v.field({"reference", "P_ref, the point looked at (manual)"}, c.reference);
+    v.field({"up", "v_up, the up vector (manual)"}, c.up);
+    v.choice({"projection", "perspective or parallel"}, c.projection, kProjectionKindNames);
+    v.field({"halfAngle", "theta, horizontal half-angle of view in degrees", 0.5, 89.5}, c.halfAngleDeg);
+    v.field({"parallelWidth", "width W of the parallel view box in world units", 1e-6, 1e9}, c.parallelWidth);
+    v.field({"near", "N, near plane distance (> 0)", 1e-6, 1e9}, c.near);
+    v.field({"far", "F, far plane distance (> near)", 1e-6, 1e9}, c.far);
+  });
+  v.choice({"lightSource", "auto: the scene's lights or one fitted to the scene; manual: the list in lights"}, s.lightSource, kSourceNames);
+  v.lights("lights", s.lights);
+  v.field({"ambient", "I_a, ambient intensity", 0, 1}, s.ambient);
+  v.choice({"shading", "flat, gouraud or phong"}, s.shading, kShadingModeNames);
+  v.choice({"specular", "phong (R.V) or blinn-phong (N.H)"}, s.specular, kSpecularModelNames);
+  v.field({"cullBackFaces", "drop triangles with signed window area <= 0; off: two-sided lighting"}, s.cullBackFaces);
+  v.group("material", [&] {
+    MaterialOverrides& m = s.material;
+    v.field({"ka", "k_a for every material (null: derived from glTF)", 0, 1}, m.ka);
+    v.field({"kd", "k_d for every material (null: derived from glTF)", 0, 1}, m.kd);
+    v.field({"ks", "k_s for every material (null: derived from glTF)", 0, 1}, m.ks);
+    v.field({"shininess", "n for every material (null: derived from glTF)", 1, 4096}, m.shininess);
+  });
+  v.group("shadows", [&] {
+    ShadowSettings& sh = s.shadows;
+    v.field({"enabled", "2-pass shadow maps"}, sh.enabled);
+    v.field({"mapSize", "S of the S x S shadow map", 16, 8192}, sh.mapSize);
+    v.field({"biasSlope", "b_slope of bias = max(b_slope (1 - N.L), b_min)", 0, 1}, sh.biasSlope);
+    v.field({"biasMin", "b_min of bias = max(b_slope (1 - N.L), b_min)", 0, 1}, sh.biasMin);
+    v.field({"pcfRadius", "r: PCF over (2r+1)^2 samples, 0 = hard", 0, 8}, sh.pcfRadius);
+  });
+  v.field({"background", "linear RGB of empty pixels, each in [0, 1]", 0, 1}, s.background);
+}
+
+}  // namespace facet

@@ -1,0 +1,256 @@
+#include "settings/settings_json.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <set>
+
+#include <nlohmann/json.hpp>
+
+#include "common/atomic_file.h"
+#include "common/error.h"
+#include "settings/settings_fields.h"
+
+namespace facet {
+namespace {
+
+using nlohmann::json;
+
+std::string join(const std::string& prefix, std::string_view key) {
+  return prefix.empty() ? std::string(key) : prefix + "." + std::string(key);
+}
+
+// The shortest decimal that reads back as the same float, as a double: 0.15f
+// is written 0.15, not 0.15000000596046448.
+double shortest(float v) {
+  char text[32];
+  const auto result = std::to_chars(text, text + sizeof text, v);
+  return std::strtod(std::string(text, result.ptr).c_str(), nullptr);
+}
+
+struct JsonWriter {
+  json* out;
+
+  void field(const FieldInfo& f, float v) { (*out)[std::string(f.key)] = shortest(v); }
+  void field(const FieldInfo& f, int v) { (*out)[std::string(f.key)] = v; }
+  void field(const FieldInfo& f, bool v) { (*out)[std::string(f.key)] = v; }
+  void field(const FieldInfo& f, glm::vec3 v) { (*out)[std::string(f.key)] = {shortest(v.x), shortest(v.y), shortest(v.z)}; }
+  void field(const FieldInfo& f, const std::optional<float>& v) { (*out)[std::string(f.key)] = v ? json(shortest(*v)) : json(nullptr); }
+  template <class E, std::size_t N>
+  void choice(const FieldInfo& f, E v, const std::array<std::string_view, N>& names) {
+    (*out)[std::string(f.key)] = std::string(names[static_cast<std::size_t>(v)]);
+  }
+  template <class Fn>
+  void group(std::string_view key, Fn fn) {
+    json* parent = out;
+    json child = json::object();
+    out = &child;
+    fn();
+    out = parent;
+    (*out)[std::string(key)] = std::move(child);
+  }
+  void lights(std::string_view key, std::vector<Light>& list) {
+    json array = json::array();
+    for (Light& l : list) {
+      json item = json::object();
+      JsonWriter w{&item};
+      visitLight(w, l);
+      array.push_back(std::move(item));
+    }
+    (*out)[std::string(key)] = std::move(array);
+  }
+};
+
+// Reads the keys a JSON object has into the fields; every key must be known.
+struct JsonReader {
+  const json* in;
+  std::string prefix;           // dotted path of the current object
+  std::set<std::string> seen;   // keys of the current object that a field took
+
+  const json* find(const FieldInfo& f) {
+    seen.insert(std::string(f.key));
+    const auto it = in->find(std::string(f.key));
+    return it == in->end() ? nullptr : &*it;
+  }
+  [[noreturn]] void fail(const FieldInfo& f, const std::string& why) const { throw Error("settings key '" + join(prefix, f.key) + "': " + why); }
+
+  double number(const FieldInfo& f, const json& j) const {
+    if (!j.is_number()) fail(f, "expected a number, got " + j.dump());
+    const double v = j.get<double>();
+    if (!std::isfinite(v)) fail(f, "must be finite");
+    if (f.min != f.max && (v < f.min || v > f.max))
+      fail(f, std::to_string(v) + " is out of range [" + json(f.min).dump() + ", " + json(f.max).dump() + "]");
+    return v;
+  }
+
+  void field(const FieldInfo& f, float& v) {
+    if (const json* j = find(f)) v = static_cast<float>(number(f, *j));
+  }
+  void field(const FieldInfo& f, int& v) {
+    if (const json* j = find(f)) {
+      if (!j->is_number_integer()) fail(f, "expected an integer, got " + j->dump());
+      v = static_cast<int>(number(f, *j));
+    }
+  }
+  void field(const FieldInfo& f, bool& v) {
+    if (const json* j = find(f)) {
+      if (!j->is_boolean()) fail(f, "expected true or false, got " + j->dump());
+      v = j->get<bool>();
+    }
+  }
+  void field(const FieldInfo& f, glm::vec3& v) {
+    if (const json* j = find(f)) {
+      if (!j->is_array() || j->size() != 3) fail(f, "expected [x, y, z], got " + j->dump());
+      for (int i = 0; i < 3; ++i) v[i] = static_cast<float>(number(f, (*j)[static_cast<std::size_t>(i)]));
+    }
+  }
+  void field(const FieldInfo& f, std::optional<float>& v) {
+    if (const json* j = find(f)) {
+      if (j->is_null()) v.reset();
+      else v = static_cast<float>(number(f, *j));
+    }
+  }
+  template <class E, std::size_t N>
+  void choice(const FieldInfo& f, E& v, const std::array<std::string_view, N>& names) {
+    const json* j = find(f);
+    if (!j) return;
+    std::string allowed;
+    for (std::size_t i = 0; i < N; ++i) {
+      if (j->is_string() && j->get<std::string>() == names[i]) {
+        v = static_cast<E>(i);
+        return;
+      }
+      allowed += (i ? ", " : "") + std::string(names[i]);
+    }
+    fail(f, "expected one of " + allowed + ", got " + j->dump());
+  }
+  template <class Fn>
+  void group(std::string_view key, Fn fn) {
+    const json* j = find({key, ""});
+    if (!j) return;
+    if (!j->is_object()) fail({key, ""}, "expected an object, got " + j->dump());
+    JsonReader nested{j, join(prefix, key), {}};
+    std::swap(*this, nested);
+    fn();
+    checkNoUnknownKeys();
+    std::swap(*this, nested);
+  }
+  void lights(std::string_view key, std::vector<Light>& list) {
+    const json* j = find({key, ""});
+    if (!j) return;
+    if (!j->is_array()) fail({key, ""}, "expected an array of lights, got " + j->dump());
+    if (j->size() > 64) fail({key, ""}, "more than 64 lights");
+    list.assign(j->size(), Light{});
+    for (std::size_t i = 0; i < j->size(); ++i) {
+      const std::string path = join(prefix, key) + "." + std::to_string(i);
+      if (!(*j)[i].is_object()) throw Error("settings key '" + path + "': expected an object, got " + (*j)[i].dump());
+      JsonReader item{&(*j)[i], path, {}};
+      visitLight(item, list[i]);
+      item.checkNoUnknownKeys();
+    }
+  }
+  void checkNoUnknownKeys() const {
+    for (const auto& [key, value] : in->items())
+      if (!seen.count(key)) throw Error("settings key '" + join(prefix, key) + "': unknown key");
+  }
+};
+
+// Rules that span fields, checked after every read.
+void validate(const RenderSettings& s) {
+  if (!(s.camera.far > s.camera.near)) throw Error("settings key 'camera.far': must be greater than camera.near");
+  for (std::size_t i = 0; i < s.lights.size(); ++i) {
+    const Light& l = s.lights[i];
+    const std::string key = "settings key 'lights." + std::to_string(i);
+    if (l.kind != LightKind::Point && !(glm::length(l.direction) > 0.0f)) throw Error(key + ".direction': must not be zero");
+    if (l.kind != LightKind::Directional && !(l.attenuation.x + l.attenuation.y + l.attenuation.z > 0.0f))
+      throw Error(key + ".attenuation': c1 + c2 + c3 must be positive");
+  }
+}
+
+}  // namespace
+
+json settingsToJson(const RenderSettings& settings) {
+  json out = json::object();
+  RenderSettings copy = settings;
+  JsonWriter writer{&out};
+  visitSettings(writer, copy);
+  return out;
+}
+
+RenderSettings settingsFromJson(const json& j) {
+  if (!j.is_object()) throw Error("settings: expected a JSON object, got " + j.dump());
+  RenderSettings settings;
+  JsonReader reader{&j, "", {}};
+  visitSettings(reader, settings);
+  reader.checkNoUnknownKeys();
+  validate(settings);
+  return settings;
+}
+
+RenderSettings loadSettingsFile(const std::string& path) {
+  const std::string text = readFile(path, 16u << 20);
+  json j;
+  try {
+    j = json::parse(text);
+  } catch (const json::exception& e) {
+    throw Error(path + ": not valid JSON (" + e.what() + ")");
+  }
+  try {
+    return settingsFromJson(j);
+  } catch (const Error& e) {
+    throw Error(path + ": " + e.what());
+  }
+}
+
+void applySetting(RenderSettings& settings, const std::string& assignment) {
+  const auto equals = assignment.find('=');
+  if (equals == std::string::npos || equals == 0)
+    throw Error("--set '" + assignment + "': expected key=value, e.g. shading=gouraud or lights.0.position=[1,4,2]");
+  const std::string key = assignment.substr(0, equals);
+  const std::string text = assignment.substr(equals + 1);
+  json value;
+  try {
+    value = json::parse(text);
+  } catch (const json::exception&) {
+    value = text;  // a bare word such as gouraud
+  }
+
+  json root = settingsToJson(settings);
+  json* node = &root;
+  std::string walked;
+  for (std::size_t start = 0;;) {
+    const auto dot = key.find('.', start);
+    const std::string part = key.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    walked = walked.empty() ? part : walked + "." + part;
+    if (node->is_array()) {
+      std::size_t index = 0;
+      try {
+        std::size_t used = 0;
+        index = std::stoul(part, &used);
+        if (used != part.size()) throw std::invalid_argument(part);
+      } catch (const std::exception&) {
+        throw Error("settings key '" + walked + "': expected an index into the list");
+      }
+      if (index == node->size()) {
+        json fresh = json::object();  // one past the end appends a default element
+        Light light;
+        JsonWriter writer{&fresh};
+        visitLight(writer, light);
+        node->push_back(std::move(fresh));
+      }
+      if (index >= node->size()) throw Error("settings key '" + walked + "': index past the end of the list (" + std::to_string(node->size()) + " elements)");
+      node = &(*node)[index];
+    } else if (node->is_object()) {
+      if (!node->contains(part)) throw Error("settings key '" + walked + "': unknown key");
+      node = &(*node)[part];
+    } else {
+      throw Error("settings key '" + walked + "': unknown key");
+    }
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  *node = value;
+  settings = settingsFromJson(root);
+}
+
+}  // namespace facet

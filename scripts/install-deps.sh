@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages facet builds, tests and runs with.
+# Idempotent: it asks apt only for what dpkg says is missing.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libglm-dev             # vectors and matrices under the course math
+  libtinygltf-dev        # glTF 2.0 parser (its implementation lives in libtinygltf.so)
+  nlohmann-json3-dev     # RenderSettings <-> JSON
+  libstb-dev             # PNG read/write (stb_image, stb_image_write in libstb.so)
+  libcli11-dev           # command-line parsing
+  doctest-dev            # unit tests
+  libosmesa6-dev         # headless OpenGL on llvmpipe
+  libegl-dev libgl-dev libgl1-mesa-dri libegl-mesa0  # EGL surfaceless, the second headless context
+  libglfw3-dev libimgui-dev                          # the interactive viewer
+  xvfb xauth             # the viewer's tests run in a virtual X server
+  assimp-testmodels      # real glTF 2.0 files (well-formed and broken) for the tests
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+as_root=()
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "install-deps: need root (or sudo) to install: ${missing[*]}" >&2; exit 1; }
+  as_root=(sudo)
+fi
+echo "install-deps: installing ${missing[*]}"
+"${as_root[@]}" apt-get update -qq
+DEBIAN_FRONTEND=noninteractive "${as_root[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"

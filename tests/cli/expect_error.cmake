@@ -1,0 +1,18 @@
+# Runs FACET with ARGS and checks: non-zero exit, exactly one line on stderr,
+# and that line matches PATTERN.
+separate_arguments(args UNIX_COMMAND "${ARGS}")
+string(REPLACE ";" " " args_text "${ARGS}")
+separate_arguments(args NATIVE_COMMAND "${args_text}")
+execute_process(COMMAND ${FACET} ${args} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc EQUAL 0)
+  message(FATAL_ERROR "expected a non-zero exit, got 0\nstdout: ${out}\nstderr: ${err}")
+endif()
+string(STRIP "${err}" err_stripped)
+string(FIND "${err_stripped}" "\n" newline)
+if(NOT newline EQUAL -1)
+  message(FATAL_ERROR "expected one line on stderr, got:\n${err}")
+endif()
+if(NOT err_stripped MATCHES "${PATTERN}")
+  message(FATAL_ERROR "stderr does not match '${PATTERN}':\n${err}")
+endif()
+message(STATUS "exit ${rc}: ${err_stripped}")
