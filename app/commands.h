@@ -11,5 +11,10 @@ using Command = std::function<int()>;
 
 Command addInfoCommand(CLI::App& app);
 Command addSettingsCommand(CLI::App& app);
+Command addRenderCommand(CLI::App& app);
+Command addDiffCommand(CLI::App& app);
+#if FACET_HAVE_VIEWER
+Command addViewCommand(CLI::App& app);  // app/viewer
+#endif
 
 }  // namespace facet

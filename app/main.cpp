@@ -16,6 +16,11 @@ int main(int argc, char** argv) {
   const auto add = [&](facet::Command command) { commands[app.get_subcommands({}).back()] = std::move(command); };
   add(facet::addInfoCommand(app));
   add(facet::addSettingsCommand(app));
+  add(facet::addRenderCommand(app));
+  add(facet::addDiffCommand(app));
+#if FACET_HAVE_VIEWER
+  add(facet::addViewCommand(app));
+#endif
 
   try {
     app.parse(argc, argv);
@@ -26,8 +31,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
+    // 64 (EX_USAGE): distinct from `facet diff`'s 1 (warning) and 2 (failure).
     std::fprintf(stderr, "facet: %s (see facet --help)\n", e.what());
-    return 2;
+    return 64;
   }
   try {
     for (auto& [subcommand, run] : commands)

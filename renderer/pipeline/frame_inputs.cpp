@@ -61,6 +61,8 @@ FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings)
     fl.hasShadowMap = settings.shadows.enabled && light.castsShadow;
     if (fl.hasShadowMap) {
       fl.frustum = lightFrustum(fl.light, sphere);
+      fl.shadowLayer = f.shadowLayerCount;
+      f.shadowLayerCount += fl.frustum.faceCount;
       for (int face = 0; face < fl.frustum.faceCount; ++face)
         fl.shadowFromWorld[static_cast<std::size_t>(face)] = shadowWindowFromNdc * fl.frustum.clipFromWorld[static_cast<std::size_t>(face)];
     }

@@ -29,6 +29,7 @@ struct FrameLight {
   float cosCutoff = -1.0f;        // cos β (spot); -1 for other kinds
   bool hasShadowMap = false;      // castsShadow and shadows enabled
   LightFrustum frustum;           // faces used in pass 1 and pass 2
+  int shadowLayer = -1;           // first layer of this light's faces in the shadow-map array
   // Per face: maps a world point to the shadow map's window coordinates:
   // after the divide by w, (u, v) in [0,1]² and window z in [0,1].
   std::array<glm::mat4, 6> shadowFromWorld{};
@@ -54,6 +55,7 @@ struct FrameInputs {
   SpecularModel specular = SpecularModel::BlinnPhong;
   bool cullBackFaces = true;
   ShadowSettings shadows;
+  int shadowLayerCount = 0;       // S×S depth maps over all lights: one per face
   glm::vec3 background{0.0f};    // linear RGB
 };
 

@@ -29,6 +29,11 @@ int cubeFace(glm::vec3 d) {
 LightFrustum lightFrustum(const Light& light, const Sphere& scene) {
   LightFrustum f;
   const float margin = 1.05f * scene.radius;
+  // A light inside (or at the edge of) the sphere would get near ≈ 0, and a
+  // perspective map's depth z' = A + B/z would then spend all its precision
+  // next to the light: with near = far/1000 a bias of 0.001 spans metres.
+  // Geometry closer to the light than this floor casts no shadow.
+  const float nearFloor = 0.05f * scene.radius;
   switch (light.kind) {
     case LightKind::Directional: {
       // Parallel projection of a box around the sphere, from 2r back along the light.
@@ -44,8 +49,8 @@ LightFrustum lightFrustum(const Light& light, const Sphere& scene) {
       // The cone is the angle of view: θ = β on a square map.
       const glm::vec3 d = glm::normalize(light.direction);
       const float along = glm::dot(scene.center - light.position, d);
-      f.far = std::max(along + margin, 1e-3f);
-      f.near = std::max(along - margin, f.far * 1e-3f);
+      f.far = std::max(along + margin, 2.0f * nearFloor);
+      f.near = std::max(along - margin, nearFloor);
       f.faceCount = 1;
       f.clipFromWorld[0] = perspective(glm::radians(light.spotCutoffDeg), 1.0f, f.near, f.far) *
                            eyeMatrix(light.position, light.position + d, upFor(d));
@@ -55,8 +60,8 @@ LightFrustum lightFrustum(const Light& light, const Sphere& scene) {
     case LightKind::Count: {
       // Six 90° views. A point in a face's frustum has z >= |P - P_light| / √3.
       const float distance = glm::length(scene.center - light.position);
-      f.far = std::max(distance + margin, 1e-3f);
-      f.near = std::max((distance - margin) / std::numbers::sqrt3_v<float>, f.far * 1e-3f);
+      f.far = std::max(distance + margin, 2.0f * nearFloor);
+      f.near = std::max((distance - margin) / std::numbers::sqrt3_v<float>, nearFloor);
       static const glm::vec3 kAxes[kCubeFaceCount] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
       const glm::mat4 projection = perspective(std::numbers::pi_v<float> / 4.0f, 1.0f, f.near, f.far);
       f.faceCount = kCubeFaceCount;

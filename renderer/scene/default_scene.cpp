@@ -32,7 +32,7 @@ Scene makeDefaultScene() {
   Scene scene;
   scene.source = "default scene";
 
-  const int ground = addMaterial(scene, "ground", {0.55f, 0.55f, 0.52f}, 0.0f, 0.9f);
+  const int ground = addMaterial(scene, "ground", {0.45f, 0.45f, 0.42f}, 0.0f, 0.9f);
   const int redPlastic = addMaterial(scene, "red plastic", {0.80f, 0.08f, 0.06f}, 0.0f, 0.3f);
   const int bluePaint = addMaterial(scene, "blue paint", {0.10f, 0.22f, 0.75f}, 0.0f, 0.6f);
   const int greenRubber = addMaterial(scene, "green rubber", {0.12f, 0.55f, 0.18f}, 0.0f, 0.85f);
@@ -56,8 +56,8 @@ Scene makeDefaultScene() {
 
   SceneCamera camera;
   camera.name = "default camera";
-  camera.eye = {5.5f, 4.2f, 7.5f};
-  camera.reference = {0.0f, 0.6f, 0.0f};
+  camera.eye = {3.9f, 3.0f, 5.4f};
+  camera.reference = {0.0f, 0.45f, 0.0f};
   camera.up = {0.0f, 1.0f, 0.0f};
   // A horizontal half-angle θ of 30° at the default 4:3: tan(yfov/2) = tan θ / A_R.
   camera.yfov = 2.0f * std::atan(std::tan(30.0f * kDeg) * 3.0f / 4.0f);

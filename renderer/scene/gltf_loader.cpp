@@ -16,6 +16,7 @@
 #include <set>
 
 #include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <stb_image.h>
@@ -109,6 +110,10 @@ std::string expandFilePath(const std::string& path, void*) { return path; }  // 
 bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
   namespace fs = std::filesystem;
   const auto* folder = static_cast<const AssetFolder*>(user);
+  if (folder->root.empty()) {
+    if (err) *err += "'" + path + "': external files are not read here\n";
+    return false;
+  }
   std::error_code ec;
   const fs::path canonical = fs::weakly_canonical(path, ec);
   const auto [rootEnd, unused] = std::mismatch(folder->root.begin(), folder->root.end(), canonical.begin(), canonical.end());
@@ -517,6 +522,19 @@ struct NodeWalker {
 
 const std::set<std::string> kSupportedExtensions = {"KHR_lights_punctual", "KHR_materials_emissive_strength"};
 
+// glTF's rule: a file whose extensionsRequired names an extension the reader
+// lacks is refused. Checked before tinygltf parses, which would otherwise
+// fail later on what the extension changes (e.g. Draco's missing bufferViews).
+void checkRequiredExtensions(const std::string& path, const char* json, std::size_t length) {
+  const nlohmann::json document = nlohmann::json::parse(json, json + length, nullptr, false);
+  if (document.is_discarded()) return;  // tinygltf reports the syntax error with its position
+  const auto required = document.find("extensionsRequired");
+  if (required == document.end() || !required->is_array()) return;
+  for (const nlohmann::json& name : *required)
+    if (name.is_string() && !kSupportedExtensions.count(name.get<std::string>()))
+      throw Error(path + ": requires extension " + name.get<std::string>() + ", which facet does not support");
+}
+
 }  // namespace
 
 // [SECTION] loadGltf
@@ -524,16 +542,23 @@ const std::set<std::string> kSupportedExtensions = {"KHR_lights_punctual", "KHR_
 Scene loadGltf(const std::string& path) {
   namespace fs = std::filesystem;
   const std::string bytes = readFile(path, kMaxFileBytes);
+  std::error_code ec;
+  const std::string folder = fs::weakly_canonical(fs::absolute(path).parent_path(), ec).string();
+  return loadGltfFromMemory(bytes, path, folder.empty() ? "/" : folder);
+}
+
+Scene loadGltfFromMemory(const std::string& bytes, const std::string& path, const std::string& assetFolder) {
+  namespace fs = std::filesystem;
   const std::string extension = fs::path(path).extension().string();
   const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
   if (!binary && (extension == ".glb" || extension == ".GLB")) glbJsonChunk(path, bytes);  // throws the right GLB_* error
   const auto [jsonOffset, jsonLength] = binary ? glbJsonChunk(path, bytes) : std::pair<std::size_t, std::size_t>{0, bytes.size()};
   if (jsonDepth(bytes.data() + jsonOffset, jsonLength) > kMaxJsonDepth)
     throw Error(path + ": JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+  checkRequiredExtensions(path, bytes.data() + jsonOffset, jsonLength);
 
   AssetFolder folder;
-  std::error_code ec;
-  folder.root = fs::weakly_canonical(fs::absolute(path).parent_path(), ec);
+  folder.root = assetFolder;
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks({fileExists, expandFilePath, readWholeFile, refuseWrite, &folder});
   loader.SetImageLoader(loadImage, nullptr);

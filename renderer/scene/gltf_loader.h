@@ -16,4 +16,9 @@ namespace facet {
 // the file, the glTF object and the problem.
 Scene loadGltf(const std::string& path);
 
+// The same from bytes in memory (a .gltf's JSON or a whole .glb): `name`
+// stands for the file in messages; external URIs resolve inside `folder`
+// only, and an empty `folder` resolves none. The fuzzer's entry point.
+Scene loadGltfFromMemory(const std::string& bytes, const std::string& name, const std::string& folder);
+
 }  // namespace facet

@@ -1,13 +1,46 @@
 #include "scene/load_scene.h"
 
+#include "common/error.h"
 #include "scene/default_scene.h"
 #include "scene/gltf_loader.h"
+#include "scene/primitives.h"
 
 namespace facet {
+namespace {
+
+constexpr std::string_view kBuiltin = "builtin:";
+
+Scene primitiveScene(std::string_view name, Mesh mesh) {
+  Scene scene;
+  scene.source = std::string(kBuiltin) + std::string(name);
+  Material m;
+  m.name = "matte orange";
+  m.baseColor = {0.9f, 0.45f, 0.15f, 1.0f};
+  m.metallic = 0.0f;
+  m.roughness = 0.4f;
+  scene.materials.push_back(m);
+  mesh.material = 0;
+  scene.meshes.push_back(std::move(mesh));
+  scene.instances.push_back({0, glm::mat4(1.0f)});
+  return scene;
+}
+
+}  // namespace
+
+std::vector<std::string_view> builtinSceneNames() { return {"default", "sphere", "cube", "plane", "cylinder", "torus"}; }
 
 Scene loadScene(const std::string& path) {
-  if (path.empty()) return makeDefaultScene();
-  return loadGltf(path);
+  if (path.empty() || path == "builtin:default") return makeDefaultScene();
+  if (path.rfind(kBuiltin, 0) != 0) return loadGltf(path);
+  const std::string_view name = std::string_view(path).substr(kBuiltin.size());
+  if (name == "sphere") return primitiveScene(name, makeSphere(32));
+  if (name == "cube") return primitiveScene(name, makeCube());
+  if (name == "plane") return primitiveScene(name, makePlane(4));
+  if (name == "cylinder") return primitiveScene(name, makeCylinder(48));
+  if (name == "torus") return primitiveScene(name, makeTorus());
+  std::string names;
+  for (std::string_view n : builtinSceneNames()) names += (names.empty() ? "" : ", ") + std::string(n);
+  throw Error(path + ": no such built-in scene (there are " + names + ")");
 }
 
 }  // namespace facet

@@ -1,12 +1,21 @@
 #pragma once
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "scene/scene.h"
 
 namespace facet {
 
-// The scene behind a command line's positional argument: the built-in
-// default scene for an empty path, otherwise a glTF 2.0 file (.gltf, .glb).
+// The scene behind a command line's positional argument:
+//   ""  or "builtin:default"   the built-in default scene
+//   "builtin:NAME"             one procedural primitive on its own (sphere,
+//                              cube, plane, cylinder, torus), with no camera
+//                              or light of its own (auto ones frame and light it)
+//   anything else              a glTF 2.0 file (.gltf, .glb)
 Scene loadScene(const std::string& path);
+
+// The NAMEs of builtin:NAME.
+std::vector<std::string_view> builtinSceneNames();
 
 }  // namespace facet

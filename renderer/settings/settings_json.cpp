@@ -139,7 +139,7 @@ struct JsonReader {
     const json* j = find({key, ""});
     if (!j) return;
     if (!j->is_array()) fail({key, ""}, "expected an array of lights, got " + j->dump());
-    if (j->size() > 64) fail({key, ""}, "more than 64 lights");
+    if (j->size() > 8) fail({key, ""}, "more than 8 lights (the GL backend's uniform block holds 8)");
     list.assign(j->size(), Light{});
     for (std::size_t i = 0; i < j->size(); ++i) {
       const std::string path = join(prefix, key) + "." + std::to_string(i);

@@ -84,6 +84,9 @@ TEST_CASE("broken files: repaired with warnings or refused with one line naming 
     CHECK_THROWS_WITH_AS(loadGltf(kModels + "/BoxTextured-glTF-techniqueWebGL/BoxTextured.gltf"),
                          doctest::Contains("KHR_technique_webgl"), Error);
   }
+  SUBCASE("Draco compression is required but not supported: named as such") {
+    CHECK_THROWS_WITH_AS(loadGltf(kModels + "/draco/2CylinderEngine.gltf"), doctest::Contains("requires extension KHR_draco_mesh_compression"), Error);
+  }
   SUBCASE("no such file") {
     CHECK_THROWS_WITH_AS(loadScene("/nonexistent/model.gltf"), "/nonexistent/model.gltf: no such file", Error);
   }
@@ -92,6 +95,15 @@ TEST_CASE("broken files: repaired with warnings or refused with one line naming 
   }
 }
 
-TEST_CASE("an empty path is the default scene") {
+TEST_CASE("an empty path is the default scene; builtin: names a primitive") {
   CHECK(loadScene("").source == "default scene");
+  CHECK(loadScene("builtin:default").source == "default scene");
+  for (const char* name : {"builtin:sphere", "builtin:cube", "builtin:plane", "builtin:cylinder", "builtin:torus"}) {
+    const Scene scene = loadScene(name);
+    CHECK(scene.source == name);
+    CHECK(scene.triangleCount() > 0);
+    CHECK(scene.lights.empty());
+    CHECK(scene.cameras.empty());
+  }
+  CHECK_THROWS_WITH_AS(loadScene("builtin:teapot"), doctest::Contains("no such built-in scene"), Error);
 }

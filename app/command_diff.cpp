@@ -1,0 +1,194 @@
+// facet diff: two PNGs, or two folders of PNGs paired by name, compared
+// pixel by pixel with OpenImageIO idiff's thresholds and exit codes.
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "commands.h"
+#include "common/error.h"
+#include "compare/compare_files.h"
+#include "compare/diff_report_folder.h"
+#include "compare/diff_text.h"
+#include "compare/folder_pairs.h"
+#include "compare/heat_map.h"
+#include "image/png.h"
+
+namespace facet {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct DiffOptions {
+  std::string expected;
+  std::string actual;
+  std::string output;  // a .png: heat map; anything else: report folder
+  DiffThresholds thresholds;
+};
+
+constexpr const char* kFooter = R"(
+Thresholds are fractions of full scale, as in idiff: 1/255 = 0.0039216 is one
+8-bit step; write a fraction as N/255 if you like. A pixel is over a
+threshold when any of its R, G, B, A channels differs by more than it.
+  FAILURE  more than --failpercent % of pixels over --fail, or any channel
+           over --hardfail
+  WARNING  not a failure, and the same with --warn, --warnpercent, --hardwarn
+  PASS     neither
+Defaults: --fail 1/255 --failpercent 0 (one 8-bit step passes, two fail),
+--warn 0 --warnpercent 0 (any difference warns), hard limits off.
+Positions are (x, y) counted from the top-left pixel, as image viewers show.
+
+With two folders, the PNG files are paired by name; a file in only one
+folder is a failure for its case.
+
+-o FILE.png writes a heat map of two PNGs: black where they are equal, dark
+purple to crimson where they differ within --fail, orange to pale yellow
+where they fail. -o FOLDER writes FOLDER/index.html, one page with the
+expected, actual and heat-map images of every case, worst first, and the
+images beside it under FOLDER/images.
+
+Exit codes (idiff's; with folders, the worst over all cases):
+  0  PASS: within the warn thresholds
+  1  WARNING: over the warn thresholds, within the fail thresholds
+  2  FAILURE: over the fail thresholds, or a file with no partner
+  3  the images have different sizes and cannot be compared
+  4  file error: missing, unreadable or not a PNG, or -o cannot be written)";
+
+// Accepts "0.004", "inf" and "N/255" (any "A/B"; never negative), rewritten
+// as one decimal number for CLI11 to parse, with every digit kept so that
+// 2/255 stays exactly two steps.
+CLI::Validator fractionOfFullScale() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        const auto parse = [](const std::string& part, double& value) {
+          char* end = nullptr;
+          value = std::strtod(part.c_str(), &end);
+          return !part.empty() && *end == '\0' && !std::isnan(value);
+        };
+        const auto slash = text.find('/');
+        double a = 0.0, b = 1.0;
+        const bool ok = slash == std::string::npos ? parse(text, a)
+                                                   : parse(text.substr(0, slash), a) && parse(text.substr(slash + 1), b) && b > 0.0;
+        if (!ok) return "'" + text + "': expected a number such as 0.004, or a fraction such as 1/255";
+        if (a / b < 0.0) return "'" + text + "': a threshold cannot be negative";
+        char exact[40];
+        std::snprintf(exact, sizeof exact, "%.17g", a / b);
+        text = exact;
+        return {};
+      },
+      "FRACTION");
+}
+
+bool isPngName(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".png";
+}
+
+// Prints one case, remembers it, and (with a report folder) writes its images.
+struct DiffRun {
+  const DiffOptions& options;
+  std::string reportFolder;  // empty: no report
+  std::vector<DiffCase> cases;
+  std::vector<ReportCase> reportCases;
+
+  void add(const ComparedFiles& compared) {
+    std::fputs(caseText(compared.diffCase, options.thresholds).c_str(), stdout);
+    if (!reportFolder.empty())
+      reportCases.push_back(writeReportImages(reportFolder, static_cast<int>(cases.size()) + 1, compared, options.thresholds));
+    cases.push_back(compared.diffCase);
+  }
+
+  int finish() {
+    if (!reportFolder.empty()) {
+      const std::string page = writeReportPage(reportFolder, reportCases, {options.expected, options.actual, options.thresholds});
+      std::printf("report written to %s\n", page.c_str());
+    }
+    std::printf("%s\n", summaryLine(cases).c_str());
+    return static_cast<int>(worstVerdict(cases));
+  }
+};
+
+int compareTwoFiles(const DiffOptions& options) {
+  const std::string name = fs::path(options.expected).filename().string();
+  const ComparedFiles compared = compareFiles(name, options.expected, options.actual, options.thresholds);
+  const DiffCase& c = compared.diffCase;
+  if (!c.result) {  // nothing to show: the one line on stderr, as every facet error
+    std::fprintf(stderr, "facet: %s\n", c.problem.c_str());
+    return static_cast<int>(c.verdict);
+  }
+  const bool heatMapOnly = !options.output.empty() && isPngName(options.output);
+  DiffRun run{options, heatMapOnly ? std::string() : options.output, {}, {}};
+  if (!run.reportFolder.empty()) createReportFolder(run.reportFolder);
+  run.add(compared);
+  if (heatMapOnly) {
+    const fs::path folder = fs::path(options.output).parent_path();
+    std::error_code ec;
+    if (!folder.empty()) fs::create_directories(folder, ec);  // a failure shows when writing
+    writePng(options.output, heatMap(compared.expected, compared.actual, options.thresholds));
+    std::printf("heat map written to %s\n", options.output.c_str());
+  }
+  return run.finish();
+}
+
+int compareTwoFolders(const DiffOptions& options) {
+  if (isPngName(options.output))
+    throw Error("-o " + options.output + ": two folders make a report folder (index.html and images), not one PNG");
+  const std::vector<FilePair> pairs = pairFolderFiles(options.expected, options.actual);
+  if (pairs.empty()) throw Error(options.expected + " and " + options.actual + ": no PNG files in either folder");
+  DiffRun run{options, options.output, {}, {}};
+  if (!run.reportFolder.empty()) createReportFolder(run.reportFolder);
+  for (const FilePair& pair : pairs) run.add(compareFiles(pair.name, pair.expectedPath, pair.actualPath, options.thresholds));
+  return run.finish();
+}
+
+int runDiff(const DiffOptions& options) {
+  checkThresholds(options.thresholds);
+  std::error_code ec;
+  const bool expectedIsFolder = fs::is_directory(options.expected, ec);
+  const bool actualIsFolder = fs::is_directory(options.actual, ec);
+  if (expectedIsFolder && actualIsFolder) return compareTwoFolders(options);
+  if (expectedIsFolder != actualIsFolder)
+    throw Error((expectedIsFolder ? options.expected : options.actual) + ": is a folder, but " +
+                (expectedIsFolder ? options.actual : options.expected) + " is not; give two PNG files or two folders");
+  return compareTwoFiles(options);
+}
+
+}  // namespace
+
+Command addDiffCommand(CLI::App& app) {
+  auto options = std::make_shared<DiffOptions>();
+  CLI::App* command = app.add_subcommand("diff", "Compare two PNGs, or two folders of PNGs, pixel by pixel (exit codes as OpenImageIO's idiff)");
+  command->add_option("expected", options->expected, "the expected PNG, or a folder of them")->required();
+  command->add_option("actual", options->actual, "the actual PNG, or a folder of them")->required();
+  DiffThresholds& t = options->thresholds;
+  const auto threshold = [&](const char* flag, double& value, const char* help) {
+    command->add_option(flag, value, help)->transform(fractionOfFullScale())->capture_default_str();
+  };
+  threshold("--fail", t.failThreshold, "a channel difference above this fails its pixel (fraction of full scale)");
+  command->add_option("--failpercent", t.failPercent, "percent of pixels allowed to fail")->check(CLI::Range(0.0, 100.0))->capture_default_str();
+  threshold("--hardfail", t.hardFail, "any channel difference above this fails the comparison (default: off)");
+  threshold("--warn", t.warnThreshold, "a channel difference above this warns for its pixel (fraction of full scale)");
+  command->add_option("--warnpercent", t.warnPercent, "percent of pixels allowed to warn")->check(CLI::Range(0.0, 100.0))->capture_default_str();
+  threshold("--hardwarn", t.hardWarn, "any channel difference above this warns (default: off)");
+  command->add_option("-o,--output", options->output, "FILE.png: heat map (two PNGs only); FOLDER: HTML report with images");
+  command->footer(kFooter);
+  return [options]() {
+    // Every problem here is about a file (or the output): idiff's exit code 4,
+    // not the 1 that main gives other facet errors (1 means WARNING here).
+    try {
+      return runDiff(*options);
+    } catch (const Error& e) {
+      std::fprintf(stderr, "facet: %s\n", e.what());
+    } catch (const fs::filesystem_error& e) {
+      std::fprintf(stderr, "facet: %s\n", e.what());
+    }
+    return static_cast<int>(Verdict::FileError);
+  };
+}
+
+}  // namespace facet

@@ -1,0 +1,58 @@
+#include "compare/compare_files.h"
+
+#include <utility>
+
+#include "common/error.h"
+#include "compare/image_diff.h"
+#include "image/png.h"
+
+namespace facet {
+namespace {
+
+std::string sizeText(const Image& image) { return std::to_string(image.width()) + "x" + std::to_string(image.height()); }
+
+// Reads one side; a failure becomes the case's problem (the first one found).
+Image readSide(const std::string& path, DiffCase& diffCase) {
+  if (path.empty()) return {};
+  try {
+    return readPng(path);
+  } catch (const Error& e) {
+    if (diffCase.problem.empty()) {
+      diffCase.verdict = Verdict::FileError;
+      diffCase.problem = e.what();
+    }
+    return {};
+  }
+}
+
+}  // namespace
+
+ComparedFiles compareFiles(const std::string& name, const std::string& expectedPath, const std::string& actualPath,
+                           const DiffThresholds& thresholds) {
+  ComparedFiles out;
+  DiffCase& c = out.diffCase;
+  c.name = name;
+  c.expectedPath = expectedPath;
+  c.actualPath = actualPath;
+  out.expected = readSide(expectedPath, c);
+  out.actual = readSide(actualPath, c);
+  if (!c.problem.empty()) return out;
+
+  if (expectedPath.empty() || actualPath.empty()) {
+    c.verdict = Verdict::Fail;
+    c.problem = expectedPath.empty() ? actualPath + ": no expected image to compare it with"
+                                     : expectedPath + ": no actual image to compare it with";
+    return out;
+  }
+  if (out.expected.width() != out.actual.width() || out.expected.height() != out.actual.height()) {
+    c.verdict = Verdict::DifferentSize;
+    c.problem = "images of different sizes: " + expectedPath + " is " + sizeText(out.expected) + ", " + actualPath + " is " +
+                sizeText(out.actual);
+    return out;
+  }
+  c.result = compareImages(out.expected, out.actual, thresholds);
+  c.verdict = verdictOf(c.result->status);
+  return out;
+}
+
+}  // namespace facet

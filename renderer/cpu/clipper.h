@@ -1,0 +1,46 @@
+#pragma once
+// Homogeneous clipping as llvmpipe's draw module does it
+// (src/gallium/auxiliary/draw/draw_pipe_clip.c, do_clip_tri; clip masks from
+// draw_llvm.c generate_clipmask), so that the CPU reference produces the same
+// window vertices, and therefore the same covered pixels, as OpenGL on llvmpipe.
+#include <array>
+#include <vector>
+
+#include <glm/vec4.hpp>
+
+namespace facet::cpu {
+
+inline constexpr int kMaxVaryings = 16;
+
+// A vertex after the vertex stage: clip position and the attributes that
+// are interpolated across the triangle.
+struct ClipVertex {
+  glm::vec4 clip{0.0f};
+  std::array<float, kMaxVaryings> varyings{};
+};
+
+// A vertex as triangle setup sees it.
+struct WindowVertex {
+  float x = 0, y = 0;   // window coordinates, pixels, origin lower left
+  float z = 0;          // window z = NDC z in [0, 1]
+  float invW = 1;       // 1/w_clip, for perspective-correct interpolation
+  std::array<float, kMaxVaryings> varyings{};
+};
+
+// Window coordinates of an unclipped vertex: llvmpipe's JIT computes
+// x_w = fma(x·(1/w), W/2, W/2) (a fused multiply-add on CPUs with FMA).
+WindowVertex toWindow(const ClipVertex& v, float halfWidth, float halfHeight, int varyingCount);
+
+// Clips triangle (a, b, c) against -w ≤ x ≤ w, -w ≤ y ≤ w, 0 ≤ z ≤ w and
+// appends the triangles to draw, three WindowVertex each, to `out`:
+// the triangle itself when no vertex is outside (with `windowA..C`, its
+// already-computed window vertices), nothing when all three are outside one
+// plane, else the clipped polygon as a fan (v[i-1], v[i], v[0]).
+void clipTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c, const WindowVertex& windowA,
+                  const WindowVertex& windowB, const WindowVertex& windowC, float halfWidth, float halfHeight, int varyingCount,
+                  std::vector<WindowVertex>& out);
+
+// The clip mask of one vertex: bit i set when it is outside plane i (order above).
+unsigned clipMask(const glm::vec4& p);
+
+}  // namespace facet::cpu

@@ -1,0 +1,232 @@
+#include "gl/frame_renderer.h"
+
+#include <array>
+#include <chrono>
+#include <iterator>
+#include <cstdio>
+#include <string_view>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "common/error.h"
+
+namespace facet::gl {
+namespace {
+
+// Bindings the shaders declare (frame_block.glsl, draw_uniforms.glsl, lit_flat.vert).
+constexpr GLuint kFrameBlockBinding = 0;      // uniform block Frame
+constexpr GLuint kShadowMapsUnit = 0;         // sampler2DArray shadowMaps
+constexpr GLuint kBaseColorTextureUnit = 1;   // usampler2D baseColorTexture
+constexpr GLuint kMeshIndicesBinding = 0;     // storage buffers of lit_flat.vert
+constexpr GLuint kMeshPositionsBinding = 1;
+constexpr GLuint kMeshTexcoordsBinding = 2;
+
+// The vertex and fragment shader of each shading mode, indexed by ShadingMode.
+constexpr std::array<std::string_view, 2> kLitStages[] = {
+    {"lit_flat.vert", "lit_flat.frag"},
+    {"lit_gouraud.vert", "lit_gouraud.frag"},
+    {"lit_phong.vert", "lit_phong.frag"},
+};
+static_assert(std::size(kLitStages) == static_cast<std::size_t>(ShadingMode::Count));
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
+
+}  // namespace
+
+GlFrameRenderer::GlFrameRenderer(const GetProcAddress& getProcAddress)
+    : gl_(loadGlFunctions(getProcAddress)), rendererName_(rendererAndVersion(gl_)) {
+  frameUniforms_ = createBuffer(gl_);
+  gl_.glNamedBufferStorage(frameUniforms_.id(), sizeof(FrameBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  emptyVertexArray_ = createVertexArray(gl_);
+}
+
+void GlFrameRenderer::uploadScene(const Scene& scene) {
+  scene_ = SceneBuffers(gl_, scene);
+  checkError("scene upload");
+}
+
+std::vector<PassTiming> GlFrameRenderer::drawFrame(const FrameInputs& frame) {
+  if (frame.width <= 0 || frame.height <= 0)
+    throw Error("image size " + std::to_string(frame.width) + "x" + std::to_string(frame.height) + ": must be positive");
+  std::vector<PassTiming> timings;
+  gl_.glFinish();
+  Clock::time_point start = Clock::now();
+  if (preparePrograms(frame.shading, frame.shadowLayerCount > 0)) {
+    timings.push_back({"shader compile + link", millisecondsSince(start)});
+    start = Clock::now();
+  }
+
+  const FrameBlock block = makeFrameBlock(frame);
+  gl_.glNamedBufferSubData(frameUniforms_.id(), 0, sizeof block, &block);
+  gl_.glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniforms_.id());
+  // The contract's conventions, set every frame because a viewer's UI shares the context.
+  gl_.glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // clip z in [0, w], window origin at the lower left
+  gl_.glFrontFace(GL_CCW);                           // counter-clockwise in window coordinates is front
+  for (GLenum capability : {GL_BLEND, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_DITHER, GL_FRAMEBUFFER_SRGB, GL_POLYGON_OFFSET_FILL})
+    gl_.glDisable(capability);  // a pixel's value is the shader's output, rounded to 8 bits, nothing else
+
+  if (frame.shadowLayerCount > 0) {
+    shadowPass(frame);
+    gl_.glFinish();
+    checkError("the shadow pass");
+    timings.push_back({"shadow pass (" + std::to_string(frame.shadowLayerCount) + " maps)", millisecondsSince(start)});
+    start = Clock::now();
+  }
+  litPass(frame);
+  gl_.glFinish();
+  checkError("the lit pass");
+  timings.push_back({"lit pass", millisecondsSince(start)});
+  return timings;
+}
+
+Image GlFrameRenderer::readImage() const {
+  Image image(target_.width(), target_.height());
+  gl_.glBindFramebuffer(GL_READ_FRAMEBUFFER, target_.framebuffer());
+  gl_.glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  gl_.glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  // Row 0 of glReadPixels is the bottom row, as facet::Image stores it: no flip.
+  gl_.glReadPixels(0, 0, image.width(), image.height(), GL_RGBA, GL_UNSIGNED_BYTE, image.data());
+  checkError("the read-back");
+  return image;
+}
+
+bool GlFrameRenderer::preparePrograms(ShadingMode shading, bool shadows) {
+  bool compiled = false;
+  std::optional<LitProgram>& lit = litPrograms_[static_cast<std::size_t>(shading)];
+  if (!lit) {
+    if (shading == ShadingMode::Flat && getInteger(gl_, GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS) < 3)
+      throw Error("OpenGL: flat shading reads the mesh from 3 storage buffers in the vertex shader; this driver allows " +
+                  std::to_string(getInteger(gl_, GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS)));
+    const auto& stages = kLitStages[static_cast<std::size_t>(shading)];
+    ShaderProgram program = buildProgram(gl_, {stages[0], stages[1]});
+    const auto at = [&](const char* name) { return uniformLocation(gl_, program, name); };
+    lit.emplace(LitProgram{.clipFromModel = at("clipFromModel"),
+                           .worldFromModel = at("worldFromModel"),
+                           .normalMatrix = at("normalMatrix"),
+                           .emissive = at("material.emissive"),
+                           .ka = at("material.ka"),
+                           .kd = at("material.kd"),
+                           .ks = at("material.ks"),
+                           .shininess = at("material.shininess"),
+                           .baseColorFactor = at("baseColorFactor"),
+                           .hasBaseColorTexture = at("hasBaseColorTexture"),
+                           .program = std::move(program)});
+    compiled = true;
+  }
+  if (shadows && !depthProgram_) {
+    ShaderProgram program = buildProgram(gl_, {"shadow_depth.vert", "shadow_depth.frag"});
+    depthProgram_.emplace(DepthProgram{.lightClipFromWorld = uniformLocation(gl_, program, "lightClipFromWorld"),
+                                       .worldFromModel = uniformLocation(gl_, program, "worldFromModel"),
+                                       .program = std::move(program)});
+    compiled = true;
+  }
+  if (!backgroundProgram_) {
+    backgroundProgram_.emplace(buildProgram(gl_, {"background.vert", "background.frag"}));
+    compiled = true;
+  }
+  return compiled;
+}
+
+void GlFrameRenderer::shadowPass(const FrameInputs& frame) {
+  shadowMaps_.resize(gl_, frame.shadows.mapSize, frame.shadowLayerCount);
+  const GLuint program = depthProgram_->program.id();
+  gl_.glBindFramebuffer(GL_FRAMEBUFFER, shadowMaps_.framebuffer());
+  gl_.glViewport(0, 0, shadowMaps_.size(), shadowMaps_.size());
+  gl_.glUseProgram(program);
+  gl_.glDisable(GL_CULL_FACE);  // every triangle casts a shadow
+  gl_.glEnable(GL_DEPTH_TEST);
+  gl_.glDepthFunc(GL_LESS);
+  gl_.glDepthMask(GL_TRUE);
+  const float farDepth = 1.0f;
+  for (const FrameLight& light : frame.lights) {
+    if (!light.hasShadowMap) continue;
+    for (int face = 0; face < light.frustum.faceCount; ++face) {
+      shadowMaps_.attachLayer(gl_, light.shadowLayer + face);
+      gl_.glClearNamedFramebufferfv(shadowMaps_.framebuffer(), GL_DEPTH, 0, &farDepth);
+      gl_.glProgramUniformMatrix4fv(program, depthProgram_->lightClipFromWorld, 1, GL_FALSE,
+                                    glm::value_ptr(light.frustum.clipFromWorld[static_cast<std::size_t>(face)]));
+      for (const FrameInstance& instance : frame.instances) {
+        const MeshBuffers& mesh = scene_.mesh(instance.mesh);
+        if (mesh.indexCount == 0) continue;
+        gl_.glProgramUniformMatrix4fv(program, depthProgram_->worldFromModel, 1, GL_FALSE, glm::value_ptr(instance.worldFromModel));
+        gl_.glBindVertexArray(mesh.vertexArray.id());
+        gl_.glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+      }
+    }
+  }
+}
+
+void GlFrameRenderer::litPass(const FrameInputs& frame) {
+  target_.resize(gl_, frame.width, frame.height);
+  gl_.glBindFramebuffer(GL_FRAMEBUFFER, target_.framebuffer());
+  gl_.glViewport(0, 0, frame.width, frame.height);
+  gl_.glDepthMask(GL_TRUE);
+  const float farDepth = 1.0f;
+  gl_.glClearNamedFramebufferfv(target_.framebuffer(), GL_DEPTH, 0, &farDepth);
+
+  // The background over every pixel, through the same encoding as lit pixels; depth stays 1.
+  gl_.glDisable(GL_DEPTH_TEST);
+  gl_.glDisable(GL_CULL_FACE);
+  gl_.glUseProgram(backgroundProgram_->id());
+  gl_.glBindVertexArray(emptyVertexArray_.id());
+  gl_.glDrawArrays(GL_TRIANGLES, 0, 3);
+
+  gl_.glEnable(GL_DEPTH_TEST);
+  gl_.glDepthFunc(GL_LESS);
+  if (frame.cullBackFaces) {
+    gl_.glEnable(GL_CULL_FACE);
+    gl_.glCullFace(GL_BACK);
+  }
+  gl_.glBindTextureUnit(kShadowMapsUnit, frame.shadowLayerCount > 0 ? shadowMaps_.texture() : 0);
+  const LitProgram& lit = *litPrograms_[static_cast<std::size_t>(frame.shading)];
+  gl_.glUseProgram(lit.program.id());
+  for (const FrameInstance& instance : frame.instances) drawInstance(lit, frame, instance, frame.shading == ShadingMode::Flat);
+}
+
+void GlFrameRenderer::drawInstance(const LitProgram& lit, const FrameInputs& frame, const FrameInstance& instance, bool flat) {
+  const MeshBuffers& mesh = scene_.mesh(instance.mesh);
+  if (mesh.indexCount == 0) return;
+  if (instance.material < 0 || static_cast<std::size_t>(instance.material) >= frame.materials.size())
+    throw Error("OpenGL backend: the frame has no material " + std::to_string(instance.material));
+  const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
+  const bool textured = material.baseColorTexture >= 0 && mesh.texcoords;
+
+  const GLuint program = lit.program.id();
+  gl_.glProgramUniformMatrix4fv(program, lit.clipFromModel, 1, GL_FALSE, glm::value_ptr(instance.clipFromModel));
+  gl_.glProgramUniformMatrix4fv(program, lit.worldFromModel, 1, GL_FALSE, glm::value_ptr(instance.worldFromModel));
+  gl_.glProgramUniformMatrix3fv(program, lit.normalMatrix, 1, GL_FALSE, glm::value_ptr(instance.normalMatrix));
+  gl_.glProgramUniform3fv(program, lit.emissive, 1, glm::value_ptr(material.emissive));
+  gl_.glProgramUniform1f(program, lit.ka, material.ka);
+  gl_.glProgramUniform1f(program, lit.kd, material.kd);
+  gl_.glProgramUniform1f(program, lit.ks, material.ks);
+  gl_.glProgramUniform1f(program, lit.shininess, material.shininess);
+  gl_.glProgramUniform3fv(program, lit.baseColorFactor, 1, glm::value_ptr(material.baseColor));
+  gl_.glProgramUniform1i(program, lit.hasBaseColorTexture, textured ? 1 : 0);
+  gl_.glBindTextureUnit(kBaseColorTextureUnit, textured ? scene_.texture(material.baseColorTexture) : 0);
+
+  if (flat) {
+    gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshIndicesBinding, mesh.indices.id());
+    gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshPositionsBinding, mesh.positions.id());
+    // Read only when textured; something valid is bound either way.
+    gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshTexcoordsBinding, textured ? mesh.texcoords.id() : mesh.positions.id());
+    gl_.glBindVertexArray(emptyVertexArray_.id());
+    gl_.glDrawArrays(GL_TRIANGLES, 0, mesh.indexCount);
+  } else {
+    gl_.glBindVertexArray(mesh.vertexArray.id());
+    gl_.glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+  }
+}
+
+void GlFrameRenderer::checkError(const char* where) const {
+  const GLenum error = gl_.glGetError();
+  if (error == GL_NO_ERROR) return;
+  while (gl_.glGetError() != GL_NO_ERROR) {
+  }
+  char code[16];
+  std::snprintf(code, sizeof code, "0x%04x", error);
+  throw Error(std::string("OpenGL error ") + code + " in " + where);
+}
+
+}  // namespace facet::gl

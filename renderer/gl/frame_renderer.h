@@ -1,0 +1,80 @@
+#pragma once
+// Draws frames with OpenGL 4.5 into an offscreen framebuffer, as
+// renderer/PIPELINE.md lays them out: shadow pass 1 into a depth array
+// texture, then the lit pass (background, then every mesh instance with
+// flat, Gouraud or Phong shading). It needs only a current context and that
+// context's getProcAddress, so the headless renderer (gl_renderer.cpp) and
+// the viewer's GLFW window share it. Every call needs its context current.
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gl/frame_block.h"
+#include "gl/gl_functions.h"
+#include "gl/render_target.h"
+#include "gl/scene_buffers.h"
+#include "gl/shader_program.h"
+#include "render/renderer.h"
+
+namespace facet::gl {
+
+class GlFrameRenderer {
+ public:
+  // Loads the function table; throws facet::Error without OpenGL 4.5 core.
+  explicit GlFrameRenderer(const GetProcAddress& getProcAddress);
+  GlFrameRenderer(const GlFrameRenderer&) = delete;  // GL objects point at gl_
+  GlFrameRenderer& operator=(const GlFrameRenderer&) = delete;
+
+  // GL_RENDERER and GL_VERSION.
+  const std::string& rendererName() const { return rendererName_; }
+
+  // Uploads the scene's meshes and textures; the frames drawn next must be built from this scene.
+  void uploadScene(const Scene& scene);
+
+  // Pass 1 and the lit pass of one frame, with glFinish between them so that
+  // each timing is that pass's. Throws facet::Error (limits, framebuffer,
+  // shaders, a GL error).
+  std::vector<PassTiming> drawFrame(const FrameInputs& frame);
+
+  // The last frame's RGBA8 pixels, bottom row first as glReadPixels gives them.
+  Image readImage() const;
+
+  // The framebuffer drawFrame draws into (colour attachment 0), for a viewer to blit from.
+  GLuint framebuffer() const { return target_.framebuffer(); }
+
+ private:
+  // A lit-pass program and its uniform locations (shaders/draw_uniforms.glsl).
+  // The program comes last: aggregate initialization evaluates in order, and
+  // the locations are looked up before the program is moved in.
+  struct LitProgram {
+    GLint clipFromModel, worldFromModel, normalMatrix;
+    GLint emissive, ka, kd, ks, shininess;
+    GLint baseColorFactor, hasBaseColorTexture;
+    ShaderProgram program;
+  };
+  struct DepthProgram {
+    GLint lightClipFromWorld, worldFromModel;
+    ShaderProgram program;
+  };
+
+  // Compiles what the frame needs and has not been compiled yet; true when it compiled anything.
+  bool preparePrograms(ShadingMode shading, bool shadows);
+  void shadowPass(const FrameInputs& frame);
+  void litPass(const FrameInputs& frame);
+  void drawInstance(const LitProgram& lit, const FrameInputs& frame, const FrameInstance& instance, bool flat);
+  void checkError(const char* where) const;
+
+  GlFunctions gl_;
+  std::string rendererName_;
+  std::array<std::optional<LitProgram>, static_cast<std::size_t>(ShadingMode::Count)> litPrograms_;
+  std::optional<DepthProgram> depthProgram_;
+  std::optional<ShaderProgram> backgroundProgram_;
+  GlObject frameUniforms_;     // the Frame block (FrameBlock), binding 0
+  GlObject emptyVertexArray_;  // for draws that read no attributes (background, flat shading)
+  SceneBuffers scene_;
+  ShadowMapArray shadowMaps_;
+  RenderTarget target_;
+};
+
+}  // namespace facet::gl

@@ -1,0 +1,84 @@
+#include "gl/scene_buffers.h"
+
+#include <string>
+
+#include "common/error.h"
+
+namespace facet::gl {
+namespace {
+
+template <typename T>
+GlObject uploadBuffer(const GlFunctions& gl, const std::vector<T>& data) {
+  GlObject buffer = createBuffer(gl);
+  gl.glNamedBufferStorage(buffer.id(), static_cast<GLsizeiptr>(data.size() * sizeof(T)), data.data(), 0);
+  return buffer;
+}
+
+void addAttribute(const GlFunctions& gl, GLuint vertexArray, GLuint location, const GlObject& buffer, GLint components) {
+  gl.glVertexArrayVertexBuffer(vertexArray, location, buffer.id(), 0, components * static_cast<GLsizei>(sizeof(float)));
+  gl.glVertexArrayAttribFormat(vertexArray, location, components, GL_FLOAT, GL_FALSE, 0);
+  gl.glVertexArrayAttribBinding(vertexArray, location, location);
+  gl.glEnableVertexArrayAttrib(vertexArray, location);
+}
+
+MeshBuffers uploadMesh(const GlFunctions& gl, const Mesh& mesh) {
+  MeshBuffers buffers;
+  buffers.indexCount = static_cast<GLsizei>(mesh.indices.size() / 3 * 3);
+  if (buffers.indexCount == 0 || mesh.positions.empty()) {
+    buffers.indexCount = 0;  // nothing to draw; GL refuses empty buffer storage
+    return buffers;
+  }
+  if (mesh.normals.size() != mesh.positions.size())
+    throw Error("mesh '" + mesh.name + "': " + std::to_string(mesh.normals.size()) + " normals for " + std::to_string(mesh.positions.size()) +
+                " positions");
+  buffers.positions = uploadBuffer(gl, mesh.positions);
+  buffers.normals = uploadBuffer(gl, mesh.normals);
+  buffers.indices = uploadBuffer(gl, mesh.indices);
+  buffers.vertexArray = createVertexArray(gl);
+  const GLuint vao = buffers.vertexArray.id();
+  addAttribute(gl, vao, kPositionAttribute, buffers.positions, 3);
+  addAttribute(gl, vao, kNormalAttribute, buffers.normals, 3);
+  if (mesh.texcoords.size() == mesh.positions.size()) {
+    buffers.texcoords = uploadBuffer(gl, mesh.texcoords);
+    addAttribute(gl, vao, kTexcoordAttribute, buffers.texcoords, 2);
+  }
+  gl.glVertexArrayElementBuffer(vao, buffers.indices.id());
+  return buffers;
+}
+
+GlObject uploadTexture(const GlFunctions& gl, const Image& image) {
+  if (image.empty()) return {};
+  // Unsigned integer texels: the shader turns bytes into [0,1] itself (shaders/texture.glsl says why).
+  GlObject texture = createTexture(gl, GL_TEXTURE_2D);
+  gl.glTextureStorage2D(texture.id(), 1, GL_RGBA8UI, image.width(), image.height());
+  // Read with texelFetch only; integer textures are complete only with NEAREST.
+  gl.glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  gl.glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  gl.glTextureSubImage2D(texture.id(), 0, 0, 0, image.width(), image.height(), GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, image.data());
+  return texture;
+}
+
+}  // namespace
+
+SceneBuffers::SceneBuffers(const GlFunctions& gl, const Scene& scene) {
+  static_assert(sizeof(glm::vec3) == 3 * sizeof(float) && sizeof(glm::vec2) == 2 * sizeof(float) && sizeof(Rgba8) == 4);
+  meshes_.reserve(scene.meshes.size());
+  for (const Mesh& mesh : scene.meshes) meshes_.push_back(uploadMesh(gl, mesh));
+  textures_.reserve(scene.textures.size());
+  for (const Texture& texture : scene.textures) textures_.push_back(uploadTexture(gl, texture.image));
+}
+
+const MeshBuffers& SceneBuffers::mesh(int index) const {
+  if (index < 0 || static_cast<std::size_t>(index) >= meshes_.size())
+    throw Error("OpenGL backend: the frame draws mesh " + std::to_string(index) + " but the uploaded scene has " +
+                std::to_string(meshes_.size()));
+  return meshes_[static_cast<std::size_t>(index)];
+}
+
+GLuint SceneBuffers::texture(int index) const {
+  if (index < 0 || static_cast<std::size_t>(index) >= textures_.size() || !textures_[static_cast<std::size_t>(index)])
+    throw Error("OpenGL backend: texture " + std::to_string(index) + " is missing or empty in the uploaded scene");
+  return textures_[static_cast<std::size_t>(index)].id();
+}
+
+}  // namespace facet::gl

@@ -1,0 +1,40 @@
+#pragma once
+// A scene's meshes and base colour textures in OpenGL buffers and textures,
+// uploaded once per scene and drawn by every frame of it.
+#include <vector>
+
+#include "gl/gl_object.h"
+#include "scene/scene.h"
+
+namespace facet::gl {
+
+// Vertex attribute locations of the lit and shadow vertex shaders.
+inline constexpr GLuint kPositionAttribute = 0;  // vec3, model space
+inline constexpr GLuint kNormalAttribute = 1;    // vec3, model space
+inline constexpr GLuint kTexcoordAttribute = 2;  // vec2, TEXCOORD_0
+
+struct MeshBuffers {
+  GlObject positions;    // x y z per vertex; also read as a storage buffer by lit_flat.vert
+  GlObject normals;
+  GlObject texcoords;    // none when the mesh has no TEXCOORD_0
+  GlObject indices;      // three per triangle; also a storage buffer for lit_flat.vert
+  GlObject vertexArray;  // the attributes above and the index buffer
+  GLsizei indexCount = 0;  // whole triangles only
+};
+
+class SceneBuffers {
+ public:
+  SceneBuffers() = default;
+  // Throws facet::Error for a mesh whose normals do not match its positions.
+  SceneBuffers(const GlFunctions& gl, const Scene& scene);
+
+  // Throw facet::Error for an index the uploaded scene does not have.
+  const MeshBuffers& mesh(int index) const;
+  GLuint texture(int index) const;
+
+ private:
+  std::vector<MeshBuffers> meshes_;
+  std::vector<GlObject> textures_;  // GL_RGBA8UI: the sRGB-encoded bytes as stored, bottom row first
+};
+
+}  // namespace facet::gl

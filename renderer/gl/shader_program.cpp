@@ -1,0 +1,62 @@
+#include "gl/shader_program.h"
+
+#include <vector>
+
+#include "common/error.h"
+
+namespace facet::gl {
+namespace {
+
+GLenum stageOf(std::string_view file) {
+  const std::string_view extension = file.substr(std::min(file.rfind('.'), file.size()));
+  if (extension == ".vert") return GL_VERTEX_SHADER;
+  if (extension == ".geom") return GL_GEOMETRY_SHADER;
+  if (extension == ".frag") return GL_FRAGMENT_SHADER;
+  if (extension == ".comp") return GL_COMPUTE_SHADER;
+  throw Error("shader " + std::string(file) + ": unknown stage (expected .vert, .geom, .frag or .comp)");
+}
+
+std::string infoLog(const GlFunctions& gl, GLuint object, bool program) {
+  GLint length = 0;
+  (program ? gl.glGetProgramiv : gl.glGetShaderiv)(object, GL_INFO_LOG_LENGTH, &length);
+  std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+  (program ? gl.glGetProgramInfoLog : gl.glGetShaderInfoLog)(object, static_cast<GLsizei>(log.size()), nullptr, log.data());
+  return log;
+}
+
+GlObject compileStage(const GlFunctions& gl, std::string_view file, const ShaderFileLookup& find) {
+  const ShaderSource source = assembleShaderSource(file, find);
+  GlObject shader(gl, gl.glCreateShader(stageOf(file)), [](const GlFunctions& f, GLuint id) { f.glDeleteShader(id); });
+  const char* text = source.text.c_str();
+  const auto length = static_cast<GLint>(source.text.size());
+  gl.glShaderSource(shader.id(), 1, &text, &length);
+  gl.glCompileShader(shader.id());
+  GLint compiled = GL_FALSE;
+  gl.glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &compiled);
+  if (!compiled) throw Error("shader " + std::string(file) + " does not compile: " + describeLog(infoLog(gl, shader.id(), false), source.files));
+  return shader;
+}
+
+}  // namespace
+
+ShaderProgram buildProgram(const GlFunctions& gl, std::initializer_list<std::string_view> stageFiles, const ShaderFileLookup& find) {
+  std::string name;
+  std::vector<GlObject> shaders;
+  for (std::string_view file : stageFiles) {
+    name += (name.empty() ? "" : " + ") + std::string(file);
+    shaders.push_back(compileStage(gl, file, find));
+  }
+  GlObject program(gl, gl.glCreateProgram(), [](const GlFunctions& f, GLuint id) { f.glDeleteProgram(id); });
+  for (const GlObject& shader : shaders) gl.glAttachShader(program.id(), shader.id());
+  gl.glLinkProgram(program.id());
+  GLint linked = GL_FALSE;
+  gl.glGetProgramiv(program.id(), GL_LINK_STATUS, &linked);
+  if (!linked) throw Error("shader program " + name + " does not link: " + describeLog(infoLog(gl, program.id(), true), {}));
+  return {std::move(program), name};  // the shaders are deleted here; the program keeps them while it lives
+}
+
+GLint uniformLocation(const GlFunctions& gl, const ShaderProgram& program, const char* name) {
+  return gl.glGetUniformLocation(program.id(), name);
+}
+
+}  // namespace facet::gl

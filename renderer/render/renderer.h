@@ -1,0 +1,32 @@
+#pragma once
+// The interface both backends implement: a Scene and its FrameInputs in, an
+// Image out. Backends consume FrameInputs; they never compute a matrix.
+#include <string>
+#include <vector>
+
+#include "image/image.h"
+#include "pipeline/frame_inputs.h"
+#include "scene/scene.h"
+
+namespace facet {
+
+struct PassTiming {
+  std::string pass;       // "shadow pass (light 0)", "lit pass", "read-back", ...
+  double milliseconds = 0;
+};
+
+struct RenderResult {
+  Image image;                      // RGBA8, bottom row first, sRGB-encoded
+  std::vector<PassTiming> timings;  // in the order the passes ran
+};
+
+class Renderer {
+ public:
+  virtual ~Renderer() = default;
+  // What renders: "cpu (2 threads)", "gl: llvmpipe (LLVM 15.0.6, 256 bits), 4.5 (Core Profile) Mesa 22.3.6 via osmesa".
+  virtual std::string description() const = 0;
+  // Throws facet::Error when the frame cannot be rendered.
+  virtual RenderResult render(const Scene& scene, const FrameInputs& frame) = 0;
+};
+
+}  // namespace facet

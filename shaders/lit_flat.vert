@@ -1,0 +1,54 @@
+#version 450 core
+// Lit pass, flat shading: one illumination per triangle, from its world-space
+// geometric normal normalize(cross(p1 - p0, p2 - p0)) at its centroid, V from
+// the centroid, for the front and the back side (renderer/PIPELINE.md, section 7).
+//
+// The mesh is drawn without indices, three vertices per triangle, and each
+// vertex reads its triangle's corners from the mesh's buffers; all three
+// compute the same illumination. A geometry shader would do it once, but
+// with one llvmpipe maps vertices to the window in C without the fused
+// multiply-add of its vertex stage, and the covered pixels would no longer be
+// those of the CPU reference (renderer/PIPELINE.md, section 6).
+#include "frame_block.glsl"
+#include "transform.glsl"
+#include "texture.glsl"
+#include "draw_uniforms.glsl"
+#include "lighting.glsl"
+
+layout(std430, binding = 0) readonly buffer MeshIndices { uint indices[]; };      // three per triangle
+layout(std430, binding = 1) readonly buffer MeshPositions { float positions[]; }; // model space, x y z per vertex
+layout(std430, binding = 2) readonly buffer MeshTexcoords { float texcoords[]; }; // s t per vertex (read only when textured)
+
+flat out vec3 frontDiffuse;  // Illumination with N
+flat out vec3 frontSpecular;
+flat out vec3 backDiffuse;   // Illumination with -N, for back faces when culling is off
+flat out vec3 backSpecular;
+out vec2 st;                 // a texture still varies O_d per pixel
+
+vec3 modelPosition(uint v) {
+  return vec3(positions[3u * v], positions[3u * v + 1u], positions[3u * v + 2u]);
+}
+
+vec3 worldPosition(uint v) {
+  return transformPoint(worldFromModel, modelPosition(v)).xyz;
+}
+
+void main() {
+  int first = gl_VertexID - gl_VertexID % 3;
+  uint v = indices[gl_VertexID];
+  gl_Position = transformPoint(clipFromModel, modelPosition(v));
+
+  vec3 p0 = worldPosition(indices[first]);
+  vec3 p1 = worldPosition(indices[first + 1]);
+  vec3 p2 = worldPosition(indices[first + 2]);
+  vec3 N = normalize(cross(p1 - p0, p2 - p0));
+  vec3 centre = (p0 + p1 + p2) / 3.0;  // the centroid (`centroid` is a GLSL keyword)
+  vec3 V = viewVector(centre);
+  Illumination front = illuminate(material, centre, N, V);
+  Illumination back = illuminate(material, centre, -N, V);
+  frontDiffuse = front.diffuse;
+  frontSpecular = front.specular;
+  backDiffuse = back.diffuse;
+  backSpecular = back.specular;
+  st = hasBaseColorTexture ? vec2(texcoords[2u * v], texcoords[2u * v + 1u]) : vec2(0.0);
+}

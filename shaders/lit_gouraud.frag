@@ -1,0 +1,21 @@
+#version 450 core
+// Lit pass, Gouraud shading: the interpolated illumination of the side seen,
+// times O_d at this pixel (renderer/PIPELINE.md, section 7).
+#include "frame_block.glsl"
+#include "transform.glsl"
+#include "texture.glsl"
+#include "draw_uniforms.glsl"
+#include "lighting.glsl"
+
+in vec3 frontDiffuse;
+in vec3 frontSpecular;
+in vec3 backDiffuse;
+in vec3 backSpecular;
+in vec2 st;
+
+layout(location = 0) out vec4 color;
+
+void main() {
+  Illumination I = gl_FrontFacing ? Illumination(frontDiffuse, frontSpecular) : Illumination(backDiffuse, backSpecular);
+  color = vec4(encodeSrgb(shade(I, baseColorAt(st))), 1.0);
+}

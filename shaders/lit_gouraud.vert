@@ -1,0 +1,33 @@
+#version 450 core
+// Lit pass, Gouraud shading: the illumination equation at each vertex (V and
+// the shadow factor too), for the front and the back side; the rasterizer
+// interpolates both and lit_gouraud.frag picks one (renderer/PIPELINE.md, section 7).
+#include "frame_block.glsl"
+#include "transform.glsl"
+#include "texture.glsl"
+#include "draw_uniforms.glsl"
+#include "lighting.glsl"
+
+layout(location = 0) in vec3 position;  // model space
+layout(location = 1) in vec3 normal;    // model space, unit length
+layout(location = 2) in vec2 texcoord;  // TEXCOORD_0 (0, 0 when the mesh has none)
+
+out vec3 frontDiffuse;   // Illumination with N
+out vec3 frontSpecular;
+out vec3 backDiffuse;    // Illumination with -N, for back faces when culling is off
+out vec3 backSpecular;
+out vec2 st;
+
+void main() {
+  gl_Position = transformPoint(clipFromModel, position);
+  vec3 P = transformPoint(worldFromModel, position).xyz;
+  vec3 N = normalize(transformDirection(normalMatrix, normal));
+  vec3 V = viewVector(P);
+  Illumination front = illuminate(material, P, N, V);
+  Illumination back = illuminate(material, P, -N, V);
+  frontDiffuse = front.diffuse;
+  frontSpecular = front.specular;
+  backDiffuse = back.diffuse;
+  backSpecular = back.specular;
+  st = texcoord;
+}

@@ -1,0 +1,22 @@
+#version 450 core
+// Lit pass, Phong shading: the illumination equation at every pixel, with the
+// interpolated normal renormalized (renderer/PIPELINE.md, section 7).
+#include "frame_block.glsl"
+#include "transform.glsl"
+#include "texture.glsl"
+#include "draw_uniforms.glsl"
+#include "lighting.glsl"
+
+in vec3 worldPosition;
+in vec3 worldNormal;
+in vec2 st;
+
+layout(location = 0) out vec4 color;
+
+void main() {
+  vec3 P = worldPosition;
+  vec3 N = normalize(worldNormal);
+  if (!gl_FrontFacing) N = -N;  // two-sided lighting: only drawn when culling is off
+  vec3 I = shade(illuminate(material, P, N, viewVector(P)), baseColorAt(st));
+  color = vec4(encodeSrgb(I), 1.0);
+}

@@ -1,0 +1,22 @@
+#version 450 core
+// Lit pass, Phong shading: positions and normals to world space here, the
+// lighting per pixel in lit_phong.frag (renderer/PIPELINE.md, section 7).
+#include "frame_block.glsl"
+#include "transform.glsl"
+#include "texture.glsl"
+#include "draw_uniforms.glsl"
+
+layout(location = 0) in vec3 position;  // model space
+layout(location = 1) in vec3 normal;    // model space, unit length
+layout(location = 2) in vec2 texcoord;  // TEXCOORD_0 (0, 0 when the mesh has none)
+
+out vec3 worldPosition;
+out vec3 worldNormal;  // unit at the vertex; renormalized per pixel
+out vec2 st;
+
+void main() {
+  gl_Position = transformPoint(clipFromModel, position);
+  worldPosition = transformPoint(worldFromModel, position).xyz;
+  worldNormal = normalize(transformDirection(normalMatrix, normal));
+  st = texcoord;
+}

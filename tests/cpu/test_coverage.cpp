@@ -1,0 +1,157 @@
+// Coverage: which pixels a triangle covers, checkable by hand against the
+// rules in renderer/PIPELINE.md section 6 (llvmpipe's).
+#include <set>
+#include <utility>
+#include <vector>
+
+#include <doctest/doctest.h>
+
+#include "cpu/clipper.h"
+#include "cpu/rasterize.h"
+#include "cpu/triangle_setup.h"
+
+using namespace facet::cpu;
+using Pixels = std::set<std::pair<int, int>>;
+
+namespace {
+
+WindowVertex at(float x, float y) {
+  WindowVertex v;
+  v.x = x;
+  v.y = y;
+  return v;
+}
+
+Pixels cover(WindowVertex a, WindowVertex b, WindowVertex c, int size = 16) {
+  Pixels pixels;
+  TriangleSetup setup;
+  if (setupTriangle(a, b, c, size, size, setup)) rasterize(setup, 0, size, [&](int x, int y) { pixels.insert({x, y}); });
+  return pixels;
+}
+
+Pixels block(int x0, int x1, int y0, int y1) {
+  Pixels p;
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) p.insert({x, y});
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("snapping: 1/256 pixel grid centred on pixel centres, ties to even") {
+  CHECK(snapToGrid(2.5f) == 512);
+  CHECK(snapToGrid(2.5f + 1.0f / 256) == 513);
+  CHECK(snapToGrid(2.5f + 1.0f / 512) == 512);  // 512.5 -> 512 (even)
+  CHECK(snapToGrid(2.5f + 3.0f / 512) == 514);  // 513.5 -> 514 (even)
+  CHECK(snapToGrid(0.5f) == 0);
+  CHECK(snapToGrid(0.0f) == -128);
+}
+
+TEST_CASE("right triangle with vertices on pixel centres: left and bottom edges in, hypotenuse (right edge) out") {
+  // (2.5,2.5), (8.5,2.5), (2.5,8.5): the hypotenuse is x_w + y_w = 11, so pixel
+  // (x, y) with centre (x+0.5, y+0.5) is in when x >= 2, y >= 2 and x + y < 10.
+  Pixels expected;
+  for (int y = 2; y <= 7; ++y)
+    for (int x = 2; x + y < 10; ++x) expected.insert({x, y});
+  CHECK(cover(at(2.5f, 2.5f), at(8.5f, 2.5f), at(2.5f, 8.5f)) == expected);
+  CHECK(cover(at(2.5f, 2.5f), at(2.5f, 8.5f), at(8.5f, 2.5f)) == expected);  // winding does not matter
+}
+
+TEST_CASE("the other half of the square takes the hypotenuse but not its top and right edges") {
+  // (8.5,8.5), (2.5,8.5), (8.5,2.5): pixels with x + y >= 10 (centre on or past the
+  // hypotenuse, a left edge here), x <= 7 and y <= 7 (x_w = 8.5, y_w = 8.5 are right and top edges).
+  Pixels expected;
+  for (int y = 2; y <= 7; ++y)
+    for (int x = 2; x <= 7; ++x)
+      if (x + y >= 10) expected.insert({x, y});
+  CHECK(cover(at(8.5f, 8.5f), at(2.5f, 8.5f), at(8.5f, 2.5f)) == expected);
+}
+
+TEST_CASE("two triangles tiling a square cover its 6x6 pixels once: left/bottom in, right/top out") {
+  const Pixels lower = cover(at(2.5f, 2.5f), at(8.5f, 2.5f), at(2.5f, 8.5f));
+  const Pixels upper = cover(at(8.5f, 8.5f), at(2.5f, 8.5f), at(8.5f, 2.5f));
+  Pixels both = lower;
+  for (const auto& p : upper) CHECK(both.insert(p).second);  // no pixel twice
+  CHECK(both == block(2, 7, 2, 7));
+}
+
+TEST_CASE("edges between pixel centres: a square from 2.0 to 6.0 covers centres 2.5..5.5") {
+  const Pixels a = cover(at(2.0f, 2.0f), at(6.0f, 2.0f), at(6.0f, 6.0f));
+  const Pixels b = cover(at(2.0f, 2.0f), at(6.0f, 6.0f), at(2.0f, 6.0f));
+  Pixels both = a;
+  both.insert(b.begin(), b.end());
+  CHECK(a.size() + b.size() == 16);
+  CHECK(both == block(2, 5, 2, 5));
+}
+
+TEST_CASE("sub-pixel shifts: 1/256 moves an edge across a centre, 1/512 does not") {
+  const auto square = [](float d) {
+    Pixels p = cover(at(2.5f + d, 2.5f + d), at(10.5f + d, 2.5f + d), at(10.5f + d, 10.5f + d));
+    const Pixels q = cover(at(2.5f + d, 2.5f + d), at(10.5f + d, 10.5f + d), at(2.5f + d, 10.5f + d));
+    p.insert(q.begin(), q.end());
+    return p;
+  };
+  CHECK(square(0.0f) == block(2, 9, 2, 9));
+  CHECK(square(1.0f / 256) == block(3, 10, 3, 10));
+  CHECK(square(-1.0f / 256) == block(2, 9, 2, 9));
+  CHECK(square(1.0f / 512) == block(2, 9, 2, 9));
+  CHECK(square(3.0f / 512) == block(3, 10, 3, 10));
+}
+
+TEST_CASE("zero-area and sub-grid slivers cover nothing; front-facing is counter-clockwise") {
+  CHECK(cover(at(1.5f, 1.5f), at(5.5f, 5.5f), at(9.5f, 9.5f)).empty());
+  CHECK(cover(at(1.5f, 1.5f), at(9.5f, 1.5f), at(5.5f, 1.5f + 1.0f / 1024)).empty());  // snaps to zero area
+  TriangleSetup setup;
+  REQUIRE(setupTriangle(at(1, 1), at(9, 1), at(1, 9), 16, 16, setup));
+  CHECK(setup.frontFacing);
+  REQUIRE(setupTriangle(at(1, 1), at(1, 9), at(9, 1), 16, 16, setup));
+  CHECK_FALSE(setup.frontFacing);
+}
+
+TEST_CASE("a fan of many small triangles tiling a rectangle covers each pixel exactly once") {
+  // 40x30 rectangle [3.3, 43.3] x [2.7, 32.7] cut by an irregular grid, every cell split in two.
+  constexpr int W = 48, H = 36;
+  std::vector<int> count(W * H, 0);
+  const float xs[] = {3.3f, 7.0f, 11.25f, 15.6f, 20.0f, 24.1f, 29.77f, 33.0f, 38.5f, 43.3f};
+  const float ys[] = {2.7f, 6.1f, 10.0f, 14.45f, 19.3f, 23.0f, 27.9f, 32.7f};
+  std::size_t triangles = 0;
+  for (int j = 0; j + 1 < 8; ++j)
+    for (int i = 0; i + 1 < 10; ++i) {
+      // Perturb interior grid points so edges are not axis-aligned.
+      const auto p = [&](int a, int b) {
+        const bool interior = a > 0 && a < 9 && b > 0 && b < 7;
+        return at(xs[a] + (interior ? 0.37f * static_cast<float>((a * 7 + b * 3) % 5 - 2) : 0.0f),
+                  ys[b] + (interior ? 0.29f * static_cast<float>((a * 5 + b * 11) % 5 - 2) : 0.0f));
+      };
+      for (const auto& tri : {std::array{p(i, j), p(i + 1, j), p(i + 1, j + 1)}, std::array{p(i, j), p(i + 1, j + 1), p(i, j + 1)}}) {
+        TriangleSetup setup;
+        ++triangles;
+        if (setupTriangle(tri[0], tri[1], tri[2], W, H, setup)) rasterize(setup, 0, H, [&](int x, int y) { ++count[y * W + x]; });
+      }
+    }
+  CHECK(triangles == 9 * 7 * 2);
+  int twice = 0, missing = 0, outside = 0;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const float cx = static_cast<float>(x) + 0.5f, cy = static_cast<float>(y) + 0.5f;
+      const bool inside = cx > 3.3f && cx < 43.3f && cy > 2.7f && cy < 32.7f;
+      const int c = count[y * W + x];
+      if (c > 1) ++twice;
+      if (inside && c == 0) ++missing;
+      if (!inside && c != 0) ++outside;
+    }
+  CHECK(twice == 0);
+  CHECK(missing == 0);
+  CHECK(outside == 0);
+}
+
+TEST_CASE("rows outside the band are not touched") {
+  Pixels p;
+  TriangleSetup setup;
+  REQUIRE(setupTriangle(at(0, 0), at(16, 0), at(0, 16), 16, 16, setup));
+  rasterize(setup, 4, 6, [&](int x, int y) { p.insert({x, y}); });
+  for (const auto& [x, y] : p) CHECK((y == 4 || y == 5));
+  // Hypotenuse x + y = 16 is a right edge: row 4 takes x + 0.5 + 4.5 < 16 (x = 0..10),
+  // row 5 takes x + 0.5 + 5.5 < 16 (x = 0..9).
+  CHECK(p.size() == 11 + 10);
+}

@@ -1,0 +1,117 @@
+// The course's 2-pass shadows on the CPU: in shadow behind an occluder, lit in
+// front of it, and acne without bias.
+#include <set>
+
+#include <doctest/doctest.h>
+#include <glm/geometric.hpp>
+
+#include "cpu_test_scenes.h"
+#include "math/transforms.h"
+#include "scene/primitives.h"
+
+using namespace facet;
+using namespace facet::test;
+
+namespace {
+
+constexpr int kSize = 96;
+
+// Ground plus a cube of half-size 0.3 floating 0.5 above the origin.
+Scene occluderScene() {
+  Scene scene = groundScene(8, {0.8f, 0.8f, 0.8f});
+  Mesh cube = makeCube();
+  cube.material = 0;
+  scene.meshes.push_back(cube);
+  scene.instances.push_back({1, translation({0, 0.8f, 0}) * scaling(glm::vec3(0.3f))});
+  return scene;
+}
+
+RenderSettings shadowSettings(LightKind kind) {
+  RenderSettings s = topDownSettings(kSize);
+  Light light;
+  light.kind = kind;
+  light.position = {-1.0f, 3.0f, 0.0f};
+  light.direction = glm::normalize(glm::vec3(0.0f, 0.8f, 0.0f) - light.position);
+  light.spotCutoffDeg = 45.0f;
+  light.castsShadow = true;
+  s.lights = {light};
+  s.shadows.enabled = true;
+  s.shadows.mapSize = 512;
+  s.shadows.pcfRadius = 0;
+  s.ambient = 0.1f;
+  s.material.ka = 1.0f;
+  s.material.kd = 1.0f;
+  s.material.ks = 0.0f;
+  return s;
+}
+
+// Pixel of world point (x, 0, z) in the top-down view.
+std::array<int, 2> pixelOf(float x, float z) {
+  return {static_cast<int>((x + 2.0f) / 4.0f * kSize), static_cast<int>((2.0f - z) / 4.0f * kSize)};
+}
+
+}  // namespace
+
+TEST_CASE("a ground point behind the occluder is in shadow, one in front of it is lit, for each light kind") {
+  for (LightKind kind : {LightKind::Point, LightKind::Spot, LightKind::Directional}) {
+    CAPTURE(static_cast<int>(kind));
+    const RenderSettings s = shadowSettings(kind);
+    const Image image = renderCpu(occluderScene(), s);
+    // The light at (-1, 3, 0) through the cube centre (0, 0.8, 0) meets the ground at x = 0.36 (point, spot);
+    // the directional light runs along the same direction.
+    const auto shadowed = pixelOf(0.36f, 0.0f);
+    const auto lit = pixelOf(-1.2f, 0.6f);
+    const Rgba8 ambientOnly = expectedPixel(0.1f * glm::vec3(0.8f));
+    CHECK(image.at(shadowed[0], shadowed[1]) == ambientOnly);
+    CHECK(image.at(lit[0], lit[1]).r > ambientOnly.r + 60);
+    // The whole shadow, not a sliver of it: the cube (x in ±0.3, y in [0.5, 1.1]) seen from
+    // the light covers the ground row z = 0 from x = -0.16 to 1.05 (point, spot) or -0.07
+    // to 0.8 (directional); the camera above sees the ground there for x > 0.3 (the cube's
+    // top hides the rest), so x in [0.35, 0.75] is seen in shadow for every kind.
+    for (float x = 0.35f; x <= 0.75f; x += 0.05f) {
+      const auto p = pixelOf(x, 0.0f);
+      CAPTURE(x);
+      CHECK(image.at(p[0], p[1]) == ambientOnly);
+    }
+    RenderSettings off = s;
+    off.shadows.enabled = false;
+    CHECK(renderCpu(occluderScene(), off).at(shadowed[0], shadowed[1]).r > ambientOnly.r + 60);
+  }
+}
+
+TEST_CASE("zero bias shows shadow acne on the lit ground; the contract's bias does not") {
+  const auto darkLitGroundPixels = [](float slope, float minimum) {
+    RenderSettings s = shadowSettings(LightKind::Spot);
+    s.shadows.biasSlope = slope;
+    s.shadows.biasMin = minimum;
+    s.shadows.mapSize = 256;
+    const Image image = renderCpu(occluderScene(), s);
+    const Rgba8 ambientOnly = expectedPixel(0.1f * glm::vec3(0.8f));
+    int dark = 0;
+    // Ground with x in [-1.66, -0.65] and z in [-0.77, 0.73]: inside the 45° cone
+    // (dot(-L, D) >= 0.77), far from the cube's shadow around x = 0.36.
+    for (int py = 30; py < 66; ++py)
+      for (int px = 8; px < 33; ++px)
+        if (image.at(px, py) == ambientOnly) ++dark;
+    return dark;
+  };
+  const RenderSettings defaults;
+  const int acne = darkLitGroundPixels(0.0f, 0.0f);
+  const int clean = darkLitGroundPixels(defaults.shadows.biasSlope, defaults.shadows.biasMin);
+  CHECK(acne > 200);
+  CHECK(clean == 0);
+}
+
+TEST_CASE("PCF softens the shadow edge: intermediate values appear that hard shadows lack") {
+  const auto distinctReds = [](int radius) {
+    RenderSettings s = shadowSettings(LightKind::Spot);
+    s.shadows.pcfRadius = radius;
+    s.shadows.mapSize = 128;
+    const Image image = renderCpu(occluderScene(), s);
+    std::set<int> reds;
+    for (int py = 0; py < kSize; ++py)
+      for (int px = kSize / 2; px < kSize * 3 / 4; ++px) reds.insert(image.at(px, py).r);
+    return reds.size();
+  };
+  CHECK(distinctReds(2) > distinctReds(0) + 5);
+}

@@ -1,0 +1,20 @@
+# Runs `FACET render --backend gl -o OUTPUT ARGS` and checks: a non-zero exit,
+# exactly one line on stderr, that line matching PATTERN, and no OUTPUT file.
+file(REMOVE "${OUTPUT}")
+execute_process(COMMAND ${FACET} render --backend gl --size 64x48 -o ${OUTPUT} ${ARGS}
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc EQUAL 0)
+  message(FATAL_ERROR "expected a non-zero exit, got 0\nstdout: ${out}\nstderr: ${err}")
+endif()
+string(STRIP "${err}" err_stripped)
+string(FIND "${err_stripped}" "\n" newline)
+if(NOT newline EQUAL -1)
+  message(FATAL_ERROR "expected one line on stderr, got:\n${err}")
+endif()
+if(NOT err_stripped MATCHES "${PATTERN}")
+  message(FATAL_ERROR "stderr does not match '${PATTERN}':\n${err}")
+endif()
+if(EXISTS "${OUTPUT}")
+  message(FATAL_ERROR "the failed render left ${OUTPUT} behind")
+endif()
+message(STATUS "exit ${rc}: ${err_stripped}")

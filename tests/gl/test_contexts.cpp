@@ -1,0 +1,58 @@
+// Headless contexts and the errors a frame can end with: limits of the
+// driver, incomplete framebuffers. (A missing library or a context the
+// driver refuses is tested through the command line, tests/gl/CMakeLists.txt.)
+#include <string>
+
+#include <doctest/doctest.h>
+
+#include "common/error.h"
+#include "gl/gl_object.h"
+#include "gl/render_target.h"
+#include "gl_test_support.h"
+#include "scene/default_scene.h"
+
+using namespace facet;
+
+TEST_CASE("both headless contexts give OpenGL 4.5 core on llvmpipe, and a renderer names it") {
+  for (GlContextKind kind : {GlContextKind::OsMesa, GlContextKind::Egl}) {
+    const std::unique_ptr<gl::HeadlessContext> context = gl::makeHeadlessContext(kind);
+    const gl::GlFunctions gl = gl::loadGlFunctions([&](const char* name) { return context->getProcAddress(name); });
+    CHECK(gl::getInteger(gl, GL_MAJOR_VERSION) * 10 + gl::getInteger(gl, GL_MINOR_VERSION) >= 45);
+    CHECK((gl::getInteger(gl, GL_CONTEXT_PROFILE_MASK) & GL_CONTEXT_CORE_PROFILE_BIT) != 0);
+    CHECK(gl::rendererAndVersion(gl).find("4.5 (Core Profile)") != std::string::npos);
+  }
+  const std::string description = makeGlRenderer(GlContextKind::Egl)->description();
+  CHECK(description.find("gl: ") == 0);
+  CHECK(description.find(" via egl") == description.size() - 8);
+}
+
+TEST_CASE("an image larger than the driver's renderbuffers: facet::Error naming the limit, before anything is drawn") {
+  const Scene scene = makeDefaultScene();
+  FrameInputs frame = buildFrameInputs(scene, test::smallSettings());
+  frame.width = 40000;  // beyond llvmpipe's 16384, and beyond what --size accepts
+  CHECK_THROWS_WITH_AS(makeGlRenderer(GlContextKind::OsMesa)->render(scene, frame),
+                       doctest::Contains("image size 40000x120: larger than this OpenGL allows (GL_MAX_RENDERBUFFER_SIZE 16384)"), Error);
+}
+
+TEST_CASE("a shadow map larger than the driver's textures: facet::Error naming the settings key and the limit") {
+  const Scene scene = makeDefaultScene();
+  FrameInputs frame = buildFrameInputs(scene, test::smallSettings());
+  frame.shadows.mapSize = 32768;
+  CHECK_THROWS_WITH_AS(makeGlRenderer(GlContextKind::OsMesa)->render(scene, frame),
+                       doctest::Contains("settings key 'shadows.mapSize': 32768: larger than this OpenGL allows (GL_MAX_TEXTURE_SIZE"),
+                       Error);
+}
+
+TEST_CASE("an incomplete framebuffer: facet::Error naming it and its status") {
+  test::GlHarness harness;
+  const gl::GlObject framebuffer = gl::createFramebuffer(harness.gl);  // no attachment at all
+  CHECK_THROWS_WITH_AS(gl::checkFramebufferComplete(harness.gl, framebuffer.id(), "test"),
+                       "OpenGL: the test framebuffer is incomplete (GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT)", Error);
+}
+
+TEST_CASE("a frame that draws a mesh the uploaded scene lacks: facet::Error, not a crash") {
+  const Scene scene = makeDefaultScene();
+  FrameInputs frame = buildFrameInputs(scene, test::smallSettings());
+  frame.instances[0].mesh = 99;
+  CHECK_THROWS_WITH_AS(makeGlRenderer(GlContextKind::OsMesa)->render(scene, frame), doctest::Contains("mesh 99"), Error);
+}

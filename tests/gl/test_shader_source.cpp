@@ -1,0 +1,98 @@
+// Shader sources: #include expansion, error messages that name the file, and
+// every embedded program compiling and linking on the driver.
+#include <map>
+#include <string>
+
+#include <doctest/doctest.h>
+
+#include "common/error.h"
+#include "gl/embedded_shaders.h"
+#include "gl/shader_program.h"
+#include "gl/shader_source.h"
+#include "gl_test_support.h"
+
+using namespace facet;
+using namespace facet::gl;
+
+namespace {
+
+// Shader files from a map, then from the embedded shaders/.
+ShaderFileLookup lookupIn(const std::map<std::string, std::string, std::less<>>& files) {
+  return [&files](std::string_view name) -> std::optional<std::string_view> {
+    if (auto it = files.find(name); it != files.end()) return it->second;
+    return findEmbeddedShaderFile(name);
+  };
+}
+
+}  // namespace
+
+TEST_CASE("#include lines are replaced by the file, once per stage, between #line directives") {
+  const std::map<std::string, std::string, std::less<>> files = {
+      {"main.frag", "#version 450 core\n#include \"a.glsl\"\n#include \"b.glsl\"\nvoid main() {}\n"},
+      {"a.glsl", "float a() { return 1.0; }\n"},
+      {"b.glsl", "#include \"a.glsl\"\nfloat b() { return a(); }"},  // a.glsl again, and no final newline
+  };
+  const ShaderSource source = assembleShaderSource("main.frag", lookupIn(files));
+  CHECK(source.files == std::vector<std::string>{"main.frag", "a.glsl", "b.glsl"});
+  CHECK(source.text ==
+        "#version 450 core\n"
+        "#line 1 1\nfloat a() { return 1.0; }\n#line 3 0\n"
+        "#line 1 2\n\nfloat b() { return a(); }\n#line 4 0\n"
+        "void main() {}\n");
+  CHECK_THROWS_WITH_AS(assembleShaderSource("nothere.frag", lookupIn(files)), doctest::Contains("nothere.frag: no such file"), Error);
+}
+
+TEST_CASE("a driver log names files, on one line") {
+  const std::vector<std::string> files = {"lit_phong.frag", "frame_block.glsl"};
+  CHECK(describeLog("1:12(5): error: `x' undeclared\n0:3(1): error: y\n\n", files) ==
+        "frame_block.glsl:12(5): error: `x' undeclared; lit_phong.frag:3(1): error: y");
+  CHECK(describeLog("7:1(1): warning: z\n", files) == "7:1(1): warning: z");  // no such file: left as it is
+}
+
+TEST_CASE("every shader file is embedded, and every program of the backend compiles and links") {
+  for (const char* name : {"frame_block.glsl", "transform.glsl", "lighting.glsl", "texture.glsl", "draw_uniforms.glsl"})
+    CHECK_MESSAGE(findEmbeddedShaderFile(name).has_value(), name);
+  test::GlHarness harness;
+  for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) {
+    const std::string name(kShadingModeNames[static_cast<std::size_t>(mode)]);
+    CHECK_NOTHROW(buildProgram(harness.gl, {"lit_" + name + ".vert", "lit_" + name + ".frag"}));
+  }
+  CHECK_NOTHROW(buildProgram(harness.gl, {"shadow_depth.vert", "shadow_depth.frag"}));
+  CHECK_NOTHROW(buildProgram(harness.gl, {"background.vert", "background.frag"}));
+}
+
+TEST_CASE("a shader that does not compile: facet::Error names the file and line, with the driver's log") {
+  test::GlHarness harness;
+  const std::map<std::string, std::string, std::less<>> files = {
+      {"broken.frag", "#version 450 core\n#include \"helper.glsl\"\nout vec4 color;\nvoid main() { color = helper(); }\n"},
+      {"helper.glsl", "vec4 helper() {\n  return undeclaredThing;\n}\n"},
+  };
+  try {
+    buildProgram(harness.gl, {"background.vert", "broken.frag"}, lookupIn(files));
+    FAIL("expected facet::Error");
+  } catch (const Error& e) {
+    const std::string message = e.what();
+    INFO(message);
+    CHECK(message.find("shader broken.frag does not compile") == 0);
+    CHECK(message.find("helper.glsl:2(") != std::string::npos);  // the line inside the included file
+    CHECK(message.find("undeclaredThing") != std::string::npos);  // the driver's own words
+    CHECK(message.find('\n') == std::string::npos);
+  }
+}
+
+TEST_CASE("stages that do not link: facet::Error names the program, with the driver's log") {
+  test::GlHarness harness;
+  const std::map<std::string, std::string, std::less<>> files = {
+      {"mismatch.vert", "#version 450 core\nout vec3 value;\nvoid main() { value = vec3(1.0); gl_Position = vec4(0.0); }\n"},
+      {"mismatch.frag", "#version 450 core\nin vec4 value;\nout vec4 color;\nvoid main() { color = value; }\n"},
+  };
+  try {
+    buildProgram(harness.gl, {"mismatch.vert", "mismatch.frag"}, lookupIn(files));
+    FAIL("expected facet::Error");
+  } catch (const Error& e) {
+    const std::string message = e.what();
+    INFO(message);
+    CHECK(message.find("shader program mismatch.vert + mismatch.frag does not link: ") == 0);
+    CHECK(message.find("value") != std::string::npos);
+  }
+}

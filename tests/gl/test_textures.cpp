@@ -1,0 +1,90 @@
+// Base colour textures (renderer/PIPELINE.md, section 8): the texel values
+// texelFetch gives the shaders, and a textured glTF model.
+#include <cstring>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <doctest/doctest.h>
+
+#include "gl/gl_object.h"
+#include "gl/shader_program.h"
+#include "gl_test_support.h"
+#include "scene/load_scene.h"
+
+using namespace facet;
+
+TEST_CASE("a base colour texel reaches the shader as c/255 exactly, the value the CPU backend decodes") {
+  test::GlHarness harness;
+  const gl::GlFunctions& gl = harness.gl;
+  // Every byte value in red, its complement in green, uploaded as scene_buffers.cpp uploads textures.
+  constexpr int kWidth = 256;
+  std::vector<Rgba8> texels(kWidth);
+  for (int c = 0; c < kWidth; ++c) texels[static_cast<std::size_t>(c)] = {static_cast<std::uint8_t>(c), static_cast<std::uint8_t>(255 - c), 0, 255};
+  const gl::GlObject texture = gl::createTexture(gl, GL_TEXTURE_2D);
+  gl.glTextureStorage2D(texture.id(), 1, GL_RGBA8UI, kWidth, 1);
+  gl.glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  gl.glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  gl.glTextureSubImage2D(texture.id(), 0, 0, 0, kWidth, 1, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, texels.data());
+
+  const gl::GlObject color = gl::createRenderbuffer(gl);
+  gl.glNamedRenderbufferStorage(color.id(), GL_RGBA32F, kWidth, 1);
+  const gl::GlObject framebuffer = gl::createFramebuffer(gl);
+  gl.glNamedFramebufferRenderbuffer(framebuffer.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color.id());
+  const gl::GlObject vertexArray = gl::createVertexArray(gl);
+
+  // The expression of texel() in shaders/texture.glsl, before its sRGB decode.
+  const std::string probe = "#version 450 core\nlayout(binding = 1) uniform usampler2D image;\nout vec4 value;\n"
+                            "void main() { value = vec4(vec3(texelFetch(image, ivec2(gl_FragCoord.xy), 0).rgb) / 255.0, 1.0); }\n";
+  const gl::ShaderProgram program = gl::buildProgram(gl, {"background.vert", "probe.frag"}, [&](std::string_view name) {
+    return name == "probe.frag" ? std::optional<std::string_view>(probe) : gl::findEmbeddedShaderFile(name);
+  });
+  gl.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+  gl.glViewport(0, 0, kWidth, 1);
+  gl.glUseProgram(program.id());
+  gl.glBindTextureUnit(1, texture.id());
+  gl.glBindVertexArray(vertexArray.id());
+  gl.glDrawArrays(GL_TRIANGLES, 0, 3);
+  std::vector<float> values(4 * kWidth);
+  gl.glReadPixels(0, 0, kWidth, 1, GL_RGBA, GL_FLOAT, values.data());
+  REQUIRE(gl.glGetError() == GL_NO_ERROR);
+
+  // renderer/cpu/texture_sampling.cpp: glm::vec3(c.r, c.g, c.b) / 255.0f, compared bit for bit.
+  int mismatches = 0, firstMismatch = -1;
+  for (int c = 0; c < kWidth; ++c) {
+    const float red = values[static_cast<std::size_t>(4 * c)], green = values[static_cast<std::size_t>(4 * c + 1)];
+    const float expectedRed = static_cast<float>(c) / 255.0f, expectedGreen = static_cast<float>(255 - c) / 255.0f;
+    if (std::memcmp(&red, &expectedRed, sizeof red) == 0 && std::memcmp(&green, &expectedGreen, sizeof green) == 0) continue;
+    if (firstMismatch < 0) firstMismatch = c;
+    ++mismatches;
+  }
+  CAPTURE(firstMismatch);
+  CHECK(mismatches == 0);
+}
+
+TEST_CASE("a textured glTF box shows its texture: many colours, a blue and a green part of the logo") {
+  const Scene scene = loadScene(std::string(FACET_ASSIMP_MODELS) + "/BoxTextured-glTF/BoxTextured.gltf");
+  REQUIRE(scene.textures.size() == 1);
+  for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) {
+    const std::string name(kShadingModeNames[static_cast<std::size_t>(mode)]);
+    CAPTURE(name);
+    RenderSettings settings = test::smallSettings(mode, true);
+    settings.width = 320;
+    settings.height = 240;
+    const FrameInputs frame = buildFrameInputs(scene, settings);
+    const Image image = test::renderHeadless("box_textured_" + name, scene, frame);
+    std::set<std::uint32_t> colours;
+    int bluish = 0, greenish = 0;
+    for (int y = 0; y < image.height(); ++y)
+      for (int x = 0; x < image.width(); ++x) {
+        const Rgba8 p = image.at(x, y);
+        colours.insert(static_cast<std::uint32_t>(p.r) << 16 | static_cast<std::uint32_t>(p.g) << 8 | p.b);
+        bluish += p.b > p.r + 40 && p.b > p.g + 10;
+        greenish += p.g > p.r + 20 && p.g > p.b + 20;
+      }
+    CHECK(colours.size() > 500);
+    CHECK(bluish > 1000);
+    CHECK(greenish > 1000);
+  }
+}
