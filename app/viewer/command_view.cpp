@@ -1,10 +1,51 @@
-// Placeholder until the viewer lands.
+// facet view: the scene in a window, drawn by the OpenGL backend, with a
+// panel for every setting, an orbit camera, and the CPU reference beside it.
+#include <cstdio>
+#include <memory>
+
+#include "command_line.h"
 #include "commands.h"
-#include "common/error.h"
+#include "scene/load_scene.h"
+#include "viewer/viewer_loop.h"
 
 namespace facet {
+namespace {
+
+struct ViewCommandOptions {
+  CommonOptions common;
+  std::string screenshot;
+  int frames = 3;
+  bool withPanel = false;
+  bool reference = false;
+};
+
+}  // namespace
+
 Command addViewCommand(CLI::App& app) {
-  app.add_subcommand("view", "Open the interactive viewer (not yet available)");
-  return []() -> int { throw Error("view is not available yet"); };
+  auto options = std::make_shared<ViewCommandOptions>();
+  CLI::App* command = app.add_subcommand(
+      "view", "Open the scene in a window (OpenGL 4.5): a panel for every setting, an orbit camera, the CPU reference beside the GL image");
+  addCommonOptions(*command, options->common, "where F12 and Ctrl+S write screenshots (default: facet-view-N.png, the first N not taken)");
+  CLI::Option* screenshot = command->add_option(
+      "--screenshot", options->screenshot, "draw --frames frames, write the 3D view (without the panel) to this PNG, and exit");
+  command->add_option("--frames", options->frames, "how many frames --screenshot draws first")->check(CLI::Range(1, 100000))->needs(screenshot);
+  command->add_flag("--with-panel", options->withPanel, "--screenshot writes the whole window, panel included")->needs(screenshot);
+  command->add_flag("--reference", options->reference,
+                    "render the CPU reference after every change; --screenshot waits for it and prints its figures");
+  return [options]() {
+    viewer::ViewerOptions view;
+    view.scene = std::make_shared<const Scene>(loadScene(options->common.scenePath));
+    for (const std::string& warning : view.scene->warnings) std::fprintf(stderr, "warning: %s: %s\n", view.scene->source.c_str(), warning.c_str());
+    view.scenePath = options->common.scenePath;
+    view.settings = settingsFor(options->common, *view.scene);
+    view.settingsPath = options->common.settingsPath;
+    view.screenshotPath = options->common.output;
+    view.batchScreenshot = options->screenshot;
+    view.frames = options->frames;
+    view.screenshotWithPanel = options->withPanel;
+    view.followReference = options->reference;
+    return viewer::runViewer(view);
+  };
 }
+
 }  // namespace facet

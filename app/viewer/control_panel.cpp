@@ -1,0 +1,133 @@
+#include "viewer/control_panel.h"
+
+#include <algorithm>
+#include <array>
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include "viewer/settings_panel.h"
+
+namespace facet::viewer {
+namespace {
+
+const ImVec4 kErrorColor{1.0f, 0.45f, 0.4f, 1.0f};
+const ImVec4 kDoneColor{0.55f, 0.85f, 0.55f, 1.0f};
+// The panel's first width: 40% of the window, within these (pixels): below
+// the minimum, "parallelWidth" and a drag box no longer fit side by side.
+constexpr float kPanelMinWidth = 280.0f, kPanelMaxWidth = 420.0f;
+
+void helpMarker(const char* text) {
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
+}
+
+void drawStatus(const ViewerState& state, const FrameStats& stats, bool& redrawEveryFrame) {
+  ImGui::TextUnformatted(state.scene->source.c_str());
+  ImGui::Text("%zu triangles, %d light%s, %d shadow map%s", stats.triangles, stats.lights, stats.lights == 1 ? "" : "s", stats.shadowMaps,
+              stats.shadowMaps == 1 ? "" : "s");
+  ImGui::Text("GL frame %.1f ms, window frame %.1f ms", stats.drawMilliseconds, stats.windowMilliseconds);
+  helpMarker("medians of the last 60 frames\nGL frame: GlFrameRenderer::drawFrame, both passes, finished\nwindow frame: UI, the 3D frame when it changed, the swap");
+  ImGui::Checkbox("redraw every frame", &redrawEveryFrame);
+  helpMarker("draw the 3D frame every window frame, not only after a change, to time it");
+  ImGui::PushTextWrapPos(0.0f);
+  ImGui::TextDisabled("%s", stats.renderer.c_str());
+  if (!stats.drawError.empty()) ImGui::TextColored(kErrorColor, "cannot draw these settings: %s", stats.drawError.c_str());
+  if (!state.message.empty()) ImGui::TextColored(state.messageIsError ? kErrorColor : kDoneColor, "%s", state.message.c_str());
+  ImGui::PopTextWrapPos();
+}
+
+// A text field the width of the tab, with its buttons on the line below.
+void pathField(const char* id, std::string& path) {
+  ImGui::SetNextItemWidth(-1.0f);
+  ImGui::InputText(id, &path);
+}
+
+void drawFilesTab(ViewerState& state, PanelRequests& requests) {
+  ImGui::TextUnformatted("scene: a .gltf or .glb file, or builtin:NAME");
+  pathField("##scene", state.scenePath);
+  if (ImGui::Button("Open scene")) loadSceneFile(state, state.scenePath);
+  ImGui::SameLine();
+  ImGui::TextDisabled("or drop a file on the window");
+
+  ImGui::Spacing();
+  ImGui::Separator();
+  ImGui::TextUnformatted("settings: JSON, as facet render --settings reads it");
+  pathField("##settings", state.settingsPath);
+  if (ImGui::Button("Save settings")) saveSettings(state);
+  ImGui::SameLine();
+  if (ImGui::Button("Load settings")) loadSettings(state);
+
+  ImGui::Spacing();
+  ImGui::Separator();
+  ImGui::TextUnformatted("screenshot: PNG of the 3D view, without the panel");
+  ImGui::PushID("screenshot");
+  ImGui::SetNextItemWidth(-1.0f);
+  ImGui::InputTextWithHint("##path", "empty: facet-view-N.png", &state.screenshotPath);
+  ImGui::PopID();
+  if (ImGui::Button("Save screenshot (F12)")) requests.screenshot = true;
+}
+
+void drawHelpTab() {
+  static constexpr std::array<std::array<const char*, 2>, 13> kKeys = {{
+      {"left drag", "orbit around the reference point"},
+      {"right or middle drag", "pan"},
+      {"wheel", "zoom"},
+      {"1  2  3", "flat, Gouraud, Phong shading"},
+      {"C", "back-face culling on / off"},
+      {"S", "shadows on / off"},
+      {"P", "perspective / parallel"},
+      {"R", "reset the camera"},
+      {"F12, Ctrl+S", "screenshot of the 3D view"},
+      {"H", "hide / show the panel"},
+      {"Esc", "quit"},
+      {"drop a file", "open a .gltf or .glb scene"},
+      {"ctrl+click", "type a value into a slider"},
+  }};
+  ImGui::TextWrapped("The first mouse move of an auto camera makes it manual, starting where auto put it. R brings back the camera of the command line (or of the settings file loaded last).");
+  if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
+    ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed);
+    ImGui::TableSetupColumn("what", ImGuiTableColumnFlags_WidthStretch);
+    for (const auto& [key, what] : kKeys) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(key);
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(what);
+    }
+    ImGui::EndTable();
+  }
+}
+
+// A tab whose content scrolls under the status lines, which stay.
+template <class Fn>
+void tab(const char* name, Fn&& drawContent) {
+  if (!ImGui::BeginTabItem(name)) return;
+  ImGui::BeginChild(name);
+  drawContent();
+  ImGui::EndChild();
+  ImGui::EndTabItem();
+}
+
+}  // namespace
+
+PanelRequests drawControlPanel(ViewerState& state, const FrameStats& stats, ReferenceView& reference, bool& redrawEveryFrame) {
+  PanelRequests requests;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(std::clamp(0.4f * display.x, kPanelMinWidth, kPanelMaxWidth), display.y), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(display.x, display.y));  // shrinks with the window
+  if (ImGui::Begin("facet")) {
+    drawStatus(state, stats, redrawEveryFrame);
+    if (ImGui::BeginTabBar("tabs")) {
+      tab("Settings", [&] { drawSettingsPanel(state.settings, *state.scene, state.sphere); });
+      tab("Files", [&] { drawFilesTab(state, requests); });
+      tab("Reference", [&] { reference.drawControls(stats.version); });
+      tab("Help", [] { drawHelpTab(); });
+      ImGui::EndTabBar();
+    }
+  }
+  ImGui::End();
+  return requests;
+}
+
+}  // namespace facet::viewer

@@ -1,0 +1,154 @@
+#include "viewer/reference_view.h"
+
+#include <algorithm>
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+
+#include <imgui.h>
+
+namespace facet::viewer {
+namespace {
+
+const ImVec4 kErrorColor{1.0f, 0.45f, 0.4f, 1.0f};
+
+std::string psnrText(double psnr) {
+  if (std::isinf(psnr)) return "identical";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f dB", psnr);
+  return text;
+}
+
+// The image `size` large, its title above it; under the cursor, a tooltip
+// with that pixel in both images, counted from the top left as `facet diff`
+// counts.
+void drawComparedImage(const char* title, const ImageTexture& texture, ImVec2 size, const ReferenceResult& result) {
+  ImGui::BeginGroup();
+  ImGui::TextUnformatted(title);
+  ImGui::Image(texture.id(), size, kTopLeftUv, kBottomRightUv);
+  const Image& gl = result.glImage;
+  if (ImGui::IsItemHovered() && !gl.empty()) {
+    const ImVec2 corner = ImGui::GetItemRectMin();
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    const int x = std::clamp(static_cast<int>((mouse.x - corner.x) / size.x * static_cast<float>(gl.width())), 0, gl.width() - 1);
+    const int fromTop = std::clamp(static_cast<int>((mouse.y - corner.y) / size.y * static_cast<float>(gl.height())), 0, gl.height() - 1);
+    const int y = gl.height() - 1 - fromTop;  // Image rows run bottom first
+    const Rgba8 g = gl.at(x, y), c = result.cpuImage.at(x, y);
+    const auto level = [](std::uint8_t a, std::uint8_t b) { return std::abs(int(a) - int(b)); };
+    ImGui::SetTooltip("pixel (%d, %d) from the top left\nOpenGL  %3d %3d %3d\nCPU     %3d %3d %3d\ndifference %d", x, fromTop, g.r, g.g,
+                      g.b, c.r, c.g, c.b, std::max({level(g.r, c.r), level(g.g, c.g), level(g.b, c.b), level(g.a, c.a)}));
+  }
+  ImGui::EndGroup();
+}
+
+}  // namespace
+
+ReferenceView::ReferenceView(const gl::GlFunctions& gl, int threads, bool follow)
+    : worker_(threads), follow_(follow), glTexture_(gl), cpuTexture_(gl), heatTexture_(gl) {}
+
+void ReferenceView::update(std::uint64_t version, const std::function<ReferenceRequest()>& makeRequest) {
+  if (std::optional<ReferenceResult> finished = worker_.take()) {
+    if (finished->version != version) {
+      note_ = "dropped a result: the frame changed while the CPU rendered it";
+    } else {
+      result_ = std::move(finished);
+      note_.clear();
+      glTexture_.upload(result_->glImage);
+      cpuTexture_.upload(result_->cpuImage);
+      heatTexture_.upload(result_->heatMap);
+    }
+  }
+  const bool wanted = requested_ || (follow_ && !isCurrent(version));
+  if (!wanted) return;
+  if (submittedVersion_ != version) {
+    worker_.submit(makeRequest());
+    submittedVersion_ = version;
+  }
+  requested_ = false;
+}
+
+void ReferenceView::drawControls(std::uint64_t version) {
+  ImGui::TextWrapped("The CPU reference rasterizer renders the frame on screen on a thread of its own; the figures compare it with the GL image.");
+  if (ImGui::Button("Render the reference")) requested_ = true;
+  ImGui::Checkbox("render it after every change", &follow_);
+
+  if (worker_.busy()) ImGui::TextUnformatted("rendering on the CPU...");
+  if (result_ && !result_->error.empty()) ImGui::TextColored(kErrorColor, "%s", result_->error.c_str());
+  if (isCurrent(version) && result_->error.empty()) {
+    ImGui::Text("current: %.0f ms on the CPU", result_->milliseconds);
+  } else if (result_ && result_->error.empty()) {
+    ImGui::TextDisabled("out of date: the frame changed since");
+  }
+  if (!note_.empty()) {
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("%s", note_.c_str());
+    ImGui::PopTextWrapPos();
+  }
+
+  if (result_ && result_->error.empty()) {
+    const DiffResult& d = result_->diff;
+    ImGui::Separator();
+    ImGui::Text("max difference    %d of 255", d.maxDifference);
+    ImGui::Text("pixels over 1/255 %" PRId64 " (%.3f%%)", d.failingPixels, d.failingPercent);
+    ImGui::Text("PSNR              %s", psnrText(d.psnr).c_str());
+    ImGui::Text("verdict           %s", std::string(kDiffStatusNames[static_cast<std::size_t>(d.status)]).c_str());
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("as the agreement suite judges GL against CPU:\nfailure when more than 0.5%% of pixels differ by more than 1/255");
+  }
+
+  ImGui::Separator();
+  ImGui::TextUnformatted("behind the panel, the window shows");
+  for (std::size_t i = 0; i < kMainViewNames.size(); ++i) {
+    if (ImGui::RadioButton(std::string(kMainViewNames[i]).c_str(), mainView_ == static_cast<MainView>(i))) mainView_ = static_cast<MainView>(i);
+  }
+  if (mainView_ != MainView::OpenGl && !isCurrent(version)) ImGui::TextDisabled("(OpenGL until the reference is current)");
+  ImGui::Checkbox("images window", &showImages_);
+}
+
+void ReferenceView::drawImages(std::uint64_t version) {
+  if (!showImages_ || !result_ || !result_->error.empty() || glTexture_.empty()) return;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, 0.0f), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(display.x * 0.5f, 0.0f), ImGuiCond_FirstUseEver);  // height 0: fit the images
+  if (ImGui::Begin("Reference", &showImages_)) {
+    ImGui::TextUnformatted(isCurrent(version) ? "the frame on screen" : "an earlier frame (out of date)");
+    ImGui::SameLine();
+    ImGui::Checkbox("heat map on the right", &imagesShowHeatMap_);
+    const float spacing = ImGui::GetStyle().ItemSpacing.x;
+    const float width = std::max((ImGui::GetContentRegionAvail().x - spacing) * 0.5f, 1.0f);
+    const ImVec2 size(width, width * static_cast<float>(glTexture_.height()) / static_cast<float>(glTexture_.width()));
+    drawComparedImage("OpenGL", glTexture_, size, *result_);
+    ImGui::SameLine();
+    drawComparedImage(imagesShowHeatMap_ ? "difference (black: equal)" : "CPU reference", imagesShowHeatMap_ ? heatTexture_ : cpuTexture_, size,
+                      *result_);
+  }
+  ImGui::End();
+}
+
+void ReferenceView::drawMainView(std::uint64_t version) const {
+  if (mainView_ == MainView::OpenGl || !isCurrent(version)) return;
+  const ImageTexture* texture = shownTexture(mainView_);
+  if (!texture || texture->empty()) return;
+  ImGui::GetBackgroundDrawList()->AddImage(texture->id(), ImVec2(0.0f, 0.0f), ImGui::GetIO().DisplaySize, kTopLeftUv, kBottomRightUv);
+}
+
+const ImageTexture* ReferenceView::shownTexture(MainView view) const {
+  switch (view) {
+    case MainView::CpuReference: return &cpuTexture_;
+    case MainView::Difference: return &heatTexture_;
+    default: return nullptr;
+  }
+}
+
+std::string ReferenceView::summary() const {
+  if (!result_) return "reference: none";
+  if (!result_->error.empty()) return "reference: " + result_->error;
+  const DiffResult& d = result_->diff;
+  char text[200];
+  std::snprintf(text, sizeof text, "reference: max difference %d, %" PRId64 " pixels over 1/255 (%.3f%%), PSNR %s, %s, CPU %.0f ms",
+                d.maxDifference, d.failingPixels, d.failingPercent, psnrText(d.psnr).c_str(),
+                std::string(kDiffStatusNames[static_cast<std::size_t>(d.status)]).c_str(), result_->milliseconds);
+  return text;
+}
+
+}  // namespace facet::viewer

@@ -1,0 +1,77 @@
+#include "viewer/reference_worker.h"
+
+#include <chrono>
+#include <exception>
+#include <new>
+#include <utility>
+
+#include "compare/heat_map.h"
+#include "compare/image_diff.h"
+#include "cpu/cpu_renderer.h"
+
+namespace facet::viewer {
+
+ReferenceWorker::ReferenceWorker(int threads) : renderer_(makeCpuRenderer(threads)), thread_([this] { run(); }) {}
+
+ReferenceWorker::~ReferenceWorker() {
+  {
+    std::lock_guard lock(mutex_);
+    stop_ = true;
+  }
+  wake_.notify_one();
+  thread_.join();
+}
+
+void ReferenceWorker::submit(ReferenceRequest request) {
+  {
+    std::lock_guard lock(mutex_);
+    waiting_ = std::move(request);
+  }
+  wake_.notify_one();
+}
+
+bool ReferenceWorker::busy() const {
+  std::lock_guard lock(mutex_);
+  return rendering_ || waiting_.has_value();
+}
+
+std::optional<ReferenceResult> ReferenceWorker::take() {
+  std::lock_guard lock(mutex_);
+  return std::exchange(finished_, std::nullopt);
+}
+
+void ReferenceWorker::run() {
+  std::unique_lock lock(mutex_);
+  for (;;) {
+    wake_.wait(lock, [this] { return stop_ || waiting_.has_value(); });
+    if (stop_) return;
+    const ReferenceRequest request = std::move(*std::exchange(waiting_, std::nullopt));
+    rendering_ = true;
+    lock.unlock();
+    ReferenceResult result = render(*renderer_, request);
+    lock.lock();
+    rendering_ = false;
+    finished_ = std::move(result);
+  }
+}
+
+ReferenceResult ReferenceWorker::render(Renderer& renderer, const ReferenceRequest& request) {
+  ReferenceResult result;
+  result.version = request.version;
+  try {
+    const auto start = std::chrono::steady_clock::now();
+    Image cpuImage = renderer.render(*request.scene, request.frame).image;
+    result.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    result.diff = compareImages(cpuImage, request.glImage, referenceThresholds());
+    result.heatMap = heatMap(cpuImage, request.glImage, referenceThresholds());
+    result.cpuImage = std::move(cpuImage);
+    result.glImage = request.glImage;
+  } catch (const std::bad_alloc&) {
+    result = ReferenceResult{request.version, {}, {}, {}, {}, 0, "CPU reference: out of memory"};
+  } catch (const std::exception& e) {  // facet::Error and anything else: shown in the panel, never past the thread
+    result = ReferenceResult{request.version, {}, {}, {}, {}, 0, std::string("CPU reference: ") + e.what()};
+  }
+  return result;
+}
+
+}  // namespace facet::viewer

@@ -1,0 +1,77 @@
+#include "viewer/view_input.h"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include "viewer/camera_controls.h"
+
+namespace facet::viewer {
+namespace {
+
+// The camera a mouse move edits: auto becomes manual where auto put it, so
+// the first drag starts from the picture on screen.
+CameraSettings& manualCamera(ViewerState& state) {
+  if (state.settings.camera.source == Source::Auto) state.settings = materialize(*state.scene, state.settings, true, false);
+  return state.settings.camera;
+}
+
+}  // namespace
+
+ViewRequests ViewInput::update(ViewerState& state, const std::vector<KeyPress>& keys) {
+  const ImGuiIO& io = ImGui::GetIO();
+  RenderSettings& settings = state.settings;
+  ViewRequests requests;
+
+  // A drag belongs to the view when it starts outside every ImGui window,
+  // even if the cursor then crosses the panel.
+  if (dragButton_ < 0 && !io.WantCaptureMouse) {
+    for (int button : {ImGuiMouseButton_Left, ImGuiMouseButton_Right, ImGuiMouseButton_Middle})
+      if (ImGui::IsMouseClicked(button)) dragButton_ = button;
+  }
+  if (dragButton_ >= 0 && !ImGui::IsMouseDown(dragButton_)) dragButton_ = -1;
+  if (dragButton_ >= 0 && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
+    CameraSettings& camera = manualCamera(state);
+    const CameraSettings before = camera;
+    if (dragButton_ == ImGuiMouseButton_Left)
+      orbit(camera, {io.MouseDelta.x, io.MouseDelta.y}, io.DisplaySize.y);
+    else
+      pan(camera, {io.MouseDelta.x, io.MouseDelta.y}, io.DisplaySize.x);
+    moveDepthRange(camera, before, state.sphere);
+  }
+  if (!io.WantCaptureMouse && io.MouseWheel != 0.0f) {
+    CameraSettings& camera = manualCamera(state);
+    const CameraSettings before = camera;
+    zoom(camera, io.MouseWheel, 1e-3f * state.sphere.radius);
+    moveDepthRange(camera, before, state.sphere);
+  }
+
+  if (io.WantCaptureKeyboard) return requests;  // typing into a text field
+  for (const KeyPress& press : keys) {
+    const bool ctrl = (press.mods & GLFW_MOD_CONTROL) != 0;
+    switch (press.key) {
+      case GLFW_KEY_1: settings.shading = ShadingMode::Flat; break;
+      case GLFW_KEY_2: settings.shading = ShadingMode::Gouraud; break;
+      case GLFW_KEY_3: settings.shading = ShadingMode::Phong; break;
+      case GLFW_KEY_C: settings.cullBackFaces = !settings.cullBackFaces; break;
+      case GLFW_KEY_S:
+        if (ctrl) requests.screenshot = true;
+        else settings.shadows.enabled = !settings.shadows.enabled;
+        break;
+      case GLFW_KEY_P:
+        if (settings.camera.source == Source::Auto)  // auto fits either projection itself
+          settings.camera.projection =
+              settings.camera.projection == ProjectionKind::Perspective ? ProjectionKind::Parallel : ProjectionKind::Perspective;
+        else
+          toggleProjection(settings.camera, state.sphere);
+        break;
+      case GLFW_KEY_R: settings.camera = state.startSettings.camera; break;
+      case GLFW_KEY_F12: requests.screenshot = true; break;
+      case GLFW_KEY_H: requests.togglePanel = !requests.togglePanel; break;
+      case GLFW_KEY_ESCAPE: requests.quit = true; break;
+      default: break;
+    }
+  }
+  return requests;
+}
+
+}  // namespace facet::viewer

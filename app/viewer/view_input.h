@@ -1,0 +1,29 @@
+#pragma once
+// The mouse and the keys over the 3D view, where ImGui does not want them:
+// left drag orbits around P_ref, right or middle drag pans, the wheel zooms
+// (an auto camera is made manual first, from what auto chose), and the
+// shortcuts of the Help tab.
+#include <vector>
+
+#include "viewer/viewer_state.h"
+#include "viewer/viewer_window.h"
+
+namespace facet::viewer {
+
+// What the loop does for a shortcut, beyond editing the settings.
+struct ViewRequests {
+  bool screenshot = false;   // F12, Ctrl+S
+  bool quit = false;         // Esc
+  bool togglePanel = false;  // H
+};
+
+class ViewInput {
+ public:
+  // Within an ImGui frame; keys: pressed since the last frame.
+  ViewRequests update(ViewerState& state, const std::vector<KeyPress>& keys);
+
+ private:
+  int dragButton_ = -1;  // the button that started a drag over the view; -1: none
+};
+
+}  // namespace facet::viewer

@@ -1,0 +1,218 @@
+// The viewer's main loop, shaped as Dear ImGui's
+// examples/example_glfw_opengl3/main.cpp: set up GLFW, OpenGL and ImGui, then
+// every frame: events, the ImGui frame (panel and shortcuts edit the
+// settings), the 3D frame into GlFrameRenderer's framebuffer, a blit of it
+// to the window, ImGui on top, swap.
+#include "viewer/viewer_loop.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <thread>
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <nlohmann/json.hpp>
+
+#include "common/error.h"
+#include "gl/frame_renderer.h"
+#include "image/png.h"
+#include "pipeline/frame_inputs.h"
+#include "settings/settings_json.h"
+#include "viewer/control_panel.h"
+#include "viewer/frame_times.h"
+#include "viewer/imgui_session.h"
+#include "viewer/reference_view.h"
+#include "viewer/view_input.h"
+#include "viewer/viewer_gl.h"
+#include "viewer/viewer_state.h"
+#include "viewer/viewer_window.h"
+
+namespace facet::viewer {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
+
+// How long an idle window sleeps in glfwWaitEventsTimeout: any input wakes it
+// at once; the timeout only paces ImGui's own delays (tooltips).
+constexpr double kIdleWaitSeconds = 0.5;
+constexpr double kBusyWaitSeconds = 0.02;  // while the CPU reference renders
+
+// An interactive window keeps room for the panel's status lines and a few
+// controls; --screenshot windows take any size.
+constexpr int kMinimumWindowWidth = 240, kMinimumWindowHeight = 180;
+
+ViewerState initialState(const ViewerOptions& options) {
+  ViewerState state;
+  setScene(state, options.scene);
+  state.scenePath = options.scenePath;
+  state.settings = options.settings;
+  state.startSettings = options.settings;
+  state.settingsPath = options.settingsPath.empty() ? "facet-settings.json" : options.settingsPath;
+  state.screenshotPath = options.screenshotPath;
+  return state;
+}
+
+// Everything the 3D frame depends on: the scene and the settings.
+std::string frameKey(const ViewerState& state) { return std::to_string(state.sceneSerial) + settingsToJson(state.settings).dump(); }
+
+// The CPU reference leaves a core to the window (and llvmpipe).
+int referenceThreads() { return std::max(1, static_cast<int>(std::thread::hardware_concurrency()) - 1); }
+
+// The window's back buffer, panel included: read before the swap, since
+// the front buffer reads back as zeros under Xvfb. Opaque, as the GL image is.
+Image readWindow(const ViewerGl& gl, int width, int height) {
+  Image image(width, height);
+  gl.gl.glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  gl.gl.glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  gl.gl.glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  gl.gl.glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.data());
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) image.at(x, y).a = 255;
+  return image;
+}
+
+// The 3D frame on screen: what GlFrameRenderer's framebuffer holds.
+struct DrawnFrame {
+  std::uint64_t version = 0;           // counts the distinct frames drawn; 0: none yet
+  std::string key;                     // frameKey when it was last drawn (or failed to draw)
+  std::uint64_t uploadedScene = 0;     // the sceneSerial GlFrameRenderer holds
+  std::shared_ptr<const Scene> scene;  // the scene `frame` was built from
+  FrameInputs frame;
+  double milliseconds = 0;             // drawFrame, when it last ran
+  std::string error;                   // why the newest settings could not be drawn; the last good image stays
+};
+
+// Draws the 3D frame when the scene or the settings changed since the last
+// one (or always, with force); true when it tried.
+bool drawChangedFrame(gl::GlFrameRenderer& renderer, const ViewerState& state, DrawnFrame& drawn, bool force) {
+  const std::string key = frameKey(state);
+  if (key == drawn.key && !force) return false;
+  try {
+    if (drawn.uploadedScene != state.sceneSerial) {
+      renderer.uploadScene(*state.scene);
+      drawn.uploadedScene = state.sceneSerial;
+    }
+    FrameInputs frame = buildFrameInputs(*state.scene, state.settings);
+    const Clock::time_point start = Clock::now();
+    renderer.drawFrame(frame);
+    drawn.milliseconds = millisecondsSince(start);
+    if (key != drawn.key || drawn.version == 0) ++drawn.version;
+    drawn.scene = state.scene;
+    drawn.frame = std::move(frame);
+    drawn.error.clear();
+  } catch (const Error& e) {
+    drawn.error = e.what();
+  }
+  drawn.key = key;
+  return true;
+}
+
+// GlFrameRenderer's framebuffer into the window's, scaled for the frame
+// after a resize, before the new size is drawn.
+void blitToWindow(const ViewerGl& gl, const gl::GlFrameRenderer& renderer, const DrawnFrame& drawn, int width, int height) {
+  gl.gl.glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  gl.gl.glDisable(GL_SCISSOR_TEST);  // a blit honours the scissor box
+  gl.gl.glViewport(0, 0, width, height);
+  const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+  gl.gl.glClearNamedFramebufferfv(0, GL_COLOR, 0, black);
+  if (drawn.version == 0) return;
+  gl.glBlitNamedFramebuffer(renderer.framebuffer(), 0, 0, 0, drawn.frame.width, drawn.frame.height, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
+                            GL_NEAREST);
+}
+
+// In the bottom right corner, when the panel (whose status lines say it) is hidden.
+void drawErrorOverlay(const std::string& error) {
+  ImGui::SetNextWindowPos(ImGui::GetIO().DisplaySize, ImGuiCond_Always, ImVec2(1.0f, 1.0f));
+  ImGui::Begin("frame error", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs);
+  ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "cannot draw these settings: %s", error.c_str());
+  ImGui::End();
+}
+
+}  // namespace
+
+int runViewer(const ViewerOptions& options) {
+  ViewerState state = initialState(options);
+  const bool batch = !options.batchScreenshot.empty();
+
+  // Setup window, OpenGL 4.5 core, the GL backend and Dear ImGui
+  GlfwLibrary glfw;
+  ViewerWindow window(state.settings.width, state.settings.height);
+  glfwSwapInterval(batch ? 0 : 1);
+  if (!batch) window.setMinimumSize(kMinimumWindowWidth, kMinimumWindowHeight);
+  const ViewerGl gl = loadViewerGl(glfwGetProcAddress);
+  gl::GlFrameRenderer renderer(glfwGetProcAddress);
+  ImGuiSession imgui(window.handle());
+  ReferenceView reference(gl.gl, referenceThreads(), options.followReference);
+  ViewInput input;
+
+  DrawnFrame drawn;
+  FrameTimes drawTimes, windowTimes;
+  bool showPanel = true;
+  bool redrawEveryFrame = false;  // the panel's checkbox
+  bool changedLastFrame = false;
+  int framesLeft = options.frames;
+
+  // Main loop
+  while (!glfwWindowShouldClose(window.handle())) {
+    // Poll and handle events; an idle window waits for them instead of spinning.
+    const bool idle = !batch && !changedLastFrame && !reference.busy() && !ImGui::IsAnyMouseDown();
+    if (batch && framesLeft > 0) glfwPollEvents();
+    else glfwWaitEventsTimeout(idle ? kIdleWaitSeconds : kBusyWaitSeconds);
+    const Clock::time_point start = Clock::now();
+    for (const std::string& path : window.takeDroppedPaths()) loadSceneFile(state, path);
+    window.setTitle("facet view: " + state.scene->source);
+    window.syncImageSize(state.settings.width, state.settings.height, ImGui::IsAnyItemActive());
+    int width = 0, height = 0;
+    window.framebufferSize(width, height);
+    if (width == 0 || height == 0) continue;  // minimized: nothing to draw into
+
+    // Start the Dear ImGui frame: the shortcuts and the panel edit state.settings
+    const std::vector<KeyPress> presses = window.takePressedKeys();
+    imgui.newFrame(presses);
+    const ViewRequests keys = input.update(state, presses);
+    if (keys.quit) glfwSetWindowShouldClose(window.handle(), GLFW_TRUE);
+    if (keys.togglePanel) showPanel = !showPanel;
+    PanelRequests panel;
+    if (showPanel) {
+      const FrameStats stats{renderer.rendererName(), drawTimes.median(), windowTimes.median(), state.scene->triangleCount(),
+                             static_cast<int>(drawn.frame.lights.size()), drawn.frame.shadowLayerCount, drawn.version, drawn.error};
+      panel = drawControlPanel(state, stats, reference, redrawEveryFrame);
+      reference.drawImages(drawn.version);
+    } else if (!drawn.error.empty()) {
+      drawErrorOverlay(drawn.error);
+    }
+
+    // The 3D frame, when the scene or the settings changed (a batch screenshot
+    // draws and times each of its frames). A value being typed waits until it
+    // is done: "1200" would otherwise draw 1, 12 and 120 on the way.
+    const bool typing = ImGui::GetIO().WantTextInput;
+    changedLastFrame = !typing && drawChangedFrame(renderer, state, drawn, redrawEveryFrame || (batch && framesLeft > 0));
+    if (changedLastFrame && drawn.error.empty()) drawTimes.add(drawn.milliseconds);
+    if (batch && !drawn.error.empty()) throw Error(drawn.error);
+    reference.update(drawn.version, [&] { return ReferenceRequest{drawn.version, drawn.scene, drawn.frame, renderer.readImage()}; });
+    reference.drawMainView(drawn.version);
+
+    // Rendering: the 3D frame, then ImGui on top
+    blitToWindow(gl, renderer, drawn, width, height);
+    if ((keys.screenshot || panel.screenshot) && drawn.version > 0) saveScreenshot(state, renderer.readImage());
+    imgui.render();
+
+    // --screenshot: after `frames` frames (and the reference, when asked for), before the swap
+    if (batch && --framesLeft <= 0 && (!options.followReference || reference.isCurrent(drawn.version))) {
+      const Image image = options.screenshotWithPanel ? readWindow(gl, width, height) : renderer.readImage();
+      writePng(options.batchScreenshot, image);
+      std::printf("screenshot written to %s: %dx%d, %d frames, GL frame %.1f ms (median)\n", options.batchScreenshot.c_str(), image.width(),
+                  image.height(), options.frames, drawTimes.median());
+      if (options.followReference) std::printf("%s\n", reference.summary().c_str());
+      break;
+    }
+    glfwSwapBuffers(window.handle());
+    windowTimes.add(millisecondsSince(start));
+  }
+  return 0;
+}
+
+}  // namespace facet::viewer

@@ -1,0 +1,29 @@
+#pragma once
+// `facet view`'s window and main loop (viewer_loop.cpp).
+#include <memory>
+#include <string>
+
+#include "scene/scene.h"
+#include "settings/render_settings.h"
+
+namespace facet::viewer {
+
+struct ViewerOptions {
+  std::shared_ptr<const Scene> scene;  // loaded by the command
+  std::string scenePath;               // as given ("": the default scene), for the panel's field
+  RenderSettings settings;             // --settings, --set and --size applied; width × height: the window
+  std::string settingsPath;            // the panel's save / load field starts here
+  std::string screenshotPath;          // -o: where F12 writes; empty: facet-view-N.png
+  std::string batchScreenshot;         // --screenshot: draw `frames` frames, write the 3D view here, exit
+  int frames = 3;
+  bool screenshotWithPanel = false;    // --with-panel: the batch screenshot is the whole window
+  bool followReference = false;        // --reference: the CPU reference follows every change
+};
+
+// Opens the window and runs until it closes (or, with batchScreenshot, until
+// the screenshot is written); returns the exit code. Throws facet::Error when
+// the window cannot open (no display, no OpenGL 4.5), and in batch mode when
+// a frame cannot be drawn or written.
+int runViewer(const ViewerOptions& options);
+
+}  // namespace facet::viewer

@@ -1,0 +1,88 @@
+#include "viewer/viewer_state.h"
+
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "common/atomic_file.h"
+#include "common/error.h"
+#include "image/png.h"
+#include "scene/load_scene.h"
+#include "settings/settings_json.h"
+
+namespace facet::viewer {
+namespace {
+
+void report(ViewerState& state, std::string message, bool isError) {
+  state.message = std::move(message);
+  state.messageIsError = isError;
+}
+
+}  // namespace
+
+void setScene(ViewerState& state, std::shared_ptr<const Scene> scene) {
+  state.sphere = sceneSphere(*scene);
+  state.scene = std::move(scene);
+  ++state.sceneSerial;
+}
+
+bool loadSceneFile(ViewerState& state, const std::string& path) {
+  try {
+    auto scene = std::make_shared<const Scene>(loadScene(path));
+    const std::size_t warnings = scene->warnings.size();
+    setScene(state, std::move(scene));
+    state.scenePath = path;
+    state.settings.camera = state.startSettings.camera;
+    state.settings.lightSource = state.startSettings.lightSource;
+    state.settings.lights = state.startSettings.lights;
+    report(state, "loaded " + state.scene->source + (warnings ? " (" + std::to_string(warnings) + " loader warnings)" : ""), false);
+    return true;
+  } catch (const Error& e) {
+    report(state, e.what(), true);
+  } catch (const std::bad_alloc&) {
+    report(state, path + ": out of memory", true);
+  } catch (const std::exception& e) {  // whatever the loader lets through: shown, never fatal
+    report(state, path + ": " + e.what(), true);
+  }
+  return false;
+}
+
+void loadSettings(ViewerState& state) {
+  try {
+    state.settings = state.startSettings = loadSettingsFile(state.settingsPath);
+    report(state, "settings loaded from " + state.settingsPath, false);
+  } catch (const Error& e) {
+    report(state, e.what(), true);
+  }
+}
+
+void saveSettings(ViewerState& state) {
+  try {
+    // The same text as `facet settings -o`, which `facet render --settings` reads.
+    const std::string text = settingsToJson(state.settings).dump(2) + "\n";
+    writeFileAtomically(state.settingsPath, {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
+    report(state, "settings saved to " + state.settingsPath, false);
+  } catch (const Error& e) {
+    report(state, e.what(), true);
+  }
+}
+
+void saveScreenshot(ViewerState& state, const Image& image) {
+  const std::string path = state.screenshotPath.empty() ? nextScreenshotName() : state.screenshotPath;
+  try {
+    writePng(path, image);
+    report(state, "screenshot written to " + path, false);
+  } catch (const Error& e) {
+    report(state, e.what(), true);
+  }
+}
+
+std::string nextScreenshotName() {
+  for (int n = 1;; ++n) {
+    std::string name = "facet-view-" + std::to_string(n) + ".png";
+    std::error_code ec;
+    if (!std::filesystem::exists(name, ec)) return name;
+  }
+}
+
+}  // namespace facet::viewer

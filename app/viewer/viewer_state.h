@@ -1,0 +1,47 @@
+#pragma once
+// What the viewer shows and what its panel and shortcuts edit: the scene, the
+// settings of the next frame, the panel's file names and the last message.
+// The window, the GL objects and the reference worker live in the loop.
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "image/image.h"
+#include "pipeline/view_setup.h"
+#include "scene/scene.h"
+#include "settings/render_settings.h"
+
+namespace facet::viewer {
+
+struct ViewerState {
+  std::shared_ptr<const Scene> scene;  // shared with the reference worker
+  Sphere sphere;                        // of scene: the orbit's scale
+  std::uint64_t sceneSerial = 0;        // counts scene loads, so the GL side knows to upload
+  RenderSettings settings;              // what the next frame draws
+  RenderSettings startSettings;         // as the command line or the last settings file gave them:
+                                        // R resets the camera to theirs, a new scene starts with their camera and lights
+
+  std::string scenePath;                // the panel's text fields
+  std::string settingsPath;
+  std::string screenshotPath;           // empty: facet-view-N.png, the first N not taken
+
+  std::string message;                  // the last action's outcome, shown in the panel
+  bool messageIsError = false;
+};
+
+void setScene(ViewerState& state, std::shared_ptr<const Scene> scene);
+
+// Each action reports in state.message, and never throws on bad input: a
+// broken glTF file or settings file leaves the scene and settings as they were.
+// A scene that loads gets the camera and lights of startSettings (an auto
+// camera frames the new scene, not the old one's view).
+bool loadSceneFile(ViewerState& state, const std::string& path);
+void loadSettings(ViewerState& state);
+void saveSettings(ViewerState& state);
+// image: the 3D frame without the panel.
+void saveScreenshot(ViewerState& state, const Image& image);
+
+// facet-view-1.png, facet-view-2.png, ...: the first that does not exist yet.
+std::string nextScreenshotName();
+
+}  // namespace facet::viewer
