@@ -25,8 +25,7 @@ constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;  // ctrl+click
 
 bool isBounded(const FieldInfo& info) { return info.min < info.max; }
 
-// The field table marks colours by their unit: "linear RGB ...".
-bool isColor(const FieldInfo& info) { return info.help.rfind("linear RGB", 0) == 0; }
+bool isColor(const FieldInfo& info) { return info.kind == FieldKind::Color; }
 
 // Where an optional value starts when its override is switched on: the middle
 // of its range, on a log scale for wide ranges (shininess in [1, 4096]: 64).

@@ -9,10 +9,13 @@
 
 namespace facet {
 
+enum class FieldKind { Value, Color };  // Color: a vec3 of linear RGB (the viewer shows a colour picker)
+
 struct FieldInfo {
   std::string_view key;   // JSON key within its group
   std::string_view help;  // one line for --help and the viewer's tooltips
   double min = 0, max = 0;  // inclusive range for numbers (min == max: unbounded)
+  FieldKind kind = FieldKind::Value;
 };
 
 // Visitor interface (duck-typed): v.field(info, T& value) for float, int,
@@ -25,7 +28,7 @@ void visitLight(Visitor& v, Light& l) {
   v.choice({"kind", "point, directional or spot"}, l.kind, kLightKindNames);
   v.field({"position", "world position (point, spot)"}, l.position);
   v.field({"direction", "world direction the light shines in (directional, spot)"}, l.direction);
-  v.field({"color", "linear RGB, each in [0, 1]", 0, 1}, l.color);
+  v.field({"color", "linear RGB, each in [0, 1]", 0, 1, FieldKind::Color}, l.color);
   v.field({"intensity", "I_p = intensity * color", 0, 1e6}, l.intensity);
   v.field({"attenuation", "c1, c2, c3 of f_att = min(1, 1/(c1 + c2 d + c3 d^2)), each >= 0", 0, 1e6}, l.attenuation);
   v.field({"spotCutoff", "spot cut-off angle beta in degrees", 0.1, 89.9}, l.spotCutoffDeg);
@@ -69,7 +72,7 @@ void visitSettings(Visitor& v, RenderSettings& s) {
     v.field({"biasMin", "b_min of bias = max(b_slope (1 - N.L), b_min)", 0, 1}, sh.biasMin);
     v.field({"pcfRadius", "r: PCF over (2r+1)^2 samples, 0 = hard", 0, 8}, sh.pcfRadius);
   });
-  v.field({"background", "linear RGB of empty pixels, each in [0, 1]", 0, 1}, s.background);
+  v.field({"background", "linear RGB of empty pixels, each in [0, 1]", 0, 1, FieldKind::Color}, s.background);
 }
 
 }  // namespace facet
