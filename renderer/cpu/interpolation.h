@@ -9,27 +9,60 @@
 
 namespace facet::cpu {
 
+// What interpolation reads of a window vertex; `varyings` points at its
+// attributes (a WindowVertex's, or a packed vertex of the frame's buffers).
+struct InterpolationVertex {
+  float x, y, z, invW;
+  const float* varyings;
+};
+
 class Interpolation {
  public:
   Interpolation(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c);
+  Interpolation(const InterpolationVertex& a, const InterpolationVertex& b, const InterpolationVertex& c);
 
   // Sets the weights for the centre of pixel (px, py); returns window z.
   float at(int px, int py);
 
+  // Window z at the centre of pixel (px, py): the value at() returns, without the weights.
+  float depthAt(int px, int py) const {
+    const float x = static_cast<float>(px) + 0.5f - x0_, y = static_cast<float>(py) + 0.5f - y0_;
+    const float lambda1 = base_[1] + dx_[1] * x + dy_[1] * y;
+    const float lambda2 = base_[2] + dx_[2] * x + dy_[2] * y;
+    return z0_ + (lambda1 * dz1_ + lambda2 * dz2_);
+  }
+
   // Perspective-correct value of varying k at the current pixel.
   float varying(int k) const {
     const auto i = static_cast<std::size_t>(k);
-    return perspective_[0] * v_[0]->varyings[i] + perspective_[1] * v_[1]->varyings[i] + perspective_[2] * v_[2]->varyings[i];
+    return perspective_[0] * varyings_[0][i] + perspective_[1] * varyings_[1][i] + perspective_[2] * varyings_[2][i];
   }
 
  private:
-  const WindowVertex* v_[3];
+  void setUp(const InterpolationVertex& a, const InterpolationVertex& b, const InterpolationVertex& c);
+
+  const float* varyings_[3];
+  float invW_[3];
   // λ_i = base_[i] + dx_[i]·(x - x0) + dy_[i]·(y - y0), relative to the first
   // vertex (x0, y0) as llvmpipe sets up its planes: products of absolute
   // window coordinates would cancel catastrophically on small triangles.
   float x0_, y0_;
   float base_[3], dx_[3], dy_[3];
+  // z0 and z_i - z0 (i = 1, 2)
+  float z0_, dz1_, dz2_;
   std::array<float, 3> perspective_{};
 };
+
+// Inline: the fragment stage calls it once per pixel.
+inline float Interpolation::at(int px, int py) {
+  const float x = static_cast<float>(px) + 0.5f - x0_, y = static_cast<float>(py) + 0.5f - y0_;
+  float lambda[3];
+  for (int i = 0; i < 3; ++i) lambda[i] = base_[i] + dx_[i] * x + dy_[i] * y;
+  const float w0 = lambda[0] * invW_[0], w1 = lambda[1] * invW_[1], w2 = lambda[2] * invW_[2];
+  const float sum = w0 + w1 + w2;
+  const float inverse = sum != 0.0f ? 1.0f / sum : 0.0f;
+  perspective_ = {w0 * inverse, w1 * inverse, w2 * inverse};
+  return z0_ + (lambda[1] * dz1_ + lambda[2] * dz2_);
+}
 
 }  // namespace facet::cpu

@@ -1,20 +1,26 @@
 // Pass 2: the camera's z-buffer pass with flat, Gouraud or Phong shading.
 //
-// Varyings per mode (indices into ClipVertex::varyings):
+// Varyings per mode (packed after x, y, z, 1/w in PassVertices::window):
 //   Phong:   world position 0-2, normal 3-5, texture coordinates 6-7
 //   Gouraud: front diffuse 0-2, front specular 3-5, back diffuse 6-8,
 //            back specular 9-11, texture coordinates 12-13
 //   Flat:    texture coordinates 0-1 (illumination is per triangle)
+#include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <vector>
 
 #include <glm/geometric.hpp>
 
+#include "cpu/binning.h"
 #include "cpu/interpolation.h"
 #include "cpu/lighting.h"
 #include "cpu/passes.h"
-#include "cpu/rasterize.h"
+#include "cpu/srgb_table.h"
 #include "cpu/texture_sampling.h"
+#include "cpu/tile_raster.h"
 #include "cpu/vertex_math.h"
 
 namespace facet::cpu {
@@ -33,114 +39,188 @@ Layout layoutFor(ShadingMode mode) {
   }
 }
 
-void put(std::array<float, kMaxVaryings>& v, int at, glm::vec3 value) {
-  for (int k = 0; k < 3; ++k) v[static_cast<std::size_t>(at + k)] = value[k];
+void put(float* v, int at, glm::vec3 value) {
+  for (int k = 0; k < 3; ++k) v[at + k] = value[k];
 }
 
 glm::vec3 get3(const Interpolation& in, int at) { return {in.varying(at), in.varying(at + 1), in.varying(at + 2)}; }
 
-Rgba8 toPixel(glm::vec3 linear) {
-  const glm::vec3 encoded = encodeSrgb(linear);
-  return {quantize(encoded.r), quantize(encoded.g), quantize(encoded.b), 255};
+constexpr std::uint32_t kNoTriangle = std::numeric_limits<std::uint32_t>::max();
+
+// What shading a pixel needs of the triangle that won it.
+struct Winner {
+  const BinnedTriangle* triangle = nullptr;
+  const WorkerBins* bins = nullptr;
+  std::size_t index = 0;  // in bins->triangles
+};
+
+
+// The fragment stage of one shading mode: no branch on the mode per pixel.
+template <ShadingMode kMode>
+void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, const FrameBuffers& buffers,
+               const std::vector<std::uint32_t>& firstId, const WorkerBins::TileScratch& scratch, int tx0, int ty0, int tx1, int ty1, Image& image) {
+  constexpr Layout layout = kMode == ShadingMode::Phong ? Layout{8, 6} : kMode == ShadingMode::Gouraud ? Layout{14, 12} : Layout{2, 0};
+  const SrgbTable& srgb = srgbTable();
+  std::uint32_t current = kNoTriangle;
+  std::optional<Interpolation> in;
+  const CourseMaterial* material = nullptr;
+  const Image* texture = nullptr;
+  bool back = false;
+  const Illumination* flat = nullptr;
+  for (int py = ty0; py <= ty1; ++py)
+    for (int px = tx0; px <= tx1; ++px) {
+      const std::uint32_t id = scratch.id[(py - ty0) * kTileSize + (px - tx0)];
+      if (id == kNoTriangle) continue;  // the background the image was cleared to
+      if (id != current) {
+        current = id;
+        std::size_t w = 0;
+        while (w + 1 < firstId.size() && id >= firstId[w + 1]) ++w;
+        const WorkerBins& bins = buffers.workers[w];
+        const std::size_t index = id - firstId[w];
+        const BinnedTriangle& t = bins.triangles[index];
+        InterpolationVertex iv[3];
+        for (int k = 0; k < 3; ++k) {
+          const float* p = bins.vertex(buffers.vertices, t.vertex[k]);
+          iv[k] = {p[0], p[1], p[2], p[3], p + 4};
+        }
+        in.emplace(iv[0], iv[1], iv[2]);
+        const FrameInstance& instance = frame.instances[t.instance & ~kBackFacing];
+        const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
+        material = &frame.materials[static_cast<std::size_t>(instance.material)];
+        texture = material->baseColorTexture >= 0 && !mesh.texcoords.empty()
+                      ? &scene.textures[static_cast<std::size_t>(material->baseColorTexture)].image
+                      : nullptr;
+        back = (t.instance & kBackFacing) != 0;
+        if constexpr (kMode == ShadingMode::Flat) flat = &bins.flat[2 * index];
+      }
+      (void)in->at(px, py);
+      glm::vec3 baseColor = material->baseColor;
+      if (texture) baseColor *= sampleBaseColor(*texture, {in->varying(layout.uv), in->varying(layout.uv + 1)});
+      glm::vec3 color;
+      if constexpr (kMode == ShadingMode::Phong) {
+        const glm::vec3 P = get3(*in, 0);
+        glm::vec3 N = glm::normalize(get3(*in, 3));
+        if (back) N = -N;  // two-sided lighting
+        color = shade(illuminate(frame, maps, *material, P, N, viewVector(frame, P)), baseColor);
+      } else if constexpr (kMode == ShadingMode::Gouraud) {
+        const int side = back ? 6 : 0;
+        color = shade({get3(*in, side), get3(*in, side + 3)}, baseColor);
+      } else {
+        color = shade(back ? flat[1] : flat[0], baseColor);
+      }
+      image.at(px, py) = srgb.pixel(color);
+    }
 }
 
 }  // namespace
 
-void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, int rowBegin, int rowEnd, Image& image,
-             std::vector<float>& depth) {
+void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, Image& image) {
   const Layout layout = layoutFor(frame.shading);
   const bool twoSided = !frame.cullBackFaces;
   const float halfWidth = 0.5f * static_cast<float>(frame.width), halfHeight = 0.5f * static_cast<float>(frame.height);
-  const auto width = static_cast<std::size_t>(frame.width);
-  std::vector<ClipVertex> clip;
-  std::vector<WindowVertex> window, triangles;
-  std::vector<glm::vec3> worldPositions;
+  PassVertices& v = buffers.vertices;
+  const std::size_t vertexCount = v.world.size();
+  const auto stride = static_cast<std::size_t>(4 + layout.count);
+  v.stride = 4 + layout.count;
+  v.window.resize(vertexCount * stride);
 
-  for (const FrameInstance& instance : frame.instances) {
-    const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
-    const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
-    const Image* texture = material.baseColorTexture >= 0 && !mesh.texcoords.empty()
-                               ? &scene.textures[static_cast<std::size_t>(material.baseColorTexture)].image
-                               : nullptr;
-
-    // Vertex stage.
-    const std::size_t vertexCount = mesh.positions.size();
-    clip.resize(vertexCount);
-    window.resize(vertexCount);
-    worldPositions.resize(vertexCount);
-    for (std::size_t v = 0; v < vertexCount; ++v) {
-      ClipVertex& out = clip[v];
-      out.clip = transformPoint(instance.clipFromModel, mesh.positions[v]);
-      const glm::vec3 P = glm::vec3(transformPoint(instance.worldFromModel, mesh.positions[v]));
-      worldPositions[v] = P;
-      const glm::vec2 uv = mesh.texcoords.empty() ? glm::vec2(0.0f) : mesh.texcoords[v];
-      out.varyings[static_cast<std::size_t>(layout.uv)] = uv.x;
-      out.varyings[static_cast<std::size_t>(layout.uv + 1)] = uv.y;
+  // Vertex stage.
+  forEachRange(pool, vertexCount, [&](std::size_t begin, std::size_t end, int) {
+    std::size_t i = 0;
+    for (std::size_t g = begin; g < end; ++g) {
+      while (g >= v.firstVertex[i + 1]) ++i;
+      const FrameInstance& instance = frame.instances[i];
+      const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
+      const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
+      const std::size_t local = g - v.firstVertex[i];
+      const glm::vec4 clip = transformPoint(instance.clipFromModel, mesh.positions[local]);
+      const glm::vec3 P = v.world[g];
+      float* out = v.window.data() + g * stride;
+      float* varyings = out + 4;
+      const glm::vec2 uv = mesh.texcoords.empty() ? glm::vec2(0.0f) : mesh.texcoords[local];
+      varyings[layout.uv] = uv.x;
+      varyings[layout.uv + 1] = uv.y;
       if (frame.shading == ShadingMode::Phong) {
-        put(out.varyings, 0, P);
-        put(out.varyings, 3, glm::normalize(transformDirection(instance.normalMatrix, mesh.normals[v])));
+        put(varyings, 0, P);
+        put(varyings, 3, glm::normalize(transformDirection(instance.normalMatrix, mesh.normals[local])));
       } else if (frame.shading == ShadingMode::Gouraud) {
-        const glm::vec3 N = glm::normalize(transformDirection(instance.normalMatrix, mesh.normals[v]));
+        const glm::vec3 N = glm::normalize(transformDirection(instance.normalMatrix, mesh.normals[local]));
         const glm::vec3 V = viewVector(frame, P);
         const Illumination front = illuminate(frame, maps, material, P, N, V);
-        put(out.varyings, 0, front.diffuse);
-        put(out.varyings, 3, front.specular);
-        if (twoSided) {
-          const Illumination back = illuminate(frame, maps, material, P, -N, V);
-          put(out.varyings, 6, back.diffuse);
-          put(out.varyings, 9, back.specular);
+        put(varyings, 0, front.diffuse);
+        put(varyings, 3, front.specular);
+        Illumination back;  // zero when one-sided, as ClipVertex's varyings were
+        if (twoSided) back = illuminate(frame, maps, material, P, -N, V);
+        put(varyings, 6, back.diffuse);
+        put(varyings, 9, back.specular);
+      }
+      v.clip[g] = clip;
+      v.flags[g] = vertexFlags(clip);
+      packWindow(clip, halfWidth, halfHeight, out);
+    }
+  });
+
+  // Primitive stage. Flat: one illumination per triangle, from its geometric normal at its centroid.
+  const auto flatLighting = [&](std::uint32_t instance, const std::uint32_t (&vertex)[3], Illumination (&out)[2]) {
+    const CourseMaterial& material = frame.materials[static_cast<std::size_t>(frame.instances[instance].material)];
+    const glm::vec3 p0 = v.world[vertex[0]], p1 = v.world[vertex[1]], p2 = v.world[vertex[2]];
+    const glm::vec3 N = glm::normalize(glm::cross(p1 - p0, p2 - p0));
+    const glm::vec3 centroid = (p0 + p1 + p2) / 3.0f;
+    const glm::vec3 V = viewVector(frame, centroid);
+    out[0] = illuminate(frame, maps, material, centroid, N, V);
+    out[1] = twoSided ? illuminate(frame, maps, material, centroid, -N, V) : Illumination{};
+  };
+  const FlatIllumination flat = flatLighting;  // refers to the lambda above, which outlives the pass
+  const TileGrid grid{frame.width, frame.height, (frame.width + kTileSize - 1) / kTileSize, (frame.height + kTileSize - 1) / kTileSize};
+  forEachRange(pool, v.firstTriangle.back(), [&](std::size_t begin, std::size_t end, int w) {
+    binTriangles(scene, frame, v, grid, frame.cullBackFaces, begin, end, buffers.workers[static_cast<std::size_t>(w)],
+                 frame.shading == ShadingMode::Flat ? &flat : nullptr);
+  });
+  std::vector<std::uint32_t>& firstId = buffers.firstId;  // worker w's triangles are ids firstId[w] + index
+  firstId.assign(static_cast<std::size_t>(pool.size()), 0);
+  for (std::size_t w = 1; w < firstId.size(); ++w) firstId[w] = firstId[w - 1] + static_cast<std::uint32_t>(buffers.workers[w - 1].triangles.size());
+
+  // Tiles: visibility (z-buffer, triangle order), then shading of what is visible.
+  std::atomic<int> next{0};
+  pool.run([&](int worker) {
+    WorkerBins::TileScratch* scratch = &buffers.workers[static_cast<std::size_t>(worker)].tile;
+    for (int tile = next++; tile < grid.count(); tile = next++) {
+      const int tx0 = (tile % grid.columns) * kTileSize, ty0 = (tile / grid.columns) * kTileSize;
+      const int tx1 = std::min(tx0 + kTileSize, frame.width) - 1, ty1 = std::min(ty0 + kTileSize, frame.height) - 1;
+      bool any = false;
+      for (const WorkerBins& bins : buffers.workers) any |= !bins.tiles[static_cast<std::size_t>(tile)].empty();
+      if (!any) continue;
+      std::fill(std::begin(scratch->depth), std::end(scratch->depth), 1.0f);
+      std::fill(std::begin(scratch->id), std::end(scratch->id), kNoTriangle);
+      for (std::size_t w = 0; w < buffers.workers.size() && w < firstId.size(); ++w) {
+        const WorkerBins& bins = buffers.workers[w];
+        for (const std::uint32_t index : bins.tiles[static_cast<std::size_t>(tile)]) {
+          const BinnedTriangle& t = bins.triangles[index];
+          int minX, minY, maxX, maxY;
+          if (!boundsWithin(t, tx0, ty0, tx1, ty1, minX, minY, maxX, maxY)) continue;
+          InterpolationVertex iv[3];
+          for (int k = 0; k < 3; ++k) {
+            const float* p = bins.vertex(v, t.vertex[k]);
+            iv[k] = {p[0], p[1], p[2], p[3], nullptr};
+          }
+          const Interpolation interpolation(iv[0], iv[1], iv[2]);
+          const std::uint32_t id = firstId[w] + index;
+          rasterizeBlocks(t, minX, minY, maxX, maxY, [&](int px, int py) {
+            const float z = interpolation.depthAt(px, py);
+            const int k = (py - ty0) * kTileSize + (px - tx0);
+            if (!(z < scratch->depth[k])) return;  // LESS
+            scratch->depth[k] = z;
+            scratch->id[k] = id;
+          });
         }
       }
-      window[v] = toWindow(out, halfWidth, halfHeight, layout.count);
-    }
-
-    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-      const std::uint32_t i0 = mesh.indices[t], i1 = mesh.indices[t + 1], i2 = mesh.indices[t + 2];
-      triangles.clear();
-      clipTriangle(clip[i0], clip[i1], clip[i2], window[i0], window[i1], window[i2], halfWidth, halfHeight, layout.count, triangles);
-      if (triangles.empty()) continue;
-
-      // Flat: one illumination per triangle, from its geometric normal at its centroid.
-      Illumination flatFront, flatBack;
-      if (frame.shading == ShadingMode::Flat) {
-        const glm::vec3 p0 = worldPositions[i0], p1 = worldPositions[i1], p2 = worldPositions[i2];
-        const glm::vec3 N = glm::normalize(glm::cross(p1 - p0, p2 - p0));
-        const glm::vec3 centroid = (p0 + p1 + p2) / 3.0f;
-        const glm::vec3 V = viewVector(frame, centroid);
-        flatFront = illuminate(frame, maps, material, centroid, N, V);
-        if (twoSided) flatBack = illuminate(frame, maps, material, centroid, -N, V);
-      }
-
-      for (std::size_t k = 0; k < triangles.size(); k += 3) {
-        TriangleSetup setup;
-        if (!setupTriangle(triangles[k], triangles[k + 1], triangles[k + 2], frame.width, frame.height, setup)) continue;
-        if (frame.cullBackFaces && !setup.frontFacing) continue;  // signed area ≤ 0 is dropped
-        const bool back = !setup.frontFacing;
-        Interpolation in(triangles[k], triangles[k + 1], triangles[k + 2]);
-        rasterize(setup, rowBegin, rowEnd, [&](int px, int py) {
-          const float z = in.at(px, py);
-          const std::size_t index = static_cast<std::size_t>(py) * width + static_cast<std::size_t>(px);
-          if (!(z < depth[index])) return;  // LESS
-          depth[index] = z;
-          glm::vec3 baseColor = material.baseColor;
-          if (texture) baseColor *= sampleBaseColor(*texture, {in.varying(layout.uv), in.varying(layout.uv + 1)});
-          glm::vec3 color;
-          if (frame.shading == ShadingMode::Phong) {
-            const glm::vec3 P = get3(in, 0);
-            glm::vec3 N = glm::normalize(get3(in, 3));
-            if (back) N = -N;  // two-sided lighting
-            color = shade(illuminate(frame, maps, material, P, N, viewVector(frame, P)), baseColor);
-          } else if (frame.shading == ShadingMode::Gouraud) {
-            const int side = back ? 6 : 0;
-            color = shade({get3(in, side), get3(in, side + 3)}, baseColor);
-          } else {
-            color = shade(back ? flatBack : flatFront, baseColor);
-          }
-          image.at(px, py) = toPixel(color);
-        });
+      switch (frame.shading) {
+        case ShadingMode::Phong: shadeTile<ShadingMode::Phong>(scene, frame, maps, buffers, firstId, *scratch, tx0, ty0, tx1, ty1, image); break;
+        case ShadingMode::Gouraud: shadeTile<ShadingMode::Gouraud>(scene, frame, maps, buffers, firstId, *scratch, tx0, ty0, tx1, ty1, image); break;
+        default: shadeTile<ShadingMode::Flat>(scene, frame, maps, buffers, firstId, *scratch, tx0, ty0, tx1, ty1, image); break;
       }
     }
-  }
+  });
 }
 
 }  // namespace facet::cpu

@@ -1,25 +1,37 @@
 #pragma once
 // The two passes of a CPU frame (the course's 2-pass shadow algorithm):
 // pass 1 renders each shadow-casting light's depth maps, pass 2 shades the
-// image. Rows [rowBegin, rowEnd) let several threads split one target; each
-// pixel is written by one thread, in triangle order, so results do not
-// depend on the thread count.
-#include <vector>
+// image. Each runs in the phases of frame_buffers.h on the renderer's
+// threads; each pixel is written by one thread, in triangle order, so
+// results do not depend on the thread count.
+#include <cstddef>
+#include "cpu/function_ref.h"
 
+#include "cpu/frame_buffers.h"
 #include "cpu/shadow_maps.h"
+#include "cpu/thread_pool.h"
 #include "image/image.h"
 #include "pipeline/frame_inputs.h"
 #include "scene/scene.h"
 
 namespace facet::cpu {
 
+// Splits [0, n) into one contiguous range per worker: work(begin, end, worker).
+void forEachRange(ThreadPool& pool, std::size_t n, FunctionRef<void(std::size_t, std::size_t, int)> work);
+
+// Once per frame: instance offsets and world positions of every vertex
+// (transformPoint(worldFromModel, p)), shared by all passes.
+void prepareFrame(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const FrameInputs& frame);
+
 // Pass 1 for one face layer: depth of every triangle (no culling), LESS.
-void shadowPass(const Scene& scene, const FrameInputs& frame, const FrameLight& light, int face, int rowBegin, int rowEnd,
+void shadowPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const FrameInputs& frame, const FrameLight& light, int face,
                 ShadowMaps& maps);
 
 // Pass 2: z-buffer and shading into `image` (cleared by the caller to the
-// background) and `depth` (cleared to 1).
-void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, int rowBegin, int rowEnd, Image& image,
-             std::vector<float>& depth);
+// background). Only the fragment that ends up in a pixel is shaded: a
+// tile's triangles are first resolved with the z-buffer (LESS, in triangle
+// order) to the last one that passed the test at each pixel, the one whose
+// colour the pixel keeps; shading is a function of triangle and pixel alone.
+void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, Image& image);
 
 }  // namespace facet::cpu

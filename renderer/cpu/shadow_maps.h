@@ -1,7 +1,10 @@
 #pragma once
 // Pass 1's output on the CPU: one S×S float depth map per light face, stored
 // as layers of one array, as the GL backend stores them in a 2D array texture.
+// The renderer keeps the maps from frame to frame; the shadow pass clears
+// only the tiles that the last frame or this one drew into.
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace facet::cpu {
@@ -9,10 +12,14 @@ namespace facet::cpu {
 struct ShadowMaps {
   int size = 0;                // S
   int layers = 0;
-  std::vector<float> depth;    // layer-major, then rows bottom first; cleared to 1
+  std::vector<float> depth;    // layer-major, then rows bottom first; 1 where nothing was drawn
+  std::vector<std::uint8_t> dirty;  // per layer and tile: drawn into since the last clear
 
+  // All texels 1: allocates when S or the layer count changed.
   void reset(int s, int layerCount);
   float* layer(int l) { return depth.data() + static_cast<std::size_t>(l) * static_cast<std::size_t>(size) * static_cast<std::size_t>(size); }
+  // The dirty flags of layer l's tiles of tileSize² texels, row-major.
+  std::uint8_t* dirtyTiles(int l, int tileSize);
   // texelFetch: integer addressing, no filtering.
   float texelFetch(int l, int x, int y) const {
     return depth[(static_cast<std::size_t>(l) * static_cast<std::size_t>(size) + static_cast<std::size_t>(y)) * static_cast<std::size_t>(size) + static_cast<std::size_t>(x)];

@@ -4,14 +4,18 @@
 
 #include <glm/common.hpp>
 
+#include "cpu/srgb_table.h"
+
 namespace facet::cpu {
 namespace {
 
 int wrap(int i, int size) { return ((i % size) + size) % size; }
 
+// decodeSrgb(glm::vec3(c.r, c.g, c.b) / 255.0f), by a table of the 256 values per channel.
 glm::vec3 texel(const Image& image, int x, int y) {
+  static const float* const decoded = srgbDecodeTable();
   const Rgba8 c = image.at(x, y);
-  return decodeSrgb(glm::vec3(c.r, c.g, c.b) / 255.0f);
+  return {decoded[c.r], decoded[c.g], decoded[c.b]};
 }
 
 }  // namespace

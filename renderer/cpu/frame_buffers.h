@@ -1,0 +1,80 @@
+#pragma once
+// The memory one pass of a CPU frame works in, kept by the renderer from
+// frame to frame so that a frame allocates nothing once the sizes settle.
+//
+// A pass runs in three parallel phases (renderer/cpu/cpu_renderer.cpp):
+//   1. vertex stage, once per vertex: window vertices packed as
+//      x, y, z, 1/w, varyings... (`stride` floats) plus the clip coordinates
+//      and clip mask the clipper needs;
+//   2. primitive stage, on contiguous ranges of the triangle list (one per
+//      worker): clip, snap, cull, and bin each triangle to the 64×64 tiles
+//      its bounding box touches, in triangle order;
+//   3. tiles, one worker each: the bins of worker 0, then worker 1, ..., so
+//      each pixel sees its triangles in the order they were submitted.
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "cpu/clipper.h"
+#include "cpu/lighting.h"
+
+namespace facet::cpu {
+
+inline constexpr int kTileShift = 6;
+inline constexpr int kTileSize = 1 << kTileShift;  // pixels
+
+// A triangle after clipping, snapping and culling.
+struct BinnedTriangle {
+  std::int32_t X[3], Y[3];       // snapped to the 1/256 grid, llvmpipe's clockwise order
+  std::uint32_t vertex[3];       // packed window vertices in the submitted order (kClippedVertex: the worker's clipped store)
+  std::uint32_t instance;        // index into FrameInputs::instances; kBackFacing bit when back-facing
+};
+inline constexpr std::uint32_t kClippedVertex = 0x80000000u;
+inline constexpr std::uint32_t kBackFacing = 0x80000000u;
+
+// Vertex flags: the clip mask (bits 0-5), and kNotFinite.
+inline constexpr std::uint8_t kNotFinite = 0x80;
+
+struct PassVertices {
+  int stride = 4;                      // floats per packed window vertex
+  std::vector<float> window;           // packed: x, y, z, 1/w, varyings
+  std::vector<glm::vec4> clip;         // clip coordinates
+  std::vector<std::uint8_t> flags;     // clip mask | kNotFinite
+  std::vector<glm::vec3> world;        // world positions (flat shading; the shadow pass's faces share them)
+  std::vector<std::size_t> firstVertex, firstTriangle;  // per instance, and the totals last
+
+  const float* at(std::uint32_t v) const { return window.data() + static_cast<std::size_t>(v) * static_cast<std::size_t>(stride); }
+};
+
+struct WorkerBins {
+  std::vector<BinnedTriangle> triangles;
+  std::vector<float> clipped;                        // packed window vertices the clipper made
+  std::vector<Illumination> flat;                    // flat shading: front, back per triangle
+  std::vector<std::vector<std::uint32_t>> tiles;     // per tile: indices into `triangles`, in order
+  std::vector<WindowVertex> scratch;                 // the clipper's output
+  struct TileScratch {                               // the lit pass's tile: z-buffer and winning triangle
+    float depth[kTileSize * kTileSize];
+    std::uint32_t id[kTileSize * kTileSize];
+  } tile;
+
+  const float* vertex(const PassVertices& v, std::uint32_t ref) const {
+    return ref & kClippedVertex ? clipped.data() + static_cast<std::size_t>(ref & ~kClippedVertex) * static_cast<std::size_t>(v.stride)
+                                : v.at(ref);
+  }
+};
+
+struct TileGrid {
+  int width = 0, height = 0;     // pixels
+  int columns = 0, rows = 0;     // tiles
+  int count() const { return columns * rows; }
+};
+
+struct FrameBuffers {
+  PassVertices vertices;
+  std::vector<WorkerBins> workers;
+  std::vector<std::uint32_t> firstId;  // lit pass: worker w's triangles have ids firstId[w] + index
+};
+
+}  // namespace facet::cpu

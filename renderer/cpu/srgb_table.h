@@ -1,0 +1,49 @@
+#pragma once
+// quantize(encodeSrgb(linear)) for one channel without calling pow: the
+// 8-bit result is a non-decreasing function of the clamped linear value, so
+// 255 thresholds (the smallest float reaching each level, found once by
+// bisection over float bit patterns with the exact formula) decide it. A
+// second table, indexed by the exponent and top 8 mantissa bits of the value,
+// holds the level at the start of each such bucket; no bucket holds more
+// than one threshold (checked when the table is built), so one comparison
+// finishes the job. Bit-identical to the formula: tests/cpu/test_fast_paths.cpp
+// checks every float in [2^-9, 1] (the pow branch) and samples below.
+#include <bit>
+#include <cstdint>
+
+#include <glm/vec3.hpp>
+
+#include "image/image.h"
+
+namespace facet::cpu {
+
+class SrgbTable {
+ public:
+  SrgbTable();
+  // quantize(encodeSrgb(vec3(linear)).r), exactly.
+  std::uint8_t encode(float linear) const {
+    const float c = linear > 0.0f ? (linear < 1.0f ? linear : 1.0f) : 0.0f;  // as encodeSrgb: NaN -> 0
+    const std::uint32_t bucket = std::bit_cast<std::uint32_t>(c) >> kBucketShift;
+    if (bucket < kFirstBucket) return 0;  // below 2^-16: 12.92·c·255 < 0.06
+    unsigned level = start_[bucket - kFirstBucket];
+    level += threshold_[level + 1] <= c ? 1u : 0u;
+    return static_cast<std::uint8_t>(level);
+  }
+  Rgba8 pixel(glm::vec3 linear) const { return {encode(linear.r), encode(linear.g), encode(linear.b), 255}; }
+
+ private:
+  static constexpr int kBucketShift = 15;  // keeps the sign, the exponent and 8 mantissa bits
+  static constexpr std::uint32_t kFirstBucket = std::bit_cast<std::uint32_t>(0x1p-16f) >> kBucketShift;
+  static constexpr std::uint32_t kBuckets = (std::bit_cast<std::uint32_t>(1.0f) >> kBucketShift) - kFirstBucket + 1;
+
+  float threshold_[257];            // [k]: smallest c in [0,1] with level ≥ k; [0] = -inf, [256] = +inf
+  std::uint8_t start_[kBuckets];    // level of the smallest float of each bucket
+};
+
+// The table, built on first use (thread-safe).
+const SrgbTable& srgbTable();
+
+// decodeSrgb(vec3(v)/255) per channel, as texture_sampling's texel() computes it, by table.
+const float* srgbDecodeTable();
+
+}  // namespace facet::cpu

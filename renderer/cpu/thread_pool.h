@@ -1,0 +1,36 @@
+#pragma once
+// A fixed set of worker threads kept for the renderer's lifetime, so a frame
+// starts no thread. run(work) calls work(worker) once on every worker
+// (worker 0 is the calling thread) and returns when all have finished.
+#include <condition_variable>
+#include "cpu/function_ref.h"
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace facet::cpu {
+
+class ThreadPool {
+ public:
+  explicit ThreadPool(int threads);
+  ~ThreadPool();
+  ThreadPool(const ThreadPool&) = delete;
+  ThreadPool& operator=(const ThreadPool&) = delete;
+
+  int size() const { return size_; }
+  void run(FunctionRef<void(int worker)> work);
+
+ private:
+  void loop(int worker);
+
+  int size_;
+  std::vector<std::thread> threads_;
+  std::mutex mutex_;
+  std::condition_variable start_, done_;
+  const FunctionRef<void(int)>* work_ = nullptr;
+  unsigned long generation_ = 0;
+  int running_ = 0;
+  bool stop_ = false;
+};
+
+}  // namespace facet::cpu

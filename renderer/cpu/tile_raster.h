@@ -1,0 +1,74 @@
+#pragma once
+// Coverage of one binned triangle inside one tile, in 8×8 blocks first (as
+// llvmpipe's rasterizer does): a block whose pixel centres all lie outside
+// one edge is skipped, one with all centres inside every edge is taken
+// whole, and only the rest are tested pixel by pixel. The edge functions and
+// the test are those of triangle_setup.h (c - dcdx·256·px + dcdy·256·py > 0),
+// so the covered pixels are the same; fragments come in row order per block.
+#include <algorithm>
+#include <cstdint>
+
+#include "cpu/frame_buffers.h"
+
+namespace facet::cpu {
+
+// The triangle's pixel bounding box within [x0, x1]×[y0, y1] (inclusive);
+// false when empty.
+inline bool boundsWithin(const BinnedTriangle& t, int x0, int y0, int x1, int y1, int& minX, int& minY, int& maxX, int& maxY) {
+  const std::int64_t lx = std::min({t.X[0], t.X[1], t.X[2]}), hx = std::max({t.X[0], t.X[1], t.X[2]});
+  const std::int64_t ly = std::min({t.Y[0], t.Y[1], t.Y[2]}), hy = std::max({t.Y[0], t.Y[1], t.Y[2]});
+  minX = static_cast<int>(std::max<std::int64_t>(x0, (lx + 255) >> 8));
+  maxX = static_cast<int>(std::min<std::int64_t>(x1, hx >> 8));
+  minY = static_cast<int>(std::max<std::int64_t>(y0, (ly + 255) >> 8));
+  maxY = static_cast<int>(std::min<std::int64_t>(y1, hy >> 8));
+  return minX <= maxX && minY <= maxY;
+}
+
+template <class Fragment>
+void rasterizeBlocks(const BinnedTriangle& t, int minX, int minY, int maxX, int maxY, Fragment&& fragment) {
+  std::int64_t c[3], sx[3], sy[3];  // value at pixel (0, 0), step per pixel in x and in y
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    const std::int64_t dcdx = std::int64_t{t.Y[i]} - t.Y[j], dcdy = std::int64_t{t.X[i]} - t.X[j];
+    c[i] = dcdx * t.X[i] - dcdy * t.Y[i];
+    if (dcdx < 0 || (dcdx == 0 && dcdy > 0)) c[i] += 1;  // left or bottom edge: inclusive
+    sx[i] = -dcdx * 256;
+    sy[i] = dcdy * 256;
+  }
+  for (int by = minY & ~7; by <= maxY; by += 8) {
+    const int y0 = std::max(by, minY), y1 = std::min(by + 7, maxY);
+    for (int bx = minX & ~7; bx <= maxX; bx += 8) {
+      const int x0 = std::max(bx, minX), x1 = std::min(bx + 7, maxX);
+      std::int64_t e[3];
+      bool outside = false, inside = true;
+      for (int i = 0; i < 3; ++i) {
+        e[i] = c[i] + sx[i] * x0 + sy[i] * y0;
+        const std::int64_t ex = sx[i] * (x1 - x0), ey = sy[i] * (y1 - y0);
+        const std::int64_t hi = e[i] + std::max<std::int64_t>(ex, 0) + std::max<std::int64_t>(ey, 0);
+        const std::int64_t lo = e[i] + std::min<std::int64_t>(ex, 0) + std::min<std::int64_t>(ey, 0);
+        outside |= hi <= 0;
+        inside &= lo > 0;
+      }
+      if (outside) continue;
+      if (inside) {
+        for (int py = y0; py <= y1; ++py)
+          for (int px = x0; px <= x1; ++px) fragment(px, py);
+        continue;
+      }
+      for (int py = y0; py <= y1; ++py) {
+        std::int64_t w0 = e[0], w1 = e[1], w2 = e[2];
+        for (int px = x0; px <= x1; ++px) {
+          if (w0 > 0 && w1 > 0 && w2 > 0) fragment(px, py);
+          w0 += sx[0];
+          w1 += sx[1];
+          w2 += sx[2];
+        }
+        e[0] += sy[0];
+        e[1] += sy[1];
+        e[2] += sy[2];
+      }
+    }
+  }
+}
+
+}  // namespace facet::cpu

@@ -1,0 +1,80 @@
+// The CPU renderer's fast paths give the same bits as the plain formulas:
+// the sRGB table against quantize(encodeSrgb), thread counts and reused
+// buffers (shadow maps cleared tile by tile) against a fresh renderer.
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include <doctest/doctest.h>
+
+#include "cpu/cpu_renderer.h"
+#include "cpu/lighting.h"
+#include "cpu/srgb_table.h"
+#include "cpu/texture_sampling.h"
+#include "pipeline/frame_inputs.h"
+#include "scene/default_scene.h"
+#include "math/transforms.h"
+
+using namespace facet;
+
+namespace {
+
+unsigned formula(float linear) { return cpu::quantize(cpu::encodeSrgb(glm::vec3(linear)).r); }
+
+Image render(Renderer& renderer, const Scene& scene, const RenderSettings& settings) {
+  return renderer.render(scene, buildFrameInputs(scene, settings)).image;
+}
+
+}  // namespace
+
+TEST_CASE("sRGB table: equal to quantize(encodeSrgb(c)) for every float from 2^-9 to 1, and at the edges") {
+  const cpu::SrgbTable& table = cpu::srgbTable();
+  const std::uint32_t first = std::bit_cast<std::uint32_t>(0x1p-9f), last = std::bit_cast<std::uint32_t>(1.0f);
+  std::uint64_t mismatches = 0;
+  for (std::uint32_t bits = first; bits <= last; ++bits) {
+    const float c = std::bit_cast<float>(bits);
+    mismatches += table.encode(c) != formula(c);
+  }
+  CHECK(mismatches == 0);
+  // Below 2^-9 (< 0.0031308) the formula is 12.92·c: a product, non-decreasing, so the thresholds hold; spot-check it.
+  for (std::uint32_t bits = 0; bits < first; bits += 997) CHECK(table.encode(std::bit_cast<float>(bits)) == formula(std::bit_cast<float>(bits)));
+  for (float c : {0.0f, -0.0f, -1.0f, 1.0f, 2.0f, std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
+                  std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::denorm_min()})
+    CHECK(table.encode(c) == formula(c));
+}
+
+TEST_CASE("sRGB decode table: equal to decodeSrgb(v / 255) for every byte") {
+  const float* decoded = cpu::srgbDecodeTable();
+  for (int v = 0; v < 256; ++v) CHECK(std::bit_cast<std::uint32_t>(decoded[v]) == std::bit_cast<std::uint32_t>(cpu::decodeSrgb(glm::vec3(static_cast<float>(v)) / 255.0f).r));
+}
+
+TEST_CASE("CPU renderer: the image does not depend on the thread count, nor on the frames rendered before") {
+  const Scene scene = makeDefaultScene();
+  for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) {
+    RenderSettings s;
+    s.width = 301;  // not a multiple of the 64-pixel tiles
+    s.height = 157;
+    s.shading = mode;
+    s.shadows.mapSize = 300;
+    s.cullBackFaces = mode != ShadingMode::Gouraud;
+    CAPTURE(static_cast<int>(mode));
+    const Image one = render(*makeCpuRenderer(1), scene, s);
+    for (int threads : {2, 3, 7}) {
+      CAPTURE(threads);
+      CHECK(render(*makeCpuRenderer(threads), scene, s) == one);
+    }
+    // A renderer that drew another view first (other shadow-map tiles) draws the same frame.
+    auto reused = makeCpuRenderer(2);
+    RenderSettings other = s;
+    other.camera.source = Source::Manual;
+    other.camera.eye = {-4.0f, 6.0f, -3.0f};
+    other.lightSource = Source::Manual;
+    Light moved = scene.lights.front();
+    moved.position = {3.0f, 5.0f, -2.0f};
+    other.lights = {moved};
+    (void)render(*reused, scene, other);
+    CHECK(render(*reused, scene, s) == one);
+    CHECK(render(*reused, scene, s) == one);
+  }
+}
