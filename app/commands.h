@@ -13,6 +13,7 @@ Command addInfoCommand(CLI::App& app);
 Command addSettingsCommand(CLI::App& app);
 Command addRenderCommand(CLI::App& app);
 Command addDiffCommand(CLI::App& app);
+Command addBenchCommand(CLI::App& app);
 #if FACET_HAVE_VIEWER
 Command addViewCommand(CLI::App& app);  // app/viewer
 #endif

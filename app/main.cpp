@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   add(facet::addSettingsCommand(app));
   add(facet::addRenderCommand(app));
   add(facet::addDiffCommand(app));
+  add(facet::addBenchCommand(app));
 #if FACET_HAVE_VIEWER
   add(facet::addViewCommand(app));
 #endif

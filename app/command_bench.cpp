@@ -1,0 +1,398 @@
+// facet bench: the CPU reference rasterizer and OpenGL on llvmpipe, side by
+// side, on the same scenes at the same thread count.
+//
+// Index of this file
+//   [SECTION] Scenes: built in code, manual camera and lights
+//   [SECTION] Statistics
+//   [SECTION] Child processes: peak memory per backend, time to first PNG
+//   [SECTION] The command
+//
+// In one process, for each scene, both backends render `--warmup` frames,
+// then `--frames` frames alternately (cpu, gl, cpu, gl, ...) so background
+// load hits both alike; a frame is one Renderer::render call (GL: scene
+// upload, both passes and the read-back of the image). Peak memory is the
+// VmHWM of a child process (this executable, `bench --child ...`) that builds
+// one scene and renders it with one backend, so each backend's figure is its
+// own. `--callgrind` renders one scene with one backend with callgrind's
+// instrumentation switched on around the frames only.
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <memory>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#if __has_include(<valgrind/callgrind.h>)
+#include <valgrind/callgrind.h>
+#else
+#define CALLGRIND_START_INSTRUMENTATION
+#define CALLGRIND_STOP_INSTRUMENTATION
+#define CALLGRIND_ZERO_STATS
+#endif
+
+#include "command_line.h"
+#include "commands.h"
+#include "common/error.h"
+#include "cpu/cpu_renderer.h"
+#include "image/png.h"
+#include "math/transforms.h"
+#include "pipeline/frame_inputs.h"
+#include "scene/default_scene.h"
+#include "scene/primitives.h"
+#if FACET_HAVE_GL
+#include "gl/gl_renderer.h"
+#endif
+
+extern char** environ;
+
+namespace facet {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// [SECTION] Scenes: built in code, manual camera and lights
+
+struct BenchScene {
+  std::string name;
+  Scene scene;
+  RenderSettings settings;
+};
+
+constexpr int kSphere100k = 159;  // 4·159·158 = 100 488 triangles
+constexpr int kSphere1M = 500;    // 4·500·499 = 998 000 triangles
+
+int addMaterial(Scene& scene, glm::vec3 color, float roughness) {
+  Material m;
+  m.baseColor = glm::vec4(color, 1.0f);
+  m.metallic = 0.0f;
+  m.roughness = roughness;
+  scene.materials.push_back(m);
+  return static_cast<int>(scene.materials.size() - 1);
+}
+
+void addObject(Scene& scene, Mesh mesh, int material, const glm::mat4& worldFromModel) {
+  mesh.material = material;
+  scene.meshes.push_back(std::move(mesh));
+  scene.instances.push_back({static_cast<int>(scene.meshes.size() - 1), worldFromModel});
+}
+
+RenderSettings manualSettings(int width, int height) {
+  RenderSettings s;
+  s.width = width;
+  s.height = height;
+  s.camera.source = Source::Manual;
+  s.lightSource = Source::Manual;
+  s.shading = ShadingMode::Phong;
+  s.shadows.enabled = false;
+  return s;
+}
+
+// A unit sphere of `level` bands on a ground plane; a point light (no
+// shadows), or a spot light with one 2048² map and PCF r = 1.
+BenchScene sphereScene(const std::string& name, int level, bool shadows, int width, int height) {
+  BenchScene b{name, {}, manualSettings(width, height)};
+  b.scene.source = name;
+  addObject(b.scene, makeSphere(level), addMaterial(b.scene, {0.8f, 0.1f, 0.08f}, 0.3f), glm::mat4(1.0f));
+  addObject(b.scene, makePlane(1), addMaterial(b.scene, {0.45f, 0.45f, 0.42f}, 0.9f),
+            translation({0.0f, -1.0f, 0.0f}) * scaling({4.0f, 1.0f, 4.0f}));
+  b.settings.camera.eye = {0.0f, 0.6f, 3.2f};
+  b.settings.camera.reference = {0.0f, -0.1f, 0.0f};
+  b.settings.camera.near = 0.5f;
+  b.settings.camera.far = 20.0f;
+  Light light;
+  light.position = {-2.0f, 4.0f, 2.5f};
+  light.attenuation = {1.0f, 0.0f, 0.002f};
+  if (shadows) {
+    light.kind = LightKind::Spot;
+    light.direction = glm::normalize(glm::vec3(0.0f, -1.0f, 0.0f) - light.position);
+    light.spotCutoffDeg = 40.0f;
+    b.settings.shadows.enabled = true;
+    b.settings.shadows.mapSize = 2048;
+    b.settings.shadows.pcfRadius = 1;
+  }
+  b.settings.lights = {light};
+  return b;
+}
+
+// Ten screen-filling quads drawn back to front: every pixel shaded ~10 times.
+BenchScene fillScene(int width, int height) {
+  BenchScene b{"fill-10x", {}, manualSettings(width, height)};
+  b.scene.source = b.name;
+  for (int i = 0; i < 10; ++i) {
+    const float z = -9.0f + static_cast<float>(i);  // farthest first
+    const float t = static_cast<float>(i) / 9.0f;
+    // makePlane lies in y = 0 facing +y; Rx(90°) turns it to face +z, the camera.
+    addObject(b.scene, makePlane(1), addMaterial(b.scene, {0.2f + 0.6f * t, 0.5f, 0.8f - 0.6f * t}, 0.5f),
+              translation({0.0f, 0.0f, z}) * rotationX(0.5f * std::numbers::pi_v<float>) * scaling({40.0f, 1.0f, 40.0f}));
+  }
+  b.settings.camera.eye = {0.0f, 0.0f, 2.0f};
+  b.settings.camera.reference = {0.0f, 0.0f, 0.0f};
+  b.settings.camera.near = 0.5f;
+  b.settings.camera.far = 20.0f;
+  Light light;
+  light.position = {1.0f, 1.5f, 3.0f};
+  b.settings.lights = {light};
+  return b;
+}
+
+// The default scene with its own camera and light written as manual settings.
+BenchScene defaultScene(int width, int height) {
+  BenchScene b{"default", makeDefaultScene(), manualSettings(width, height)};
+  const SceneCamera& camera = b.scene.cameras.front();
+  b.settings.camera.eye = camera.eye;
+  b.settings.camera.reference = camera.reference;
+  b.settings.camera.up = camera.up;
+  b.settings.camera.near = camera.near;
+  b.settings.camera.far = camera.far.value_or(30.0f);
+  b.settings.lights = b.scene.lights;
+  b.settings.shadows.enabled = true;  // the default settings: a point light, six 2048² maps, PCF r = 1
+  return b;
+}
+
+std::vector<std::string> allSceneNames() { return {"sphere-100k", "sphere-1m", "sphere-100k-shadow", "sphere-1m-shadow", "fill-10x", "default"}; }
+
+BenchScene makeBenchScene(const std::string& name, int width, int height) {
+  if (name == "sphere-100k") return sphereScene(name, kSphere100k, false, width, height);
+  if (name == "sphere-1m") return sphereScene(name, kSphere1M, false, width, height);
+  if (name == "sphere-100k-shadow") return sphereScene(name, kSphere100k, true, width, height);
+  if (name == "sphere-1m-shadow") return sphereScene(name, kSphere1M, true, width, height);
+  if (name == "fill-10x") return fillScene(width, height);
+  if (name == "default") return defaultScene(width, height);
+  throw Error("bench: unknown scene '" + name + "'");
+}
+
+// [SECTION] Statistics
+
+struct Summary {
+  double median = 0, min = 0, max = 0, q1 = 0, q3 = 0;
+};
+
+double quantile(std::vector<double> sorted, double q) {
+  if (sorted.empty()) return 0;
+  const double at = q * static_cast<double>(sorted.size() - 1);
+  const auto lo = static_cast<std::size_t>(std::floor(at)), hi = static_cast<std::size_t>(std::ceil(at));
+  return sorted[lo] + (sorted[hi] - sorted[lo]) * (at - static_cast<double>(lo));
+}
+
+Summary summarize(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  if (v.empty()) return {};
+  return {quantile(v, 0.5), v.front(), v.back(), quantile(v, 0.25), quantile(v, 0.75)};
+}
+
+long statusKilobytes(const char* key) {
+  std::ifstream in("/proc/self/status");
+  std::string line;
+  const std::string prefix = std::string(key) + ":";
+  while (std::getline(in, line))
+    if (line.rfind(prefix, 0) == 0) return std::atol(line.c_str() + prefix.size());
+  return -1;
+}
+
+// [SECTION] Child processes: peak memory per backend, time to first PNG
+
+// Runs argv to completion with stdout captured (when `out` is given); returns the exit status.
+int runChild(const std::vector<std::string>& args, std::string* out) {
+  std::vector<char*> argv;
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  int pipeFds[2] = {-1, -1};
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  if (out) {
+    if (pipe(pipeFds) != 0) throw Error("bench: pipe failed");
+    posix_spawn_file_actions_adddup2(&actions, pipeFds[1], STDOUT_FILENO);
+    posix_spawn_file_actions_addclose(&actions, pipeFds[0]);
+  } else {
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  }
+  pid_t pid = 0;
+  const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (out) {
+    close(pipeFds[1]);
+    char buffer[4096];
+    ssize_t n;
+    while ((n = read(pipeFds[0], buffer, sizeof buffer)) > 0) out->append(buffer, static_cast<std::size_t>(n));
+    close(pipeFds[0]);
+  }
+  if (spawned != 0) throw Error("bench: cannot run " + args[0]);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+}
+
+std::string selfPath() {
+  char path[4096];
+  const ssize_t n = readlink("/proc/self/exe", path, sizeof path - 1);
+  if (n <= 0) throw Error("bench: cannot find /proc/self/exe");
+  path[n] = '\0';
+  return path;
+}
+
+// [SECTION] The command
+
+struct BenchOptions {
+  std::vector<std::string> scenes;
+  std::vector<std::string> backends{"cpu", "gl"};
+  int frames = 9;
+  int warmup = 2;
+  int threads = 2;
+  std::string size = "1920x1080";
+  int startupRuns = 5;
+  bool memory = true;
+  std::string outDir;         // CPU (and GL) images of the last frame, per scene
+  bool callgrind = false;     // instrument frames only; one scene, one backend
+  std::string child;          // internal: "scene:backend", print VmHWM
+};
+
+std::unique_ptr<Renderer> makeBackend(const std::string& backend, int threads) {
+  if (backend == "cpu") return makeCpuRenderer(threads);
+#if FACET_HAVE_GL
+  if (backend == "gl") return makeGlRenderer(GlContextKind::OsMesa);
+#endif
+  throw Error("bench: backend '" + backend + "' is not available in this build");
+}
+
+int runChildMode(const BenchOptions& o, int width, int height) {
+  const std::size_t colon = o.child.find(':');
+  const BenchScene b = makeBenchScene(o.child.substr(0, colon), width, height);
+  const FrameInputs frame = buildFrameInputs(b.scene, b.settings);
+  const long before = statusKilobytes("VmHWM");
+  std::unique_ptr<Renderer> renderer = makeBackend(o.child.substr(colon + 1), o.threads);
+  for (int i = 0; i < std::max(1, o.warmup + 1); ++i) (void)renderer->render(b.scene, frame);
+  std::printf("%ld %ld\n", before, statusKilobytes("VmHWM"));
+  return 0;
+}
+
+int runCallgrindMode(const BenchOptions& o, int width, int height) {
+  const BenchScene b = makeBenchScene(o.scenes.front(), width, height);
+  const FrameInputs frame = buildFrameInputs(b.scene, b.settings);
+  std::unique_ptr<Renderer> renderer = makeBackend(o.backends.front(), o.threads);
+  for (int i = 0; i < o.warmup; ++i) (void)renderer->render(b.scene, frame);
+  CALLGRIND_ZERO_STATS;
+  CALLGRIND_START_INSTRUMENTATION;
+  for (int i = 0; i < o.frames; ++i) (void)renderer->render(b.scene, frame);
+  CALLGRIND_STOP_INSTRUMENTATION;
+  std::printf("callgrind: %s on %s, %d frame(s) instrumented\n", o.scenes.front().c_str(), o.backends.front().c_str(), o.frames);
+  return 0;
+}
+
+}  // namespace
+
+Command addBenchCommand(CLI::App& app) {
+  auto o = std::make_shared<BenchOptions>();
+  CLI::App* command = app.add_subcommand("bench", "Benchmark the CPU rasterizer against OpenGL on llvmpipe, same scenes, same threads");
+  command->add_option("--scenes", o->scenes, "scenes (default: all): sphere-100k sphere-1m sphere-100k-shadow sphere-1m-shadow fill-10x default")
+      ->delimiter(',')
+      ->check(CLI::IsMember(allSceneNames()));
+  command->add_option("--backends", o->backends, "cpu,gl (default both)")->delimiter(',')->check(CLI::IsMember({"cpu", "gl"}));
+  command->add_option("--frames", o->frames, "timed frames per backend and scene")->check(CLI::Range(1, 1000));
+  command->add_option("--warmup", o->warmup, "untimed frames first")->check(CLI::Range(0, 100));
+  command->add_option("--threads", o->threads, "threads of both backends (LP_NUM_THREADS for llvmpipe)")->check(CLI::Range(1, 256));
+  command->add_option("--size", o->size, "image size WxH");
+  command->add_option("--startup-runs", o->startupRuns, "runs of `facet render` per backend for the time to the first PNG (0: skip)")
+      ->check(CLI::Range(0, 100));
+  command->add_flag("!--no-memory", o->memory, "skip the per-backend peak-memory child processes");
+  command->add_option("--out", o->outDir, "write each backend's last frame per scene as DIR/<scene>-<backend>.png")
+      ->check(CLI::ExistingDirectory);
+  command->add_flag("--callgrind", o->callgrind, "instrument the timed frames only (run under valgrind --tool=callgrind --instr-atstart=no)");
+  command->add_option("--child", o->child, "internal: scene:backend, print VmHWM")->group("");
+  return [o]() {
+    // llvmpipe reads LP_NUM_THREADS when its screen is created: before any context.
+    setenv("LP_NUM_THREADS", std::to_string(o->threads).c_str(), 1);
+    int width = 0, height = 0;
+    parseSize(o->size, width, height);
+    if (o->scenes.empty()) o->scenes = allSceneNames();
+    if (!o->child.empty()) return runChildMode(*o, width, height);
+    if (o->callgrind) return runCallgrindMode(*o, width, height);
+
+    std::vector<std::unique_ptr<Renderer>> renderers;
+    for (const std::string& backend : o->backends) renderers.push_back(makeBackend(backend, o->threads));
+    std::printf("facet bench: %dx%d, %d thread(s), %d warm-up + %d timed frames per backend, alternating\n", width, height, o->threads,
+                o->warmup, o->frames);
+    for (std::size_t r = 0; r < renderers.size(); ++r) std::printf("  %-4s %s\n", o->backends[r].c_str(), renderers[r]->description().c_str());
+    const std::string self = selfPath();
+
+    for (const std::string& name : o->scenes) {
+      const BenchScene b = makeBenchScene(name, width, height);
+      const FrameInputs frame = buildFrameInputs(b.scene, b.settings);
+      const double triangles = static_cast<double>(b.scene.triangleCount());
+      std::vector<std::vector<double>> ms(renderers.size()), upload(renderers.size());
+      std::vector<RenderResult> last(renderers.size());
+      for (std::size_t r = 0; r < renderers.size(); ++r)
+        for (int i = 0; i < o->warmup; ++i) (void)renderers[r]->render(b.scene, frame);
+      for (int i = 0; i < o->frames; ++i)
+        for (std::size_t r = 0; r < renderers.size(); ++r) {
+          const auto start = Clock::now();
+          last[r] = renderers[r]->render(b.scene, frame);
+          ms[r].push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+          double up = 0;
+          for (const PassTiming& t : last[r].timings)
+            if (t.pass == "scene upload") up = t.milliseconds;
+          upload[r].push_back(up);
+        }
+      std::printf("\n%s: %.0f triangles, %s shading, %zu light(s), %d shadow map(s) of %d²\n", name.c_str(), triangles,
+                  std::string(kShadingModeNames[static_cast<std::size_t>(frame.shading)]).c_str(), frame.lights.size(), frame.shadowLayerCount,
+                  frame.shadowLayerCount > 0 ? frame.shadows.mapSize : 0);
+      std::printf("  %-4s %10s %31s %8s %8s %11s %7s\n", "", "ms/frame", "min..max (q1..q3)", "Mtri/s", "peak MB", "ms -upload", "vs gl");
+      double glMedian = 0;
+      for (std::size_t r = 0; r < renderers.size(); ++r)
+        if (o->backends[r] == "gl") glMedian = summarize(ms[r]).median;
+      for (std::size_t r = 0; r < renderers.size(); ++r) {
+        const Summary s = summarize(ms[r]);
+        std::vector<double> net;
+        for (std::size_t i = 0; i < ms[r].size(); ++i) net.push_back(ms[r][i] - upload[r][i]);
+        double peakMb = -1;
+        if (o->memory) {
+          std::string out;
+          if (runChild({self, "bench", "--child", name + ":" + o->backends[r], "--threads", std::to_string(o->threads), "--size", o->size,
+                        "--warmup", "1"},
+                       &out) == 0) {
+            long before = 0, after = 0;
+            if (std::sscanf(out.c_str(), "%ld %ld", &before, &after) == 2) peakMb = static_cast<double>(after) / 1024.0;
+          }
+        }
+        char ratio[32] = "";
+        if (glMedian > 0 && o->backends[r] != "gl") std::snprintf(ratio, sizeof ratio, "%.2f", s.median / glMedian);
+        char spread[64];
+        std::snprintf(spread, sizeof spread, "%.1f..%.1f (%.1f..%.1f)", s.min, s.max, s.q1, s.q3);
+        std::printf("  %-4s %10.2f %31s %8.2f %8.0f %11.2f %7s\n", o->backends[r].c_str(), s.median, spread, triangles / (s.median * 1e3),
+                    peakMb, summarize(net).median, ratio);
+        if (!o->outDir.empty()) writePng(o->outDir + "/" + name + "-" + o->backends[r] + ".png", last[r].image);
+      }
+      std::fflush(stdout);
+    }
+
+    if (o->startupRuns > 0) {
+      std::printf("\ntime to the first PNG: `facet render -o PNG --backend B` (default scene, default settings), %d runs\n", o->startupRuns);
+      const std::string png = "/tmp/facet-bench-startup-" + std::to_string(getpid()) + ".png";
+      for (const std::string& backend : o->backends) {
+        std::vector<double> runs;
+        for (int i = 0; i < o->startupRuns; ++i) {
+          const auto start = Clock::now();
+          std::vector<std::string> args{self, "render", "--backend", backend, "-o", png};
+          if (backend == "cpu") args.insert(args.end(), {"--threads", std::to_string(o->threads)});
+          if (runChild(args, nullptr) != 0) throw Error("bench: `facet render --backend " + backend + "` failed");
+          runs.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+        }
+        const Summary s = summarize(runs);
+        std::printf("  %-4s %8.1f ms median, %.1f..%.1f\n", backend.c_str(), s.median, s.min, s.max);
+      }
+      std::remove(png.c_str());
+    }
+    return 0;
+  };
+}
+
+}  // namespace facet
