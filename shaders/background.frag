@@ -1,10 +1,7 @@
 #version 450 core
 // The background colour, encoded and quantized exactly as a lit pixel is.
 #include "frame_block.glsl"
-#include "transform.glsl"
-#include "texture.glsl"
-#include "draw_uniforms.glsl"
-#include "lighting.glsl"
+#include "srgb_encode.glsl"
 
 layout(location = 0) out vec4 color;
 

@@ -8,12 +8,16 @@ uniform mat4 worldFromModel;       // TM
 uniform mat3 normalMatrix;         // (TM^T)^-1, upper 3x3
 uniform CourseMaterial material;   // k_e, k_a, k_d, k_s, n
 uniform vec3 baseColorFactor;      // O_d without its texture, linear RGB
-uniform bool hasBaseColorTexture;  // the material has one and the mesh has TEXCOORD_0
 
 layout(binding = 0) uniform sampler2DArray shadowMaps;  // pass 1: one S×S depth layer per light face
 layout(binding = 1) uniform usampler2D baseColorTexture; // sRGB-encoded bytes (GL_RGBA8UI), bottom row first
 
 // O_d at texture coordinates st: the factor times the texture (renderer/PIPELINE.md, section 8).
+// FACET_TEXTURED: the draw's material has one and its mesh has TEXCOORD_0.
 vec3 baseColorAt(vec2 st) {
-  return hasBaseColorTexture ? baseColorFactor * sampleBaseColor(baseColorTexture, st) : baseColorFactor;
+#if FACET_TEXTURED
+  return baseColorFactor * sampleBaseColor(baseColorTexture, st);
+#else
+  return baseColorFactor;
+#endif
 }

@@ -5,7 +5,11 @@
 //   I = k_e + k_a·I_a·O_d + Σ_lights S·f_att·(k_d·I_p·max(N·L, 0)·O_d + k_s·I_p·spec)
 //
 // Needs frame_block.glsl, transform.glsl and `uniform sampler2DArray shadowMaps;`
-// (draw_uniforms.glsl) before it.
+// (draw_uniforms.glsl) before it, and the program's specialization macros
+// (renderer/gl/shader_variant.cpp): FACET_LIGHT_COUNT, FACET_LIGHT_KIND(i),
+// FACET_LIGHT_SHADOWED(i), FACET_SPECULAR_MODEL, FACET_PCF_RADIUS. They hold
+// the values the frame block also holds; compiled in, the branches that do
+// not apply to this frame are gone (llvmpipe runs both sides of a branch).
 
 // f_att = min(1, 1/(c1 + c2·d + c3·d²))
 float attenuation(vec3 c, float d) {
@@ -34,7 +38,7 @@ int cubeFace(vec3 d) {
 // when z - bias > depth, bias = max(b_slope·(1 - N·L), b_min); outside the
 // map or beyond its far plane counts as lit.
 float shadowFactor(int i, vec3 P, vec3 N, vec3 L) {
-  if (frame.lights[i].shadow.x == 0) return 1.0;
+  if (!FACET_LIGHT_SHADOWED(i)) return 1.0;
   int face = int(frame.lights[i].positionKind.w) == kLightPoint ? cubeFace(P - frame.lights[i].positionKind.xyz) : 0;
   precise vec4 s = transformPoint(frame.lights[i].shadowFromWorld[face], P);
   if (!(s.w > 0.0)) return 1.0;
@@ -44,7 +48,7 @@ float shadowFactor(int i, vec3 P, vec3 N, vec3 L) {
   // index an int without changing which texels a point inside reads.
   uvz.xy = clamp(uvz.xy, -1.0, 2.0);
   float bias = max(frame.shadowParams.x * (1.0 - dot(N, L)), frame.shadowParams.y);
-  int size = int(frame.shadowParams.w), r = int(frame.shadowParams.z);
+  int size = int(frame.shadowParams.w), r = FACET_PCF_RADIUS;
   int tx = int(floor(uvz.x * float(size)));
   int ty = int(floor(uvz.y * float(size)));
   int layer = frame.lights[i].shadow.y + face;
@@ -72,9 +76,8 @@ Illumination illuminate(CourseMaterial material, vec3 P, vec3 N, vec3 V) {
   Illumination I;
   I.diffuse = vec3(material.ka * frame.ambientCounts.x);
   I.specular = material.emissive;
-  int count = int(frame.ambientCounts.y);
-  for (int i = 0; i < count; ++i) {
-    int kind = int(frame.lights[i].positionKind.w);
+  for (int i = 0; i < FACET_LIGHT_COUNT; ++i) {
+    int kind = FACET_LIGHT_KIND(i);
     vec3 L;
     float fAtt = 1.0;
     if (kind == kLightDirectional) {
@@ -91,7 +94,7 @@ Illumination illuminate(CourseMaterial material, vec3 P, vec3 N, vec3 V) {
     vec3 Ip = frame.lights[i].intensity.rgb;
     float S = shadowFactor(i, P, N, L);
     I.diffuse += S * fAtt * (material.kd * NdotL * Ip);
-    I.specular += S * fAtt * (material.ks * specularTerm(N, L, V, material.shininess, int(frame.ambientCounts.w)) * Ip);
+    I.specular += S * fAtt * (material.ks * specularTerm(N, L, V, material.shininess, FACET_SPECULAR_MODEL) * Ip);
   }
   return I;
 }
@@ -104,10 +107,4 @@ vec3 shade(Illumination illumination, vec3 baseColor) {
 // V at P: toward the eye (perspective) or the constant -k (parallel).
 vec3 viewVector(vec3 P) {
   return frame.eyePosition.w != 0.0 ? normalize(frame.eyePosition.xyz - P) : frame.towardEye.xyz;
-}
-
-// Clamp to [0,1], then IEC 61966-2-1.
-vec3 encodeSrgb(vec3 linear) {
-  vec3 c = clamp(linear, 0.0, 1.0);
-  return mix(1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, 12.92 * c, lessThanEqual(c, vec3(0.0031308)));
 }

@@ -6,6 +6,7 @@
 #include "texture.glsl"
 #include "draw_uniforms.glsl"
 #include "lighting.glsl"
+#include "srgb_encode.glsl"
 
 flat in vec3 frontDiffuse;
 flat in vec3 frontSpecular;

@@ -50,5 +50,9 @@ void main() {
   frontSpecular = front.specular;
   backDiffuse = back.diffuse;
   backSpecular = back.specular;
-  st = hasBaseColorTexture ? vec2(texcoords[2u * v], texcoords[2u * v + 1u]) : vec2(0.0);
+#if FACET_TEXTURED
+  st = vec2(texcoords[2u * v], texcoords[2u * v + 1u]);
+#else
+  st = vec2(0.0);
+#endif
 }

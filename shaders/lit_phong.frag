@@ -6,6 +6,7 @@
 #include "texture.glsl"
 #include "draw_uniforms.glsl"
 #include "lighting.glsl"
+#include "srgb_encode.glsl"
 
 in vec3 worldPosition;
 in vec3 worldNormal;

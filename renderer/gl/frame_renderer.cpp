@@ -9,6 +9,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "common/error.h"
+#include "gl/shader_variant.h"
 
 namespace facet::gl {
 namespace {
@@ -30,6 +31,14 @@ constexpr std::array<std::string_view, 2> kLitStages[] = {
 static_assert(std::size(kLitStages) == static_cast<std::size_t>(ShadingMode::Count));
 
 using Clock = std::chrono::steady_clock;
+
+// Programs kept at most: each light set and settings combination a viewer
+// visits adds one or two; past this the cache starts over.
+constexpr std::size_t kMaxLitPrograms = 32;
+
+std::string litProgramKey(const FrameInputs& frame, bool textured) {
+  return std::to_string(static_cast<int>(frame.shading)) + "\n" + litShaderDefines(frame, textured);
+}
 
 double millisecondsSince(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
 
@@ -53,7 +62,7 @@ std::vector<PassTiming> GlFrameRenderer::drawFrame(const FrameInputs& frame) {
   std::vector<PassTiming> timings;
   gl_.glFinish();
   Clock::time_point start = Clock::now();
-  if (preparePrograms(frame.shading, frame.shadowLayerCount > 0)) {
+  if (preparePrograms(frame)) {
     timings.push_back({"shader compile + link", millisecondsSince(start)});
     start = Clock::now();
   }
@@ -92,27 +101,39 @@ Image GlFrameRenderer::readImage() const {
   return image;
 }
 
-bool GlFrameRenderer::preparePrograms(ShadingMode shading, bool shadows) {
+bool GlFrameRenderer::isTextured(const FrameInputs& frame, const FrameInstance& instance) const {
+  if (instance.material < 0 || static_cast<std::size_t>(instance.material) >= frame.materials.size())
+    throw Error("OpenGL backend: the frame has no material " + std::to_string(instance.material));
+  return frame.materials[static_cast<std::size_t>(instance.material)].baseColorTexture >= 0 && scene_.mesh(instance.mesh).texcoords;
+}
+
+bool GlFrameRenderer::preparePrograms(const FrameInputs& frame) {
   bool compiled = false;
-  std::optional<LitProgram>& lit = litPrograms_[static_cast<std::size_t>(shading)];
-  if (!lit) {
-    if (shading == ShadingMode::Flat && getInteger(gl_, GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS) < 3)
+  const bool shadows = frame.shadowLayerCount > 0;
+  bool variants[2] = {false, false};  // [textured]: some draw of the frame needs it
+  for (const FrameInstance& instance : frame.instances)
+    if (scene_.mesh(instance.mesh).indexCount > 0) variants[isTextured(frame, instance) ? 1 : 0] = true;
+  if (litPrograms_.size() + 2 > kMaxLitPrograms) litPrograms_.clear();
+  for (const bool textured : {false, true}) {
+    if (!variants[textured ? 1 : 0]) continue;
+    const std::string key = litProgramKey(frame, textured);
+    if (litPrograms_.count(key)) continue;
+    if (frame.shading == ShadingMode::Flat && getInteger(gl_, GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS) < 3)
       throw Error("OpenGL: flat shading reads the mesh from 3 storage buffers in the vertex shader; this driver allows " +
                   std::to_string(getInteger(gl_, GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS)));
-    const auto& stages = kLitStages[static_cast<std::size_t>(shading)];
-    ShaderProgram program = buildProgram(gl_, {stages[0], stages[1]});
+    const auto& stages = kLitStages[static_cast<std::size_t>(frame.shading)];
+    ShaderProgram program = buildProgram(gl_, {stages[0], stages[1]}, litShaderDefines(frame, textured));
     const auto at = [&](const char* name) { return uniformLocation(gl_, program, name); };
-    lit.emplace(LitProgram{.clipFromModel = at("clipFromModel"),
-                           .worldFromModel = at("worldFromModel"),
-                           .normalMatrix = at("normalMatrix"),
-                           .emissive = at("material.emissive"),
-                           .ka = at("material.ka"),
-                           .kd = at("material.kd"),
-                           .ks = at("material.ks"),
-                           .shininess = at("material.shininess"),
-                           .baseColorFactor = at("baseColorFactor"),
-                           .hasBaseColorTexture = at("hasBaseColorTexture"),
-                           .program = std::move(program)});
+    litPrograms_.emplace(key, LitProgram{.clipFromModel = at("clipFromModel"),
+                                         .worldFromModel = at("worldFromModel"),
+                                         .normalMatrix = at("normalMatrix"),
+                                         .emissive = at("material.emissive"),
+                                         .ka = at("material.ka"),
+                                         .kd = at("material.kd"),
+                                         .ks = at("material.ks"),
+                                         .shininess = at("material.shininess"),
+                                         .baseColorFactor = at("baseColorFactor"),
+                                         .program = std::move(program)});
     compiled = true;
   }
   if (shadows && !depthProgram_) {
@@ -180,9 +201,20 @@ void GlFrameRenderer::litPass(const FrameInputs& frame) {
     gl_.glCullFace(GL_BACK);
   }
   gl_.glBindTextureUnit(kShadowMapsUnit, frame.shadowLayerCount > 0 ? shadowMaps_.texture() : 0);
-  const LitProgram& lit = *litPrograms_[static_cast<std::size_t>(frame.shading)];
-  gl_.glUseProgram(lit.program.id());
-  for (const FrameInstance& instance : frame.instances) drawInstance(lit, frame, instance, frame.shading == ShadingMode::Flat);
+  const LitProgram* programs[2] = {litProgram(frame, false), litProgram(frame, true)};  // [textured]
+  GLuint current = 0;
+  for (const FrameInstance& instance : frame.instances) {
+    if (scene_.mesh(instance.mesh).indexCount == 0) continue;
+    const LitProgram* lit = programs[isTextured(frame, instance) ? 1 : 0];
+    if (!lit) throw Error("OpenGL backend: no lit program was prepared for this frame");
+    if (lit->program.id() != current) gl_.glUseProgram(current = lit->program.id());
+    drawInstance(*lit, frame, instance, frame.shading == ShadingMode::Flat);
+  }
+}
+
+const GlFrameRenderer::LitProgram* GlFrameRenderer::litProgram(const FrameInputs& frame, bool textured) const {
+  const auto found = litPrograms_.find(litProgramKey(frame, textured));
+  return found == litPrograms_.end() ? nullptr : &found->second;
 }
 
 void GlFrameRenderer::drawInstance(const LitProgram& lit, const FrameInputs& frame, const FrameInstance& instance, bool flat) {
@@ -191,7 +223,7 @@ void GlFrameRenderer::drawInstance(const LitProgram& lit, const FrameInputs& fra
   if (instance.material < 0 || static_cast<std::size_t>(instance.material) >= frame.materials.size())
     throw Error("OpenGL backend: the frame has no material " + std::to_string(instance.material));
   const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
-  const bool textured = material.baseColorTexture >= 0 && mesh.texcoords;
+  const bool textured = isTextured(frame, instance);
 
   const GLuint program = lit.program.id();
   gl_.glProgramUniformMatrix4fv(program, lit.clipFromModel, 1, GL_FALSE, glm::value_ptr(instance.clipFromModel));
@@ -203,7 +235,6 @@ void GlFrameRenderer::drawInstance(const LitProgram& lit, const FrameInputs& fra
   gl_.glProgramUniform1f(program, lit.ks, material.ks);
   gl_.glProgramUniform1f(program, lit.shininess, material.shininess);
   gl_.glProgramUniform3fv(program, lit.baseColorFactor, 1, glm::value_ptr(material.baseColor));
-  gl_.glProgramUniform1i(program, lit.hasBaseColorTexture, textured ? 1 : 0);
   gl_.glBindTextureUnit(kBaseColorTextureUnit, textured ? scene_.texture(material.baseColorTexture) : 0);
 
   if (flat) {

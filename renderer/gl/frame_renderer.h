@@ -6,6 +6,7 @@
 // context's getProcAddress, so the headless renderer (gl_renderer.cpp) and
 // the viewer's GLFW window share it. Every call needs its context current.
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -50,7 +51,7 @@ class GlFrameRenderer {
   struct LitProgram {
     GLint clipFromModel, worldFromModel, normalMatrix;
     GLint emissive, ka, kd, ks, shininess;
-    GLint baseColorFactor, hasBaseColorTexture;
+    GLint baseColorFactor;
     ShaderProgram program;
   };
   struct DepthProgram {
@@ -59,7 +60,11 @@ class GlFrameRenderer {
   };
 
   // Compiles what the frame needs and has not been compiled yet; true when it compiled anything.
-  bool preparePrograms(ShadingMode shading, bool shadows);
+  bool preparePrograms(const FrameInputs& frame);
+  // The lit program of `frame` for draws with or without a base colour texture; null when not prepared.
+  const LitProgram* litProgram(const FrameInputs& frame, bool textured) const;
+  // Whether the instance's draw samples a base colour texture.
+  bool isTextured(const FrameInputs& frame, const FrameInstance& instance) const;
   void shadowPass(const FrameInputs& frame);
   void litPass(const FrameInputs& frame);
   void drawInstance(const LitProgram& lit, const FrameInputs& frame, const FrameInstance& instance, bool flat);
@@ -67,7 +72,9 @@ class GlFrameRenderer {
 
   GlFunctions gl_;
   std::string rendererName_;
-  std::array<std::optional<LitProgram>, static_cast<std::size_t>(ShadingMode::Count)> litPrograms_;
+  // Lit programs by shading mode and specialization (gl/shader_variant.h),
+  // kept while the frame's lights and settings keep asking for them.
+  std::map<std::string, LitProgram> litPrograms_;
   std::optional<DepthProgram> depthProgram_;
   std::optional<ShaderProgram> backgroundProgram_;
   GlObject frameUniforms_;     // the Frame block (FrameBlock), binding 0

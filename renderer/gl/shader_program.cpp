@@ -24,8 +24,18 @@ std::string infoLog(const GlFunctions& gl, GLuint object, bool program) {
   return log;
 }
 
-GlObject compileStage(const GlFunctions& gl, std::string_view file, const ShaderFileLookup& find) {
-  const ShaderSource source = assembleShaderSource(file, find);
+// The stage's text with `defines` after its first line (#version), and a
+// #line directive that puts the second line back at line 2 of source string 0.
+std::string withDefines(const std::string& text, std::string_view defines) {
+  if (defines.empty()) return text;
+  const std::size_t firstLineEnd = text.find('\n');
+  if (firstLineEnd == std::string::npos || text.rfind("#version", 0) != 0) return std::string(defines) + text;
+  return text.substr(0, firstLineEnd + 1) + std::string(defines) + "#line 2 0\n" + text.substr(firstLineEnd + 1);
+}
+
+GlObject compileStage(const GlFunctions& gl, std::string_view file, std::string_view defines, const ShaderFileLookup& find) {
+  ShaderSource source = assembleShaderSource(file, find);
+  source.text = withDefines(source.text, defines);
   GlObject shader(gl, gl.glCreateShader(stageOf(file)), [](const GlFunctions& f, GLuint id) { f.glDeleteShader(id); });
   const char* text = source.text.c_str();
   const auto length = static_cast<GLint>(source.text.size());
@@ -39,12 +49,13 @@ GlObject compileStage(const GlFunctions& gl, std::string_view file, const Shader
 
 }  // namespace
 
-ShaderProgram buildProgram(const GlFunctions& gl, std::initializer_list<std::string_view> stageFiles, const ShaderFileLookup& find) {
+ShaderProgram buildProgram(const GlFunctions& gl, std::initializer_list<std::string_view> stageFiles, std::string_view defines,
+                           const ShaderFileLookup& find) {
   std::string name;
   std::vector<GlObject> shaders;
   for (std::string_view file : stageFiles) {
     name += (name.empty() ? "" : " + ") + std::string(file);
-    shaders.push_back(compileStage(gl, file, find));
+    shaders.push_back(compileStage(gl, file, defines, find));
   }
   GlObject program(gl, gl.glCreateProgram(), [](const GlFunctions& f, GLuint id) { f.glDeleteProgram(id); });
   for (const GlObject& shader : shaders) gl.glAttachShader(program.id(), shader.id());

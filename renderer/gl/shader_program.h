@@ -22,9 +22,12 @@ class ShaderProgram {
   std::string name_;
 };
 
-// Compiles each stage file and links them. Throws facet::Error naming the
-// file (compile) or the program (link), with the driver's log on the same line.
-ShaderProgram buildProgram(const GlFunctions& gl, std::initializer_list<std::string_view> stageFiles,
+// Compiles each stage file and links them. `defines` (#define lines) go
+// right after each stage's #version line; line numbers in the driver's
+// messages still count from the file's own first line. Throws facet::Error
+// naming the file (compile) or the program (link), with the driver's log on
+// the same line.
+ShaderProgram buildProgram(const GlFunctions& gl, std::initializer_list<std::string_view> stageFiles, std::string_view defines = {},
                            const ShaderFileLookup& find = findEmbeddedShaderFile);
 
 // glGetUniformLocation; -1 (a uniform the compiler removed) is legal for glProgramUniform*, which then does nothing.

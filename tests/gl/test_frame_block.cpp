@@ -9,6 +9,8 @@
 #include "common/error.h"
 #include "gl/frame_block.h"
 #include "gl/shader_program.h"
+#include "gl/shader_variant.h"
+#include "pipeline/frame_inputs.h"
 #include "gl_test_support.h"
 #include "scene/default_scene.h"
 
@@ -47,7 +49,7 @@ TEST_CASE("the driver lays the Frame block out as FrameBlock: every offset, the 
   test::GlHarness harness;
   const GlFunctions& gl = harness.gl;
   // The program that reads the most of the block; std140 keeps every member active anyway.
-  const ShaderProgram program = buildProgram(gl, {"lit_phong.vert", "lit_phong.frag"});
+  const ShaderProgram program = buildProgram(gl, {"lit_phong.vert", "lit_phong.frag"}, litShaderDefines(buildFrameInputs(makeDefaultScene(), RenderSettings{}), false));
   const GLuint block = gl.glGetUniformBlockIndex(program.id(), "Frame");
   REQUIRE(block != GL_INVALID_INDEX);
   GLint size = 0;

@@ -9,7 +9,10 @@
 #include "gl/embedded_shaders.h"
 #include "gl/shader_program.h"
 #include "gl/shader_source.h"
+#include "gl/shader_variant.h"
 #include "gl_test_support.h"
+#include "pipeline/frame_inputs.h"
+#include "scene/default_scene.h"
 
 using namespace facet;
 using namespace facet::gl;
@@ -49,14 +52,35 @@ TEST_CASE("a driver log names files, on one line") {
   CHECK(describeLog("7:1(1): warning: z\n", files) == "7:1(1): warning: z");  // no such file: left as it is
 }
 
-TEST_CASE("every shader file is embedded, and every program of the backend compiles and links") {
-  for (const char* name : {"frame_block.glsl", "transform.glsl", "lighting.glsl", "texture.glsl", "draw_uniforms.glsl"})
+TEST_CASE("every shader file is embedded, and every program of the backend compiles and links, in every specialization") {
+  for (const char* name : {"frame_block.glsl", "transform.glsl", "lighting.glsl", "srgb_encode.glsl", "texture.glsl", "draw_uniforms.glsl"})
     CHECK_MESSAGE(findEmbeddedShaderFile(name).has_value(), name);
   test::GlHarness harness;
-  for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) {
-    const std::string name(kShadingModeNames[static_cast<std::size_t>(mode)]);
-    CHECK_NOTHROW(buildProgram(harness.gl, {"lit_" + name + ".vert", "lit_" + name + ".frag"}));
+  const Scene scene = makeDefaultScene();
+  // No light; the default point light with its shadow maps; three kinds, the
+  // first without a map, Phong specular, PCF radius 0.
+  std::vector<RenderSettings> lightSets(3);
+  lightSets[0].lightSource = Source::Manual;
+  lightSets[0].lights.clear();
+  lightSets[2].lightSource = Source::Manual;
+  lightSets[2].specular = SpecularModel::Phong;
+  lightSets[2].shadows.pcfRadius = 0;
+  for (LightKind kind : {LightKind::Directional, LightKind::Spot, LightKind::Point}) {
+    Light light;
+    light.kind = kind;
+    light.position = {1.0f, 5.0f, 2.0f};
+    light.direction = glm::normalize(glm::vec3(-1.0f, -5.0f, -2.0f));
+    light.castsShadow = kind != LightKind::Directional;
+    lightSets[2].lights.push_back(light);
   }
+  for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong})
+    for (const RenderSettings& settings : lightSets)
+      for (bool textured : {false, true}) {
+        const std::string name(kShadingModeNames[static_cast<std::size_t>(mode)]);
+        const std::string defines = litShaderDefines(buildFrameInputs(scene, settings), textured);
+        INFO(name, "\n", defines);
+        CHECK_NOTHROW(buildProgram(harness.gl, {"lit_" + name + ".vert", "lit_" + name + ".frag"}, defines));
+      }
   CHECK_NOTHROW(buildProgram(harness.gl, {"shadow_depth.vert", "shadow_depth.frag"}));
   CHECK_NOTHROW(buildProgram(harness.gl, {"background.vert", "background.frag"}));
 }
@@ -68,7 +92,7 @@ TEST_CASE("a shader that does not compile: facet::Error names the file and line,
       {"helper.glsl", "vec4 helper() {\n  return undeclaredThing;\n}\n"},
   };
   try {
-    buildProgram(harness.gl, {"background.vert", "broken.frag"}, lookupIn(files));
+    buildProgram(harness.gl, {"background.vert", "broken.frag"}, "", lookupIn(files));
     FAIL("expected facet::Error");
   } catch (const Error& e) {
     const std::string message = e.what();
@@ -80,6 +104,22 @@ TEST_CASE("a shader that does not compile: facet::Error names the file and line,
   }
 }
 
+TEST_CASE("defines after #version leave the driver's line numbers those of the file") {
+  test::GlHarness harness;
+  const std::map<std::string, std::string, std::less<>> files = {
+      {"broken.frag", "#version 450 core\nout vec4 color;\nvoid main() { color = vec4(FACET_VALUE) + undeclaredThing; }\n"},
+  };
+  try {
+    buildProgram(harness.gl, {"background.vert", "broken.frag"}, "#define FACET_VALUE 1.0\n#define FACET_OTHER 2\n", lookupIn(files));
+    FAIL("expected facet::Error");
+  } catch (const Error& e) {
+    const std::string message = e.what();
+    INFO(message);
+    CHECK(message.find("broken.frag:3(") != std::string::npos);
+    CHECK(message.find("undeclaredThing") != std::string::npos);
+  }
+}
+
 TEST_CASE("stages that do not link: facet::Error names the program, with the driver's log") {
   test::GlHarness harness;
   const std::map<std::string, std::string, std::less<>> files = {
@@ -87,7 +127,7 @@ TEST_CASE("stages that do not link: facet::Error names the program, with the dri
       {"mismatch.frag", "#version 450 core\nin vec4 value;\nout vec4 color;\nvoid main() { color = value; }\n"},
   };
   try {
-    buildProgram(harness.gl, {"mismatch.vert", "mismatch.frag"}, lookupIn(files));
+    buildProgram(harness.gl, {"mismatch.vert", "mismatch.frag"}, "", lookupIn(files));
     FAIL("expected facet::Error");
   } catch (const Error& e) {
     const std::string message = e.what();

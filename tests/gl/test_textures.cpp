@@ -37,7 +37,7 @@ TEST_CASE("a base colour texel reaches the shader as c/255 exactly, the value th
   // The expression of texel() in shaders/texture.glsl, before its sRGB decode.
   const std::string probe = "#version 450 core\nlayout(binding = 1) uniform usampler2D image;\nout vec4 value;\n"
                             "void main() { value = vec4(vec3(texelFetch(image, ivec2(gl_FragCoord.xy), 0).rgb) / 255.0, 1.0); }\n";
-  const gl::ShaderProgram program = gl::buildProgram(gl, {"background.vert", "probe.frag"}, [&](std::string_view name) {
+  const gl::ShaderProgram program = gl::buildProgram(gl, {"background.vert", "probe.frag"}, "", [&](std::string_view name) {
     return name == "probe.frag" ? std::optional<std::string_view>(probe) : gl::findEmbeddedShaderFile(name);
   });
   gl.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());

@@ -1,0 +1,31 @@
+#include "gl/shader_variant.h"
+
+namespace facet::gl {
+namespace {
+
+// "((i) == 0 ? a : (i) == 1 ? b : c)": a function-like macro that folds to a
+// literal once the light loop is unrolled over the constant light count.
+template <class Value>
+std::string perLight(const FrameInputs& frame, Value value) {
+  std::string chain = "(";
+  for (std::size_t i = 0; i + 1 < frame.lights.size(); ++i) {
+    chain.append("(i) == ").append(std::to_string(i)).append(" ? ").append(value(frame.lights[i])).append(" : ");
+  }
+  chain.append(value(frame.lights.empty() ? FrameLight{} : frame.lights.back())).append(")");
+  return chain;
+}
+
+}  // namespace
+
+std::string litShaderDefines(const FrameInputs& frame, bool textured) {
+  std::string d;
+  d += "#define FACET_TEXTURED " + std::string(textured ? "1" : "0") + "\n";
+  d += "#define FACET_SPECULAR_MODEL " + std::to_string(static_cast<int>(frame.specular)) + "\n";
+  d += "#define FACET_PCF_RADIUS " + std::to_string(frame.shadows.pcfRadius) + "\n";
+  d += "#define FACET_LIGHT_COUNT " + std::to_string(frame.lights.size()) + "\n";
+  d += "#define FACET_LIGHT_KIND(i) " + perLight(frame, [](const FrameLight& l) { return std::to_string(static_cast<int>(l.light.kind)); }) + "\n";
+  d += "#define FACET_LIGHT_SHADOWED(i) " + perLight(frame, [](const FrameLight& l) { return std::string(l.hasShadowMap ? "true" : "false"); }) + "\n";
+  return d;
+}
+
+}  // namespace facet::gl
