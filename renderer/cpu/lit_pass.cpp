@@ -18,6 +18,7 @@
 #include "cpu/interpolation.h"
 #include "cpu/lighting.h"
 #include "cpu/passes.h"
+#include "cpu/phong_batch.h"
 #include "cpu/srgb_table.h"
 #include "cpu/texture_sampling.h"
 #include "cpu/tile_raster.h"
@@ -67,6 +68,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
   const Image* texture = nullptr;
   bool back = false;
   const Illumination* flat = nullptr;
+  PhongBatch batch(frame, maps, image.data());  // Phong: four pixels' illumination at a time
   for (int py = ty0; py <= ty1; ++py)
     for (int px = tx0; px <= tx1; ++px) {
       const std::uint32_t id = scratch.id[(py - ty0) * kTileSize + (px - tx0)];
@@ -101,7 +103,9 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         const glm::vec3 P = get3(*in, 0);
         glm::vec3 N = glm::normalize(get3(*in, 3));
         if (back) N = -N;  // two-sided lighting
-        color = shade(illuminate(frame, maps, *material, P, N, viewVector(frame, P)), baseColor);
+        batch.add(static_cast<std::size_t>(py) * static_cast<std::size_t>(image.width()) + static_cast<std::size_t>(px), P, N, baseColor,
+                  *material);
+        continue;  // written when the batch is shaded
       } else if constexpr (kMode == ShadingMode::Gouraud) {
         const int side = back ? 6 : 0;
         color = shade({get3(*in, side), get3(*in, side + 3)}, baseColor);
@@ -110,6 +114,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
       }
       image.at(px, py) = srgb.pixel(color);
     }
+  batch.flush();
 }
 
 }  // namespace

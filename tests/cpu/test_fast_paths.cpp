@@ -1,15 +1,19 @@
 // The CPU renderer's fast paths give the same bits as the plain formulas:
-// the sRGB table against quantize(encodeSrgb), thread counts and reused
-// buffers (shadow maps cleared tile by tile) against a fresh renderer.
+// the sRGB table against quantize(encodeSrgb), the four-lane Phong batch
+// against illuminate, thread counts and reused buffers (shadow maps cleared
+// tile by tile) against a fresh renderer.
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <random>
+#include <set>
 
 #include <doctest/doctest.h>
 
 #include "cpu/cpu_renderer.h"
 #include "cpu/lighting.h"
+#include "cpu/phong_batch.h"
 #include "cpu/srgb_table.h"
 #include "cpu/texture_sampling.h"
 #include "pipeline/frame_inputs.h"
@@ -77,4 +81,59 @@ TEST_CASE("CPU renderer: the image does not depend on the thread count, nor on t
     CHECK(render(*reused, scene, s) == one);
     CHECK(render(*reused, scene, s) == one);
   }
+}
+
+TEST_CASE("Phong batch: four lanes at a time give the bits of illuminate, shade and the sRGB encode, per pixel") {
+  const Scene scene = makeDefaultScene();
+  std::mt19937 random(12345);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f), coordinate(-3.0f, 3.0f);
+  for (SpecularModel model : {SpecularModel::BlinnPhong, SpecularModel::Phong})
+    for (bool perspective : {true, false}) {
+      RenderSettings s;
+      s.specular = model;
+      s.camera.projection = perspective ? ProjectionKind::Perspective : ProjectionKind::Parallel;
+      s.shadows.mapSize = 64;
+      s.lightSource = Source::Manual;
+      s.lights.clear();
+      for (LightKind kind : {LightKind::Point, LightKind::Spot, LightKind::Directional, LightKind::Point}) {
+        Light light;
+        light.kind = kind;
+        light.position = {coordinate(random), 4.0f + unit(random), coordinate(random)};
+        light.direction = glm::normalize(glm::vec3(coordinate(random), -4.0f, coordinate(random)));
+        light.attenuation = {1.0f, 0.1f * unit(random), 0.02f * unit(random)};
+        light.spotCutoffDeg = 35.0f;
+        light.castsShadow = s.lights.size() != 3;  // the last light has no map
+        s.lights.push_back(light);
+      }
+      const FrameInputs frame = buildFrameInputs(scene, s);
+      REQUIRE(frame.shadowLayerCount > 0);
+      cpu::ShadowMaps maps;
+      maps.reset(frame.shadows.mapSize, frame.shadowLayerCount);
+      for (float& d : maps.depth) d = unit(random);  // some texels nearer than the points, some farther
+
+      constexpr int kPixels = 4001;  // not a multiple of the four lanes
+      Image batched(kPixels, 1), scalar(kPixels, 1);
+      cpu::PhongBatch batch(frame, maps, batched.data());
+      for (int i = 0; i < kPixels; ++i) {
+        const glm::vec3 P{coordinate(random), coordinate(random) * 0.3f, coordinate(random)};
+        const glm::vec3 N = glm::normalize(glm::vec3(coordinate(random), coordinate(random), coordinate(random)));
+        const glm::vec3 baseColor{unit(random), unit(random), unit(random)};
+        CourseMaterial material;
+        material.emissive = glm::vec3(0.05f * unit(random));
+        material.ka = unit(random), material.kd = unit(random), material.ks = unit(random);
+        material.shininess = 1.0f + 200.0f * unit(random);
+        batch.add(static_cast<std::size_t>(i), P, N, baseColor, material);
+        scalar.at(i, 0) = cpu::srgbTable().pixel(cpu::shade(cpu::illuminate(frame, maps, material, P, N, cpu::viewVector(frame, P)), baseColor));
+      }
+      batch.flush();
+      CAPTURE(static_cast<int>(model));
+      CAPTURE(perspective);
+      int differing = 0;
+      for (int i = 0; i < kPixels; ++i) differing += batched.at(i, 0) == scalar.at(i, 0) ? 0 : 1;
+      CHECK(differing == 0);
+      // The comparison means something: lit, shadowed and unlit pixels all occur.
+      std::set<int> levels;
+      for (int i = 0; i < kPixels; ++i) levels.insert(scalar.at(i, 0).r);
+      CHECK(levels.size() > 100);
+    }
 }
