@@ -39,7 +39,7 @@ int cubeFace(vec3 d) {
 // map or beyond its far plane counts as lit.
 float shadowFactor(int i, vec3 P, vec3 N, vec3 L) {
   if (!FACET_LIGHT_SHADOWED(i)) return 1.0;
-  int face = int(frame.lights[i].positionKind.w) == kLightPoint ? cubeFace(P - frame.lights[i].positionKind.xyz) : 0;
+  int face = FACET_LIGHT_KIND(i) == kLightPoint ? cubeFace(P - frame.lights[i].positionKind.xyz) : 0;
   precise vec4 s = transformPoint(frame.lights[i].shadowFromWorld[face], P);
   if (!(s.w > 0.0)) return 1.0;
   vec3 uvz = s.xyz / s.w;

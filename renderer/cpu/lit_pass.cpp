@@ -44,17 +44,8 @@ void put(float* v, int at, glm::vec3 value) {
   for (int k = 0; k < 3; ++k) v[at + k] = value[k];
 }
 
-glm::vec3 get3(const Interpolation& in, int at) { return {in.varying(at), in.varying(at + 1), in.varying(at + 2)}; }
 
 constexpr std::uint32_t kNoTriangle = std::numeric_limits<std::uint32_t>::max();
-
-// What shading a pixel needs of the triangle that won it.
-struct Winner {
-  const BinnedTriangle* triangle = nullptr;
-  const WorkerBins* bins = nullptr;
-  std::size_t index = 0;  // in bins->triangles
-};
-
 
 // The fragment stage of one shading mode: no branch on the mode per pixel.
 template <ShadingMode kMode>
@@ -96,19 +87,21 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         if constexpr (kMode == ShadingMode::Flat) flat = &bins.flat[2 * index];
       }
       (void)in->at(px, py);
+      float v[layout.count];
+      if (kMode != ShadingMode::Flat || texture) in->varyings(layout.count, v);
       glm::vec3 baseColor = material->baseColor;
-      if (texture) baseColor *= sampleBaseColor(*texture, {in->varying(layout.uv), in->varying(layout.uv + 1)});
+      if (texture) baseColor *= sampleBaseColor(*texture, {v[layout.uv], v[layout.uv + 1]});
       glm::vec3 color;
       if constexpr (kMode == ShadingMode::Phong) {
-        const glm::vec3 P = get3(*in, 0);
-        glm::vec3 N = glm::normalize(get3(*in, 3));
+        const glm::vec3 P{v[0], v[1], v[2]};
+        glm::vec3 N = glm::normalize(glm::vec3{v[3], v[4], v[5]});
         if (back) N = -N;  // two-sided lighting
         batch.add(static_cast<std::size_t>(py) * static_cast<std::size_t>(image.width()) + static_cast<std::size_t>(px), P, N, baseColor,
                   *material);
         continue;  // written when the batch is shaded
       } else if constexpr (kMode == ShadingMode::Gouraud) {
         const int side = back ? 6 : 0;
-        color = shade({get3(*in, side), get3(*in, side + 3)}, baseColor);
+        color = shade({{v[side], v[side + 1], v[side + 2]}, {v[side + 3], v[side + 4], v[side + 5]}}, baseColor);
       } else {
         color = shade(back ? flat[1] : flat[0], baseColor);
       }

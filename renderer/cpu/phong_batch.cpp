@@ -118,7 +118,9 @@ void PhongBatch::flush() {
   _mm_store_ps(rgb[0], color.x);
   _mm_store_ps(rgb[1], color.y);
   _mm_store_ps(rgb[2], color.z);
-  for (int k = 0; k < count_; ++k) pixels_[offset_[k]] = srgb_.pixel({rgb[0][k], rgb[1][k], rgb[2][k]});
+  std::uint8_t bytes[3][kLanes];
+  for (int c = 0; c < 3; ++c) srgb_.encode4(rgb[c], bytes[c]);
+  for (int k = 0; k < count_; ++k) pixels_[offset_[k]] = {bytes[0][k], bytes[1][k], bytes[2][k], 255};
   count_ = 0;
 }
 

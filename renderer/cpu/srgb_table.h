@@ -13,6 +13,10 @@
 
 #include <glm/vec3.hpp>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "image/image.h"
 
 namespace facet::cpu {
@@ -30,6 +34,29 @@ class SrgbTable {
     return static_cast<std::uint8_t>(level);
   }
   Rgba8 pixel(glm::vec3 linear) const { return {encode(linear.r), encode(linear.g), encode(linear.b), 255}; }
+  // encode() of four values; the clamp and the bucket index four at a time where SSE2 is there.
+  void encode4(const float* linear, std::uint8_t* out) const {
+#if defined(__SSE2__)
+    const __m128 x = _mm_loadu_ps(linear);
+    // (x < 1) ? x : 1 (minps), then 0 unless x > 0 (NaN too): encode()'s clamp
+    const __m128 c = _mm_and_ps(_mm_cmpgt_ps(x, _mm_setzero_ps()), _mm_min_ps(x, _mm_set1_ps(1.0f)));
+    alignas(16) float clamped[4];
+    alignas(16) std::uint32_t bucket[4];
+    _mm_store_ps(clamped, c);
+    _mm_store_si128(reinterpret_cast<__m128i*>(bucket), _mm_srli_epi32(_mm_castps_si128(c), kBucketShift));
+    for (int k = 0; k < 4; ++k) {
+      if (bucket[k] < kFirstBucket) {
+        out[k] = 0;
+        continue;
+      }
+      unsigned level = start_[bucket[k] - kFirstBucket];
+      level += threshold_[level + 1] <= clamped[k] ? 1u : 0u;
+      out[k] = static_cast<std::uint8_t>(level);
+    }
+#else
+    for (int k = 0; k < 4; ++k) out[k] = encode(linear[k]);
+#endif
+  }
 
  private:
   static constexpr int kBucketShift = 15;  // keeps the sign, the exponent and 8 mantissa bits

@@ -46,6 +46,16 @@ TEST_CASE("sRGB table: equal to quantize(encodeSrgb(c)) for every float from 2^-
   for (float c : {0.0f, -0.0f, -1.0f, 1.0f, 2.0f, std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
                   std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::denorm_min()})
     CHECK(table.encode(c) == formula(c));
+  // encode4 (the clamp and bucket on four lanes) against encode, over a stride of all float bit patterns.
+  std::uint64_t mismatches4 = 0;
+  for (std::uint64_t bits = 0; bits <= 0xffffffffu; bits += 4 * 4099) {
+    float four[4];
+    std::uint8_t out[4];
+    for (int k = 0; k < 4; ++k) four[k] = std::bit_cast<float>(static_cast<std::uint32_t>(bits + static_cast<std::uint64_t>(k) * 4099));
+    table.encode4(four, out);
+    for (int k = 0; k < 4; ++k) mismatches4 += out[k] != table.encode(four[k]);
+  }
+  CHECK(mismatches4 == 0);
 }
 
 TEST_CASE("sRGB decode table: equal to decodeSrgb(v / 255) for every byte") {
