@@ -18,6 +18,7 @@
 #include <glm/vec4.hpp>
 
 #include "cpu/clipper.h"
+#include "cpu/interpolation.h"
 #include "cpu/lighting.h"
 
 namespace facet::cpu {
@@ -54,9 +55,15 @@ struct WorkerBins {
   std::vector<Illumination> flat;                    // flat shading: front, back per triangle
   std::vector<std::vector<std::uint32_t>> tiles;     // per tile: indices into `triangles`, in order
   std::vector<WindowVertex> scratch;                 // the clipper's output
+  struct TileTriangle {                              // a triangle the lit pass met in the tile, set up once
+    Interpolation interpolation;
+    const WorkerBins* bins;                          // whose `triangles` holds it
+    std::uint32_t index;
+  };
   struct TileScratch {                               // the lit pass's tile: z-buffer and winning triangle
     float depth[kTileSize * kTileSize];
-    std::uint32_t id[kTileSize * kTileSize];
+    std::uint32_t id[kTileSize * kTileSize];         // index into `triangles`
+    std::vector<TileTriangle> triangles;
   } tile;
 
   const float* vertex(const PassVertices& v, std::uint32_t ref) const {
@@ -74,7 +81,6 @@ struct TileGrid {
 struct FrameBuffers {
   PassVertices vertices;
   std::vector<WorkerBins> workers;
-  std::vector<std::uint32_t> firstId;  // lit pass: worker w's triangles have ids firstId[w] + index
 };
 
 }  // namespace facet::cpu

@@ -9,7 +9,6 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
-#include <optional>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -49,12 +48,12 @@ constexpr std::uint32_t kNoTriangle = std::numeric_limits<std::uint32_t>::max();
 
 // The fragment stage of one shading mode: no branch on the mode per pixel.
 template <ShadingMode kMode>
-void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, const FrameBuffers& buffers,
-               const std::vector<std::uint32_t>& firstId, const WorkerBins::TileScratch& scratch, int tx0, int ty0, int tx1, int ty1, Image& image) {
+void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, WorkerBins::TileScratch& scratch, int tx0, int ty0, int tx1,
+               int ty1, Image& image) {
   constexpr Layout layout = kMode == ShadingMode::Phong ? Layout{8, 6} : kMode == ShadingMode::Gouraud ? Layout{14, 12} : Layout{2, 0};
   const SrgbTable& srgb = srgbTable();
   std::uint32_t current = kNoTriangle;
-  std::optional<Interpolation> in;
+  Interpolation* in = nullptr;
   const CourseMaterial* material = nullptr;
   const Image* texture = nullptr;
   bool back = false;
@@ -66,17 +65,11 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
       if (id == kNoTriangle) continue;  // the background the image was cleared to
       if (id != current) {
         current = id;
-        std::size_t w = 0;
-        while (w + 1 < firstId.size() && id >= firstId[w + 1]) ++w;
-        const WorkerBins& bins = buffers.workers[w];
-        const std::size_t index = id - firstId[w];
+        WorkerBins::TileTriangle& winner = scratch.triangles[id];
+        const WorkerBins& bins = *winner.bins;
+        const std::size_t index = winner.index;
         const BinnedTriangle& t = bins.triangles[index];
-        InterpolationVertex iv[3];
-        for (int k = 0; k < 3; ++k) {
-          const float* p = bins.vertex(buffers.vertices, t.vertex[k]);
-          iv[k] = {p[0], p[1], p[2], p[3], p + 4};
-        }
-        in.emplace(iv[0], iv[1], iv[2]);
+        in = &winner.interpolation;
         const FrameInstance& instance = frame.instances[t.instance & ~kBackFacing];
         const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
         material = &frame.materials[static_cast<std::size_t>(instance.material)];
@@ -93,11 +86,9 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
       if (texture) baseColor *= sampleBaseColor(*texture, {v[layout.uv], v[layout.uv + 1]});
       glm::vec3 color;
       if constexpr (kMode == ShadingMode::Phong) {
-        const glm::vec3 P{v[0], v[1], v[2]};
-        glm::vec3 N = glm::normalize(glm::vec3{v[3], v[4], v[5]});
-        if (back) N = -N;  // two-sided lighting
-        batch.add(static_cast<std::size_t>(py) * static_cast<std::size_t>(image.width()) + static_cast<std::size_t>(px), P, N, baseColor,
-                  *material);
+        // N is normalized (and negated on a back face, two-sided lighting) in the batch
+        batch.add(static_cast<std::size_t>(py) * static_cast<std::size_t>(image.width()) + static_cast<std::size_t>(px), {v[0], v[1], v[2]},
+                  {v[3], v[4], v[5]}, back, baseColor, *material);
         continue;  // written when the batch is shaded
       } else if constexpr (kMode == ShadingMode::Gouraud) {
         const int side = back ? 6 : 0;
@@ -174,9 +165,6 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
     binTriangles(scene, frame, v, grid, frame.cullBackFaces, begin, end, buffers.workers[static_cast<std::size_t>(w)],
                  frame.shading == ShadingMode::Flat ? &flat : nullptr);
   });
-  std::vector<std::uint32_t>& firstId = buffers.firstId;  // worker w's triangles are ids firstId[w] + index
-  firstId.assign(static_cast<std::size_t>(pool.size()), 0);
-  for (std::size_t w = 1; w < firstId.size(); ++w) firstId[w] = firstId[w - 1] + static_cast<std::uint32_t>(buffers.workers[w - 1].triangles.size());
 
   // Tiles: visibility (z-buffer, triangle order), then shading of what is visible.
   std::atomic<int> next{0};
@@ -190,7 +178,8 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
       if (!any) continue;
       std::fill(std::begin(scratch->depth), std::end(scratch->depth), 1.0f);
       std::fill(std::begin(scratch->id), std::end(scratch->id), kNoTriangle);
-      for (std::size_t w = 0; w < buffers.workers.size() && w < firstId.size(); ++w) {
+      scratch->triangles.clear();  // keeps its capacity: no allocation once the sizes settle
+      for (std::size_t w = 0; w < static_cast<std::size_t>(pool.size()); ++w) {
         const WorkerBins& bins = buffers.workers[w];
         for (const std::uint32_t index : bins.tiles[static_cast<std::size_t>(tile)]) {
           const BinnedTriangle& t = bins.triangles[index];
@@ -199,10 +188,12 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
           InterpolationVertex iv[3];
           for (int k = 0; k < 3; ++k) {
             const float* p = bins.vertex(v, t.vertex[k]);
-            iv[k] = {p[0], p[1], p[2], p[3], nullptr};
+            iv[k] = {p[0], p[1], p[2], p[3], p + 4};
           }
-          const Interpolation interpolation(iv[0], iv[1], iv[2]);
-          const std::uint32_t id = firstId[w] + index;
+          // Set up once: the z-buffer reads its depth, shading its weights if it wins a pixel.
+          const auto id = static_cast<std::uint32_t>(scratch->triangles.size());
+          scratch->triangles.push_back({Interpolation(iv[0], iv[1], iv[2]), &bins, index});
+          const Interpolation& interpolation = scratch->triangles.back().interpolation;
           rasterizeBlocks(t, minX, minY, maxX, maxY, [&](int px, int py) {
             const float z = interpolation.depthAt(px, py);
             const int k = (py - ty0) * kTileSize + (px - tx0);
@@ -213,9 +204,9 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
         }
       }
       switch (frame.shading) {
-        case ShadingMode::Phong: shadeTile<ShadingMode::Phong>(scene, frame, maps, buffers, firstId, *scratch, tx0, ty0, tx1, ty1, image); break;
-        case ShadingMode::Gouraud: shadeTile<ShadingMode::Gouraud>(scene, frame, maps, buffers, firstId, *scratch, tx0, ty0, tx1, ty1, image); break;
-        default: shadeTile<ShadingMode::Flat>(scene, frame, maps, buffers, firstId, *scratch, tx0, ty0, tx1, ty1, image); break;
+        case ShadingMode::Phong: shadeTile<ShadingMode::Phong>(scene, frame, maps, *scratch, tx0, ty0, tx1, ty1, image); break;
+        case ShadingMode::Gouraud: shadeTile<ShadingMode::Gouraud>(scene, frame, maps, *scratch, tx0, ty0, tx1, ty1, image); break;
+        default: shadeTile<ShadingMode::Flat>(scene, frame, maps, *scratch, tx0, ty0, tx1, ty1, image); break;
       }
     }
   });

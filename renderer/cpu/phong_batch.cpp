@@ -40,10 +40,20 @@ __m128 maxZero(__m128 a) { return _mm_andnot_ps(_mm_cmplt_ps(a, _mm_setzero_ps()
 void PhongBatch::flush() {
   if (count_ == 0) return;
   for (int k = count_; k < kLanes; ++k) {  // unused lanes repeat lane 0; their results are dropped
-    for (int c = 0; c < 3; ++c) P_[c][k] = P_[c][0], N_[c][k] = N_[c][0], O_[c][k] = O_[c][0], E_[c][k] = E_[c][0];
-    ka_[k] = ka_[0], kd_[k] = kd_[0], ks_[k] = ks_[0], n_[k] = n_[0];
+    for (int c = 0; c < 3; ++c) P_[c][k] = P_[c][0], N_[c][k] = N_[c][0], O_[c][k] = O_[c][0];
+    back_[k] = back_[0];
+    material_[k] = material_[0];
   }
-  const Vec3x4 P = load(P_), N = load(N_);
+  for (int k = 0; k < kLanes; ++k) {
+    const CourseMaterial& m = *material_[k];
+    for (int c = 0; c < 3; ++c) E_[c][k] = m.emissive[c];
+    ka_[k] = m.ka, kd_[k] = m.kd, ks_[k] = m.ks, n_[k] = m.shininess;
+  }
+  const Vec3x4 P = load(P_);
+  // N = normalize(interpolated N), then -N on a back face (two-sided lighting)
+  const Vec3x4 unit = normalize(load(N_));
+  const __m128 flip = _mm_load_ps(back_);
+  const Vec3x4 N{_mm_xor_ps(unit.x, flip), _mm_xor_ps(unit.y, flip), _mm_xor_ps(unit.z, flip)};
   // viewVector
   const Vec3x4 V = frame_.perspective ? normalize(sub(splat(frame_.eyePosition), P)) : splat(frame_.towardEye);
   // illuminate
@@ -81,13 +91,16 @@ void PhongBatch::flush() {
     // S per lane (texel reads); only lanes the light reaches, as in the scalar loop.
     alignas(16) float S[kLanes] = {1.0f, 1.0f, 1.0f, 1.0f};
     if (fl.hasShadowMap) {
-      alignas(16) float l[3][kLanes];
+      alignas(16) float l[3][kLanes], n[3][kLanes];
+      _mm_store_ps(n[0], N.x);
+      _mm_store_ps(n[1], N.y);
+      _mm_store_ps(n[2], N.z);
       _mm_store_ps(l[0], L.x);
       _mm_store_ps(l[1], L.y);
       _mm_store_ps(l[2], L.z);
       for (int k = 0; k < count_; ++k)
         if (activeLanes & (1 << k))
-          S[k] = shadowFactor(maps_, fl, frame_.shadows, {P_[0][k], P_[1][k], P_[2][k]}, {N_[0][k], N_[1][k], N_[2][k]}, {l[0][k], l[1][k], l[2][k]});
+          S[k] = shadowFactor(maps_, fl, frame_.shadows, {P_[0][k], P_[1][k], P_[2][k]}, {n[0][k], n[1][k], n[2][k]}, {l[0][k], l[1][k], l[2][k]});
     }
     // specularTerm's base, then pow per lane
     __m128 base;
@@ -128,12 +141,11 @@ void PhongBatch::flush() {
 
 void PhongBatch::flush() {
   for (int k = 0; k < count_; ++k) {
-    const glm::vec3 P{P_[0][k], P_[1][k], P_[2][k]}, N{N_[0][k], N_[1][k], N_[2][k]};
-    CourseMaterial material;
-    material.emissive = {E_[0][k], E_[1][k], E_[2][k]};
-    material.ka = ka_[k], material.kd = kd_[k], material.ks = ks_[k], material.shininess = n_[k];
+    const glm::vec3 P{P_[0][k], P_[1][k], P_[2][k]};
+    glm::vec3 N = glm::normalize(glm::vec3{N_[0][k], N_[1][k], N_[2][k]});
+    if (std::signbit(back_[k])) N = -N;
     const glm::vec3 O{O_[0][k], O_[1][k], O_[2][k]};
-    pixels_[offset_[k]] = srgb_.pixel(shade(illuminate(frame_, maps_, material, P, N, viewVector(frame_, P)), O));
+    pixels_[offset_[k]] = srgb_.pixel(shade(illuminate(frame_, maps_, *material_[k], P, N, viewVector(frame_, P)), O));
   }
   count_ = 0;
 }

@@ -25,21 +25,19 @@ class PhongBatch {
   PhongBatch(const FrameInputs& frame, const ShadowMaps& maps, Rgba8* pixels)
       : frame_(frame), maps_(maps), srgb_(srgbTable()), pixels_(pixels) {}
 
-  // Queues the pixel at pixels[offset]: world position P, unit normal N (already
-  // flipped for a back face), O_d and the material; shades when four are queued.
-  void add(std::size_t offset, glm::vec3 P, glm::vec3 N, glm::vec3 baseColor, const CourseMaterial& material) {
+  // Queues the pixel at pixels[offset]: world position P, the interpolated
+  // normal (normalized here, and negated for a back face, as the scalar path
+  // does), O_d and the material; shades when four are queued.
+  void add(std::size_t offset, glm::vec3 P, glm::vec3 interpolatedNormal, bool back, glm::vec3 baseColor, const CourseMaterial& material) {
     const int k = count_++;
     offset_[k] = offset;
     for (int c = 0; c < 3; ++c) {
       P_[c][k] = P[c];
-      N_[c][k] = N[c];
+      N_[c][k] = interpolatedNormal[c];
       O_[c][k] = baseColor[c];
-      E_[c][k] = material.emissive[c];
     }
-    ka_[k] = material.ka;
-    kd_[k] = material.kd;
-    ks_[k] = material.ks;
-    n_[k] = material.shininess;
+    back_[k] = back ? -0.0f : 0.0f;  // the sign bit to flip
+    material_[k] = &material;
     if (count_ == kLanes) flush();
   }
 
@@ -53,8 +51,9 @@ class PhongBatch {
   Rgba8* pixels_;
   int count_ = 0;
   std::size_t offset_[kLanes];
-  alignas(16) float P_[3][kLanes], N_[3][kLanes], O_[3][kLanes], E_[3][kLanes];
-  alignas(16) float ka_[kLanes], kd_[kLanes], ks_[kLanes], n_[kLanes];
+  const CourseMaterial* material_[kLanes];
+  alignas(16) float P_[3][kLanes], N_[3][kLanes], O_[3][kLanes], back_[kLanes];
+  alignas(16) float E_[3][kLanes], ka_[kLanes], kd_[kLanes], ks_[kLanes], n_[kLanes];  // filled by flush
 };
 
 }  // namespace facet::cpu

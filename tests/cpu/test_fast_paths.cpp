@@ -8,6 +8,7 @@
 #include <limits>
 #include <random>
 #include <set>
+#include <deque>
 
 #include <doctest/doctest.h>
 
@@ -123,6 +124,7 @@ TEST_CASE("Phong batch: four lanes at a time give the bits of illuminate, shade 
 
       constexpr int kPixels = 4001;  // not a multiple of the four lanes
       Image batched(kPixels, 1), scalar(kPixels, 1);
+      std::deque<CourseMaterial> materials;  // each pixel its own material; the batch keeps pointers until it shades
       cpu::PhongBatch batch(frame, maps, batched.data());
       for (int i = 0; i < kPixels; ++i) {
         const glm::vec3 P{coordinate(random), coordinate(random) * 0.3f, coordinate(random)};
@@ -132,8 +134,12 @@ TEST_CASE("Phong batch: four lanes at a time give the bits of illuminate, shade 
         material.emissive = glm::vec3(0.05f * unit(random));
         material.ka = unit(random), material.kd = unit(random), material.ks = unit(random);
         material.shininess = 1.0f + 200.0f * unit(random);
-        batch.add(static_cast<std::size_t>(i), P, N, baseColor, material);
-        scalar.at(i, 0) = cpu::srgbTable().pixel(cpu::shade(cpu::illuminate(frame, maps, material, P, N, cpu::viewVector(frame, P)), baseColor));
+        const bool back = i % 5 == 0;
+        const glm::vec3 interpolated = N * (0.5f + unit(random));  // not unit length, as interpolated normals are
+        materials.push_back(material);
+        batch.add(static_cast<std::size_t>(i), P, interpolated, back, baseColor, materials.back());
+        const glm::vec3 lit = back ? -glm::normalize(interpolated) : glm::normalize(interpolated);
+        scalar.at(i, 0) = cpu::srgbTable().pixel(cpu::shade(cpu::illuminate(frame, maps, material, P, lit, cpu::viewVector(frame, P)), baseColor));
       }
       batch.flush();
       CAPTURE(static_cast<int>(model));
