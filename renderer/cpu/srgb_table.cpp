@@ -31,12 +31,14 @@ SrgbTable::SrgbTable() {
     threshold_[k] = std::bit_cast<float>(hi);
   }
   threshold_[256] = std::numeric_limits<float>::infinity();
-  if (!(threshold_[1] >= 0x1p-16f)) throw std::logic_error("sRGB table: level 1 below 2^-16");
+  // The level of c is the largest k with threshold_[k] <= c (levels never
+  // decrease with c), so the buckets follow from the thresholds, in one walk.
+  unsigned level = 0;
   for (std::uint32_t b = 0; b < kBuckets; ++b) {
-    const std::uint32_t first = (kFirstBucket + b) << kBucketShift;
-    const std::uint32_t last = std::min(first + ((1u << kBucketShift) - 1), std::bit_cast<std::uint32_t>(1.0f));
-    const unsigned level = levelOf(std::bit_cast<float>(first));
-    if (levelOf(std::bit_cast<float>(last)) > level + 1) throw std::logic_error("sRGB table: two thresholds in one bucket");
+    const float first = std::bit_cast<float>(b << kBucketShift);
+    const float last = std::bit_cast<float>(std::min((b << kBucketShift) + ((1u << kBucketShift) - 1), one));
+    while (threshold_[level + 1] <= first) ++level;
+    if (level + 2 <= 256 && threshold_[level + 2] <= last) throw std::logic_error("sRGB table: two thresholds in one bucket");
     start_[b] = static_cast<std::uint8_t>(level);
   }
 }

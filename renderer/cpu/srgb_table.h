@@ -28,8 +28,7 @@ class SrgbTable {
   std::uint8_t encode(float linear) const {
     const float c = linear > 0.0f ? (linear < 1.0f ? linear : 1.0f) : 0.0f;  // as encodeSrgb: NaN -> 0
     const std::uint32_t bucket = std::bit_cast<std::uint32_t>(c) >> kBucketShift;
-    if (bucket < kFirstBucket) return 0;  // below 2^-16: 12.92·c·255 < 0.06
-    unsigned level = start_[bucket - kFirstBucket];
+    unsigned level = start_[bucket];
     level += threshold_[level + 1] <= c ? 1u : 0u;
     return static_cast<std::uint8_t>(level);
   }
@@ -45,11 +44,7 @@ class SrgbTable {
     _mm_store_ps(clamped, c);
     _mm_store_si128(reinterpret_cast<__m128i*>(bucket), _mm_srli_epi32(_mm_castps_si128(c), kBucketShift));
     for (int k = 0; k < 4; ++k) {
-      if (bucket[k] < kFirstBucket) {
-        out[k] = 0;
-        continue;
-      }
-      unsigned level = start_[bucket[k] - kFirstBucket];
+      unsigned level = start_[bucket[k]];
       level += threshold_[level + 1] <= clamped[k] ? 1u : 0u;
       out[k] = static_cast<std::uint8_t>(level);
     }
@@ -60,11 +55,10 @@ class SrgbTable {
 
  private:
   static constexpr int kBucketShift = 15;  // keeps the sign, the exponent and 8 mantissa bits
-  static constexpr std::uint32_t kFirstBucket = std::bit_cast<std::uint32_t>(0x1p-16f) >> kBucketShift;
-  static constexpr std::uint32_t kBuckets = (std::bit_cast<std::uint32_t>(1.0f) >> kBucketShift) - kFirstBucket + 1;
+  static constexpr std::uint32_t kBuckets = (std::bit_cast<std::uint32_t>(1.0f) >> kBucketShift) + 1;  // every c in [0, 1]
 
   float threshold_[257];            // [k]: smallest c in [0,1] with level ≥ k; [0] = -inf, [256] = +inf
-  std::uint8_t start_[kBuckets];    // level of the smallest float of each bucket
+  std::uint8_t start_[kBuckets];    // level of the smallest float of each bucket (32 KB)
 };
 
 // The table, built on first use (thread-safe).
