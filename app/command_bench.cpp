@@ -244,7 +244,11 @@ std::string selfPath() {
 
 struct BenchOptions {
   std::vector<std::string> scenes;
+#if FACET_HAVE_GL
   std::vector<std::string> backends{"cpu", "gl"};
+#else
+  std::vector<std::string> backends{"cpu"};  // a build without OpenGL measures the CPU alone
+#endif
   int frames = 9;
   int warmup = 2;
   int threads = 2;
