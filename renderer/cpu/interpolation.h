@@ -40,6 +40,17 @@ class Interpolation {
   // same products and sums per varying, so the same bits).
   void varyings(int count, float* out) const;
 
+#if defined(__SSE2__)
+  // at()'s perspective weights for the four pixels (px .. px+3, py), one per
+  // lane, by the same operations; and varying(k) for them.
+  void weights4(int px, int py, __m128 (&perspective)[3]) const;
+  __m128 varying4(int k, const __m128 (&perspective)[3]) const {
+    const auto i = static_cast<std::size_t>(k);
+    return _mm_add_ps(_mm_add_ps(_mm_mul_ps(perspective[0], _mm_set1_ps(varyings_[0][i])), _mm_mul_ps(perspective[1], _mm_set1_ps(varyings_[1][i]))),
+                      _mm_mul_ps(perspective[2], _mm_set1_ps(varyings_[2][i])));
+  }
+#endif
+
   // Perspective-correct value of varying k at the current pixel.
   float varying(int k) const {
     const auto i = static_cast<std::size_t>(k);
@@ -72,6 +83,22 @@ inline float Interpolation::at(int px, int py) {
   perspective_ = {w0 * inverse, w1 * inverse, w2 * inverse};
   return z0_ + (lambda[1] * dz1_ + lambda[2] * dz2_);
 }
+
+#if defined(__SSE2__)
+inline void Interpolation::weights4(int px, int py, __m128 (&perspective)[3]) const {
+  const __m128 x = _mm_sub_ps(_mm_add_ps(_mm_cvtepi32_ps(_mm_setr_epi32(px, px + 1, px + 2, px + 3)), _mm_set1_ps(0.5f)), _mm_set1_ps(x0_));
+  const float y = static_cast<float>(py) + 0.5f - y0_;
+  __m128 w[3];
+  for (int i = 0; i < 3; ++i) {
+    const __m128 lambda = _mm_add_ps(_mm_add_ps(_mm_set1_ps(base_[i]), _mm_mul_ps(_mm_set1_ps(dx_[i]), x)), _mm_set1_ps(dy_[i] * y));
+    w[i] = _mm_mul_ps(lambda, _mm_set1_ps(invW_[i]));
+  }
+  const __m128 sum = _mm_add_ps(_mm_add_ps(w[0], w[1]), w[2]);
+  // sum != 0 ? 1/sum : 0
+  const __m128 inverse = _mm_andnot_ps(_mm_cmpeq_ps(sum, _mm_setzero_ps()), _mm_div_ps(_mm_set1_ps(1.0f), sum));
+  for (int i = 0; i < 3; ++i) perspective[i] = _mm_mul_ps(w[i], inverse);
+}
+#endif
 
 inline void Interpolation::varyings(int count, float* out) const {
   int k = 0;

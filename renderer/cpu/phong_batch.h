@@ -16,11 +16,15 @@
 #include "cpu/srgb_table.h"
 #include "image/image.h"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace facet::cpu {
 
 class PhongBatch {
  public:
-  static constexpr int kLanes = 4;
+  static constexpr int kLanes = 4;  // add4 and flush assume four
 
   PhongBatch(const FrameInputs& frame, const ShadowMaps& maps, Rgba8* pixels)
       : frame_(frame), maps_(maps), srgb_(srgbTable()), pixels_(pixels) {}
@@ -40,6 +44,27 @@ class PhongBatch {
     material_[k] = &material;
     if (count_ == kLanes) flush();
   }
+
+#if defined(__SSE2__)
+  // add() for the four pixels pixels[offset .. offset+3] of one triangle, as lanes.
+  void add4(std::size_t offset, const __m128 (&P)[3], const __m128 (&interpolatedNormal)[3], bool back, glm::vec3 baseColor,
+            const CourseMaterial& material) {
+    if (count_ != 0) {
+      alignas(16) float p[3][4], n[3][4];
+      for (int c = 0; c < 3; ++c) _mm_store_ps(p[c], P[c]), _mm_store_ps(n[c], interpolatedNormal[c]);
+      for (int k = 0; k < 4; ++k) add(offset + static_cast<std::size_t>(k), {p[0][k], p[1][k], p[2][k]}, {n[0][k], n[1][k], n[2][k]}, back, baseColor, material);
+      return;
+    }
+    for (int k = 0; k < 4; ++k) offset_[k] = offset + static_cast<std::size_t>(k), material_[k] = &material, back_[k] = back ? -0.0f : 0.0f;
+    for (int c = 0; c < 3; ++c) {
+      _mm_store_ps(P_[c], P[c]);
+      _mm_store_ps(N_[c], interpolatedNormal[c]);
+      _mm_store_ps(O_[c], _mm_set1_ps(baseColor[c]));
+    }
+    count_ = 4;
+    flush();
+  }
+#endif
 
   // Shades what is queued.
   void flush();
