@@ -8,9 +8,14 @@
 namespace facet::cpu {
 namespace {
 
-// setupTriangle's snapping, area, orientation and bounding box, on packed
-// vertices; false when it would return false.
-bool snap(const float* a, const float* b, const float* c, int width, int height, BinnedTriangle& t, bool& frontFacing, int (&box)[4]) {
+void pack(const WindowVertex& w, int varyingCount, std::vector<float>& out) {
+  out.insert(out.end(), {w.x, w.y, w.z, w.invW});
+  out.insert(out.end(), w.varyings.begin(), w.varyings.begin() + varyingCount);
+}
+
+}  // namespace
+
+bool snapTriangle(const float* a, const float* b, const float* c, int width, int height, BinnedTriangle& t, bool& frontFacing, int (&box)[4]) {
   constexpr float kLimit = 1 << 22;
   for (const float* v : {a, b, c})
     if (!(std::fabs(v[0]) < kLimit && std::fabs(v[1]) < kLimit)) return false;
@@ -35,13 +40,6 @@ bool snap(const float* a, const float* b, const float* c, int width, int height,
   box[3] = static_cast<int>(std::min<std::int64_t>(height - 1, maxY >> 8));
   return box[0] <= box[2] && box[1] <= box[3];
 }
-
-void pack(const WindowVertex& w, int varyingCount, std::vector<float>& out) {
-  out.insert(out.end(), {w.x, w.y, w.z, w.invW});
-  out.insert(out.end(), w.varyings.begin(), w.varyings.begin() + varyingCount);
-}
-
-}  // namespace
 
 void binTriangles(const Scene& scene, const FrameInputs& frame, const PassVertices& vertices, const TileGrid& grid, bool cullBackFaces,
                   std::size_t begin, std::size_t end, WorkerBins& bins, const FlatIllumination* flat) {
@@ -99,7 +97,7 @@ void binTriangles(const Scene& scene, const FrameInputs& frame, const PassVertic
       BinnedTriangle tri;
       bool front = true;
       int box[4];
-      if (!snap(bins.vertex(vertices, fan[k]), bins.vertex(vertices, fan[k + 1]), bins.vertex(vertices, fan[k + 2]), grid.width, grid.height,
+      if (!snapTriangle(bins.vertex(vertices, fan[k]), bins.vertex(vertices, fan[k + 1]), bins.vertex(vertices, fan[k + 2]), grid.width, grid.height,
                 tri, front, box))
         continue;
       if (cullBackFaces && !front) continue;  // signed area ≤ 0 is dropped

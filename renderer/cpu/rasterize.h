@@ -1,5 +1,7 @@
 #pragma once
-// Walks the pixels a set-up triangle covers within rows [rowBegin, rowEnd),
+// The plain per-pixel walk over a set-up triangle's bounding box, rows [rowBegin, rowEnd):
+// the reference that tests/cpu/test_coverage.cpp holds the renderer's tiled,
+// block-first coverage (tile_raster.h) against. Walks the pixels it covers,
 // calling fragment(px, py) for each, in row order. A template, so the
 // fragment stage inlines into the loop with no virtual call per pixel.
 #include <algorithm>
