@@ -183,9 +183,18 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
   });
 
   // Tiles: visibility (z-buffer, triangle order), then shading of what is visible.
+  // Which worker takes which tile changes from frame to frame; every worker
+  // sizes its tile scratch for the fullest tile, so none grows later.
+  std::size_t fullestTile = 0;
+  for (int tile = 0; tile < grid.count(); ++tile) {
+    std::size_t n = 0;
+    for (int w = 0; w < pool.size(); ++w) n += buffers.workers[static_cast<std::size_t>(w)].tiles[static_cast<std::size_t>(tile)].size();
+    fullestTile = std::max(fullestTile, n);
+  }
   std::atomic<int> next{0};
   pool.run([&](int worker) {
     WorkerBins::TileScratch* scratch = &buffers.workers[static_cast<std::size_t>(worker)].tile;
+    scratch->triangles.reserve(fullestTile);
     for (int tile = next++; tile < grid.count(); tile = next++) {
       const int tx0 = (tile % grid.columns) * kTileSize, ty0 = (tile / grid.columns) * kTileSize;
       const int tx1 = std::min(tx0 + kTileSize, frame.width) - 1, ty1 = std::min(ty0 + kTileSize, frame.height) - 1;
