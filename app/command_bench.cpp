@@ -71,21 +71,6 @@ struct BenchScene {
 constexpr int kSphere100k = 159;  // 4·159·158 = 100 488 triangles
 constexpr int kSphere1M = 500;    // 4·500·499 = 998 000 triangles
 
-int addMaterial(Scene& scene, glm::vec3 color, float roughness) {
-  Material m;
-  m.baseColor = glm::vec4(color, 1.0f);
-  m.metallic = 0.0f;
-  m.roughness = roughness;
-  scene.materials.push_back(m);
-  return static_cast<int>(scene.materials.size() - 1);
-}
-
-void addObject(Scene& scene, Mesh mesh, int material, const glm::mat4& worldFromModel) {
-  mesh.material = material;
-  scene.meshes.push_back(std::move(mesh));
-  scene.instances.push_back({static_cast<int>(scene.meshes.size() - 1), worldFromModel});
-}
-
 RenderSettings manualSettings(int width, int height) {
   RenderSettings s;
   s.width = width;
@@ -102,8 +87,8 @@ RenderSettings manualSettings(int width, int height) {
 BenchScene sphereScene(const std::string& name, int level, bool shadows, int width, int height) {
   BenchScene b{name, {}, manualSettings(width, height)};
   b.scene.source = name;
-  addObject(b.scene, makeSphere(level), addMaterial(b.scene, {0.8f, 0.1f, 0.08f}, 0.3f), glm::mat4(1.0f));
-  addObject(b.scene, makePlane(1), addMaterial(b.scene, {0.45f, 0.45f, 0.42f}, 0.9f),
+  b.scene.addObject(makeSphere(level), b.scene.addMaterial("sphere", {0.8f, 0.1f, 0.08f}, 0.0f, 0.3f), glm::mat4(1.0f));
+  b.scene.addObject(makePlane(1), b.scene.addMaterial("ground", {0.45f, 0.45f, 0.42f}, 0.0f, 0.9f),
             translation({0.0f, -1.0f, 0.0f}) * scaling({4.0f, 1.0f, 4.0f}));
   b.settings.camera.eye = {0.0f, 0.6f, 3.2f};
   b.settings.camera.reference = {0.0f, -0.1f, 0.0f};
@@ -132,7 +117,7 @@ BenchScene fillScene(int width, int height) {
     const float z = -9.0f + static_cast<float>(i);  // farthest first
     const float t = static_cast<float>(i) / 9.0f;
     // makePlane lies in y = 0 facing +y; Rx(90°) turns it to face +z, the camera.
-    addObject(b.scene, makePlane(1), addMaterial(b.scene, {0.2f + 0.6f * t, 0.5f, 0.8f - 0.6f * t}, 0.5f),
+    b.scene.addObject(makePlane(1), b.scene.addMaterial("layer " + std::to_string(i), {0.2f + 0.6f * t, 0.5f, 0.8f - 0.6f * t}, 0.0f, 0.5f),
               translation({0.0f, 0.0f, z}) * rotationX(0.5f * std::numbers::pi_v<float>) * scaling({40.0f, 1.0f, 40.0f}));
   }
   b.settings.camera.eye = {0.0f, 0.0f, 2.0f};

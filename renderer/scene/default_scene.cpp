@@ -7,43 +7,24 @@
 #include "scene/primitives.h"
 
 namespace facet {
-namespace {
-
-int addMaterial(Scene& scene, const char* name, glm::vec3 color, float metallic, float roughness) {
-  Material m;
-  m.name = name;
-  m.baseColor = glm::vec4(color, 1.0f);
-  m.metallic = metallic;
-  m.roughness = roughness;
-  scene.materials.push_back(m);
-  return static_cast<int>(scene.materials.size() - 1);
-}
-
-void addObject(Scene& scene, Mesh mesh, int material, const glm::mat4& worldFromModel) {
-  mesh.material = material;
-  scene.meshes.push_back(std::move(mesh));
-  scene.instances.push_back({static_cast<int>(scene.meshes.size() - 1), worldFromModel});
-}
-
-}  // namespace
 
 Scene makeDefaultScene() {
   constexpr float kDeg = std::numbers::pi_v<float> / 180.0f;
   Scene scene;
   scene.source = "default scene";
 
-  const int ground = addMaterial(scene, "ground", {0.45f, 0.45f, 0.42f}, 0.0f, 0.9f);
-  const int redPlastic = addMaterial(scene, "red plastic", {0.80f, 0.08f, 0.06f}, 0.0f, 0.3f);
-  const int bluePaint = addMaterial(scene, "blue paint", {0.10f, 0.22f, 0.75f}, 0.0f, 0.6f);
-  const int greenRubber = addMaterial(scene, "green rubber", {0.12f, 0.55f, 0.18f}, 0.0f, 0.85f);
-  const int gold = addMaterial(scene, "gold", {1.00f, 0.71f, 0.29f}, 1.0f, 0.35f);
+  const int ground = scene.addMaterial("ground", {0.45f, 0.45f, 0.42f}, 0.0f, 0.9f);
+  const int redPlastic = scene.addMaterial("red plastic", {0.80f, 0.08f, 0.06f}, 0.0f, 0.3f);
+  const int bluePaint = scene.addMaterial("blue paint", {0.10f, 0.22f, 0.75f}, 0.0f, 0.6f);
+  const int greenRubber = scene.addMaterial("green rubber", {0.12f, 0.55f, 0.18f}, 0.0f, 0.85f);
+  const int gold = scene.addMaterial("gold", {1.00f, 0.71f, 0.29f}, 1.0f, 0.35f);
 
   // Model matrices are built as T·R·S, the order glTF uses.
-  addObject(scene, makePlane(32), ground, scaling({5.0f, 1.0f, 5.0f}));
-  addObject(scene, makeSphere(32), redPlastic, translation({-1.6f, 0.8f, 0.4f}) * scaling(glm::vec3(0.8f)));
-  addObject(scene, makeCube(), bluePaint, translation({1.4f, 0.6f, -0.6f}) * rotationY(30.0f * kDeg) * scaling(glm::vec3(0.6f)));
-  addObject(scene, makeCylinder(48), greenRubber, translation({-0.3f, 0.75f, -1.7f}) * scaling({0.45f, 0.75f, 0.45f}));
-  addObject(scene, makeTorus(0.7f, 0.3f), gold, translation({0.6f, 0.24f, 1.5f}) * scaling(glm::vec3(0.8f)));
+  scene.addObject(makePlane(32), ground, scaling({5.0f, 1.0f, 5.0f}));
+  scene.addObject(makeSphere(32), redPlastic, translation({-1.6f, 0.8f, 0.4f}) * scaling(glm::vec3(0.8f)));
+  scene.addObject(makeCube(), bluePaint, translation({1.4f, 0.6f, -0.6f}) * rotationY(30.0f * kDeg) * scaling(glm::vec3(0.6f)));
+  scene.addObject(makeCylinder(48), greenRubber, translation({-0.3f, 0.75f, -1.7f}) * scaling({0.45f, 0.75f, 0.45f}));
+  scene.addObject(makeTorus(0.7f, 0.3f), gold, translation({0.6f, 0.24f, 1.5f}) * scaling(glm::vec3(0.8f)));
 
   Light light;
   light.kind = LightKind::Point;

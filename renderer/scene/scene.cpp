@@ -1,5 +1,7 @@
 #include "scene/scene.h"
 
+#include <utility>
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
@@ -16,6 +18,22 @@ void Bounds::include(glm::vec3 p) {
 }
 
 float Bounds::radius() const { return empty ? 0.0f : 0.5f * glm::length(max - min); }
+
+int Scene::addMaterial(std::string name, glm::vec3 color, float metallic, float roughness) {
+  Material m;
+  m.name = std::move(name);
+  m.baseColor = glm::vec4(color, 1.0f);
+  m.metallic = metallic;
+  m.roughness = roughness;
+  materials.push_back(std::move(m));
+  return static_cast<int>(materials.size() - 1);
+}
+
+void Scene::addObject(Mesh mesh, int material, const glm::mat4& worldFromModel) {
+  mesh.material = material;
+  meshes.push_back(std::move(mesh));
+  instances.push_back({static_cast<int>(meshes.size() - 1), worldFromModel});
+}
 
 std::size_t Scene::triangleCount() const {
   std::size_t count = 0;

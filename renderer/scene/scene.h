@@ -88,6 +88,12 @@ struct Scene {
 
   std::size_t triangleCount() const;  // over all instances
   Bounds worldBounds() const;         // over all instances
+
+  // For scenes built in code: an opaque material of base colour `color`
+  // (linear RGB), metallic and roughness; returns its index.
+  int addMaterial(std::string name, glm::vec3 color, float metallic, float roughness);
+  // Appends `mesh` with `material` and one instance of it placed by worldFromModel.
+  void addObject(Mesh mesh, int material, const glm::mat4& worldFromModel);
 };
 
 }  // namespace facet
