@@ -11,6 +11,7 @@
 //      its bounding box touches, in triangle order;
 //   3. tiles, one worker each: the bins of worker 0, then worker 1, ..., so
 //      each pixel sees its triangles in the order they were submitted.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -72,11 +73,30 @@ struct WorkerBins {
   }
 };
 
+struct TileRect {
+  int x0, y0, x1, y1;  // pixels, inclusive
+};
+
 struct TileGrid {
   int width = 0, height = 0;     // pixels
   int columns = 0, rows = 0;     // tiles
+
+  static TileGrid over(int width, int height) {
+    return {width, height, (width + kTileSize - 1) / kTileSize, (height + kTileSize - 1) / kTileSize};
+  }
   int count() const { return columns * rows; }
+  TileRect rect(int tile) const {
+    const int x0 = (tile % columns) * kTileSize, y0 = (tile / columns) * kTileSize;
+    return {x0, y0, std::min(x0 + kTileSize, width) - 1, std::min(y0 + kTileSize, height) - 1};
+  }
 };
+
+// Triangles binned to `tile` by all workers.
+inline std::size_t trianglesInTile(const std::vector<WorkerBins>& workers, int tile) {
+  std::size_t n = 0;
+  for (const WorkerBins& bins : workers) n += bins.tiles[static_cast<std::size_t>(tile)].size();
+  return n;
+}
 
 struct FrameBuffers {
   PassVertices vertices;

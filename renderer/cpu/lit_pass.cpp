@@ -6,7 +6,6 @@
 //            back specular 9-11, texture coordinates 12-13
 //   Flat:    texture coordinates 0-1 (illumination is per triangle)
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -31,7 +30,7 @@ struct Layout {
   int uv = 0;     // first texture coordinate
 };
 
-Layout layoutFor(ShadingMode mode) {
+constexpr Layout layoutFor(ShadingMode mode) {
   switch (mode) {
     case ShadingMode::Phong: return {8, 6};
     case ShadingMode::Gouraud: return {14, 12};
@@ -50,7 +49,7 @@ constexpr std::uint32_t kNoTriangle = std::numeric_limits<std::uint32_t>::max();
 template <ShadingMode kMode>
 void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, WorkerBins::TileScratch& scratch, int tx0, int ty0, int tx1,
                int ty1, Image& image) {
-  constexpr Layout layout = kMode == ShadingMode::Phong ? Layout{8, 6} : kMode == ShadingMode::Gouraud ? Layout{14, 12} : Layout{2, 0};
+  constexpr Layout layout = layoutFor(kMode);
   const SrgbTable& srgb = srgbTable();
   std::uint32_t current = kNoTriangle;
   Interpolation* in = nullptr;
@@ -176,7 +175,7 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
     out[1] = twoSided ? illuminate(frame, maps, material, centroid, -N, V) : Illumination{};
   };
   const FlatIllumination flat = flatLighting;  // refers to the lambda above, which outlives the pass
-  const TileGrid grid{frame.width, frame.height, (frame.width + kTileSize - 1) / kTileSize, (frame.height + kTileSize - 1) / kTileSize};
+  const TileGrid grid = TileGrid::over(frame.width, frame.height);
   forEachRange(pool, v.firstTriangle.back(), [&](std::size_t begin, std::size_t end, int w) {
     binTriangles(scene, frame, v, grid, frame.cullBackFaces, begin, end, buffers.workers[static_cast<std::size_t>(w)],
                  frame.shading == ShadingMode::Flat ? &flat : nullptr);
@@ -186,53 +185,33 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
   // Which worker takes which tile changes from frame to frame; every worker
   // sizes its tile scratch for the fullest tile, so none grows later.
   std::size_t fullestTile = 0;
-  for (int tile = 0; tile < grid.count(); ++tile) {
-    std::size_t n = 0;
-    for (int w = 0; w < pool.size(); ++w) n += buffers.workers[static_cast<std::size_t>(w)].tiles[static_cast<std::size_t>(tile)].size();
-    fullestTile = std::max(fullestTile, n);
-  }
-  std::atomic<int> next{0};
-  pool.run([&](int worker) {
-    WorkerBins::TileScratch* scratch = &buffers.workers[static_cast<std::size_t>(worker)].tile;
-    scratch->triangles.reserve(fullestTile);
-    for (int tile = next++; tile < grid.count(); tile = next++) {
-      const int tx0 = (tile % grid.columns) * kTileSize, ty0 = (tile / grid.columns) * kTileSize;
-      const int tx1 = std::min(tx0 + kTileSize, frame.width) - 1, ty1 = std::min(ty0 + kTileSize, frame.height) - 1;
-      bool any = false;
-      for (const WorkerBins& bins : buffers.workers) any |= !bins.tiles[static_cast<std::size_t>(tile)].empty();
-      if (!any) continue;
-      std::fill(std::begin(scratch->depth), std::end(scratch->depth), 1.0f);
-      std::fill(std::begin(scratch->id), std::end(scratch->id), kNoTriangle);
-      scratch->triangles.clear();  // keeps its capacity: no allocation once the sizes settle
-      for (std::size_t w = 0; w < static_cast<std::size_t>(pool.size()); ++w) {
-        const WorkerBins& bins = buffers.workers[w];
-        for (const std::uint32_t index : bins.tiles[static_cast<std::size_t>(tile)]) {
-          const BinnedTriangle& t = bins.triangles[index];
-          int minX, minY, maxX, maxY;
-          if (!boundsWithin(t, tx0, ty0, tx1, ty1, minX, minY, maxX, maxY)) continue;
-          InterpolationVertex iv[3];
-          for (int k = 0; k < 3; ++k) {
-            const float* p = bins.vertex(v, t.vertex[k]);
-            iv[k] = {p[0], p[1], p[2], p[3], p + 4};
-          }
-          // Set up once: the z-buffer reads its depth, shading its weights if it wins a pixel.
-          const auto id = static_cast<std::uint32_t>(scratch->triangles.size());
-          scratch->triangles.push_back({Interpolation(iv[0], iv[1], iv[2]), &bins, index});
-          const Interpolation& interpolation = scratch->triangles.back().interpolation;
-          rasterizeBlocks(t, minX, minY, maxX, maxY, [&](int px, int py) {
-            const float z = interpolation.depthAt(px, py);
-            const int k = (py - ty0) * kTileSize + (px - tx0);
-            if (!(z < scratch->depth[k])) return;  // LESS
-            scratch->depth[k] = z;
-            scratch->id[k] = id;
-          });
-        }
-      }
-      switch (frame.shading) {
-        case ShadingMode::Phong: shadeTile<ShadingMode::Phong>(scene, frame, maps, *scratch, tx0, ty0, tx1, ty1, image); break;
-        case ShadingMode::Gouraud: shadeTile<ShadingMode::Gouraud>(scene, frame, maps, *scratch, tx0, ty0, tx1, ty1, image); break;
-        default: shadeTile<ShadingMode::Flat>(scene, frame, maps, *scratch, tx0, ty0, tx1, ty1, image); break;
-      }
+  for (int tile = 0; tile < grid.count(); ++tile) fullestTile = std::max(fullestTile, trianglesInTile(buffers.workers, tile));
+  for (WorkerBins& bins : buffers.workers) bins.tile.triangles.reserve(fullestTile);
+  forEachTile(pool, grid, [&](int worker, int tile, const TileRect& r) {
+    if (trianglesInTile(buffers.workers, tile) == 0) return;
+    WorkerBins::TileScratch& scratch = buffers.workers[static_cast<std::size_t>(worker)].tile;
+    std::fill(std::begin(scratch.depth), std::end(scratch.depth), 1.0f);
+    std::fill(std::begin(scratch.id), std::end(scratch.id), kNoTriangle);
+    scratch.triangles.clear();  // keeps its capacity: no allocation once the sizes settle
+    forEachTriangleInTile(buffers.workers, v, tile, r,
+                          [&](const WorkerBins& bins, std::uint32_t index, const BinnedTriangle& t, const InterpolationVertex (&vertices)[3],
+                              int minX, int minY, int maxX, int maxY) {
+                            // Set up once: the z-buffer reads its depth, shading its weights if it wins a pixel.
+                            const auto id = static_cast<std::uint32_t>(scratch.triangles.size());
+                            scratch.triangles.push_back({Interpolation(vertices[0], vertices[1], vertices[2]), &bins, index});
+                            const Interpolation& interpolation = scratch.triangles.back().interpolation;
+                            rasterizeBlocks(t, minX, minY, maxX, maxY, [&](int px, int py) {
+                              const float z = interpolation.depthAt(px, py);
+                              const int k = (py - r.y0) * kTileSize + (px - r.x0);
+                              if (!(z < scratch.depth[k])) return;  // LESS
+                              scratch.depth[k] = z;
+                              scratch.id[k] = id;
+                            });
+                          });
+    switch (frame.shading) {
+      case ShadingMode::Phong: shadeTile<ShadingMode::Phong>(scene, frame, maps, scratch, r.x0, r.y0, r.x1, r.y1, image); break;
+      case ShadingMode::Gouraud: shadeTile<ShadingMode::Gouraud>(scene, frame, maps, scratch, r.x0, r.y0, r.x1, r.y1, image); break;
+      default: shadeTile<ShadingMode::Flat>(scene, frame, maps, scratch, r.x0, r.y0, r.x1, r.y1, image); break;
     }
   });
 }

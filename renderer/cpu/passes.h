@@ -19,6 +19,10 @@ namespace facet::cpu {
 // Splits [0, n) into one contiguous range per worker: work(begin, end, worker).
 void forEachRange(ThreadPool& pool, std::size_t n, FunctionRef<void(std::size_t, std::size_t, int)> work);
 
+// Hands the grid's tiles to the workers, each next tile to whichever worker
+// is free: work(worker, tile, its pixel rectangle).
+void forEachTile(ThreadPool& pool, const TileGrid& grid, FunctionRef<void(int, int, const TileRect&)> work);
+
 // Once per frame: instance offsets and world positions of every vertex
 // (transformPoint(worldFromModel, p)), shared by all passes.
 void prepareFrame(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const FrameInputs& frame);

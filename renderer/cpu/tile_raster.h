@@ -7,6 +7,7 @@
 // so the covered pixels are the same; fragments come in row order per block.
 #include <algorithm>
 #include <cstdint>
+#include <vector>
 
 #include "cpu/frame_buffers.h"
 
@@ -22,6 +23,26 @@ inline bool boundsWithin(const BinnedTriangle& t, int x0, int y0, int x1, int y1
   minY = static_cast<int>(std::max<std::int64_t>(y0, (ly + 255) >> 8));
   maxY = static_cast<int>(std::min<std::int64_t>(y1, hy >> 8));
   return minX <= maxX && minY <= maxY;
+}
+
+// Calls visit(bins, index, triangle, vertices, minX, minY, maxX, maxY) for
+// each triangle binned to `tile` whose pixel box reaches into r, in
+// submission order (worker 0's bins first), with that box clipped to r;
+// vertices[k] views the triangle's packed window vertex k.
+template <class Visit>
+void forEachTriangleInTile(const std::vector<WorkerBins>& workers, const PassVertices& v, int tile, const TileRect& r, Visit&& visit) {
+  for (const WorkerBins& bins : workers)
+    for (const std::uint32_t index : bins.tiles[static_cast<std::size_t>(tile)]) {
+      const BinnedTriangle& t = bins.triangles[index];
+      int minX, minY, maxX, maxY;
+      if (!boundsWithin(t, r.x0, r.y0, r.x1, r.y1, minX, minY, maxX, maxY)) continue;
+      InterpolationVertex vertices[3];
+      for (int k = 0; k < 3; ++k) {
+        const float* p = bins.vertex(v, t.vertex[k]);
+        vertices[k] = {p[0], p[1], p[2], p[3], p + 4};
+      }
+      visit(bins, index, t, vertices, minX, minY, maxX, maxY);
+    }
 }
 
 template <class Fragment>

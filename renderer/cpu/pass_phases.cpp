@@ -1,0 +1,55 @@
+// The phases of a pass on the renderer's threads (frame_buffers.h): ranges
+// of vertices or triangles split evenly, tiles handed out as workers free up.
+#include <atomic>
+
+#include "cpu/passes.h"
+#include "cpu/vertex_math.h"
+
+namespace facet::cpu {
+
+void forEachRange(ThreadPool& pool, std::size_t n, FunctionRef<void(std::size_t, std::size_t, int)> work) {
+  const auto workers = static_cast<std::size_t>(pool.size());
+  pool.run([&](int w) {
+    const auto i = static_cast<std::size_t>(w);
+    const std::size_t begin = n * i / workers, end = n * (i + 1) / workers;
+    work(begin, end, w);  // an empty range too: phase 2 clears the worker's bins
+  });
+}
+
+void prepareFrame(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const FrameInputs& frame) {
+  PassVertices& v = buffers.vertices;
+  v.firstVertex.clear();
+  v.firstTriangle.clear();
+  std::size_t vertices = 0, triangles = 0;
+  for (const FrameInstance& instance : frame.instances) {
+    const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
+    v.firstVertex.push_back(vertices);
+    v.firstTriangle.push_back(triangles);
+    vertices += mesh.positions.size();
+    triangles += mesh.indices.size() / 3;
+  }
+  v.firstVertex.push_back(vertices);
+  v.firstTriangle.push_back(triangles);
+  v.world.resize(vertices);
+  v.clip.resize(vertices);
+  v.flags.resize(vertices);
+  if (buffers.workers.size() < static_cast<std::size_t>(pool.size())) buffers.workers.resize(static_cast<std::size_t>(pool.size()));
+  forEachRange(pool, frame.instances.size() == 0 ? 0 : vertices, [&](std::size_t begin, std::size_t end, int) {
+    std::size_t instance = 0;
+    for (std::size_t g = begin; g < end; ++g) {
+      while (g >= v.firstVertex[instance + 1]) ++instance;
+      const FrameInstance& in = frame.instances[instance];
+      const Mesh& mesh = scene.meshes[static_cast<std::size_t>(in.mesh)];
+      v.world[g] = glm::vec3(transformPoint(in.worldFromModel, mesh.positions[g - v.firstVertex[instance]]));
+    }
+  });
+}
+
+void forEachTile(ThreadPool& pool, const TileGrid& grid, FunctionRef<void(int, int, const TileRect&)> work) {
+  std::atomic<int> next{0};
+  pool.run([&](int worker) {
+    for (int tile = next++; tile < grid.count(); tile = next++) work(worker, tile, grid.rect(tile));
+  });
+}
+
+}  // namespace facet::cpu
