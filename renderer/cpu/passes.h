@@ -5,9 +5,9 @@
 // threads; each pixel is written by one thread, in triangle order, so
 // results do not depend on the thread count.
 #include <cstddef>
-#include "cpu/function_ref.h"
 
 #include "cpu/frame_buffers.h"
+#include "cpu/function_ref.h"
 #include "cpu/shadow_maps.h"
 #include "cpu/thread_pool.h"
 #include "image/image.h"

@@ -33,13 +33,13 @@ SrgbTable::SrgbTable() {
   threshold_[256] = std::numeric_limits<float>::infinity();
   // The level of c is the largest k with threshold_[k] <= c (levels never
   // decrease with c), so the buckets follow from the thresholds, in one walk.
-  unsigned level = 0;
+  unsigned start = 0;
   for (std::uint32_t b = 0; b < kBuckets; ++b) {
     const float first = std::bit_cast<float>(b << kBucketShift);
     const float last = std::bit_cast<float>(std::min((b << kBucketShift) + ((1u << kBucketShift) - 1), one));
-    while (threshold_[level + 1] <= first) ++level;
-    if (level + 2 <= 256 && threshold_[level + 2] <= last) throw std::logic_error("sRGB table: two thresholds in one bucket");
-    start_[b] = static_cast<std::uint8_t>(level);
+    while (threshold_[start + 1] <= first) ++start;
+    if (start + 2 <= 256 && threshold_[start + 2] <= last) throw std::logic_error("sRGB table: two thresholds in one bucket");
+    start_[b] = static_cast<std::uint8_t>(start);
   }
 }
 

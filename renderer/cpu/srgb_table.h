@@ -27,10 +27,7 @@ class SrgbTable {
   // quantize(encodeSrgb(vec3(linear)).r), exactly.
   std::uint8_t encode(float linear) const {
     const float c = linear > 0.0f ? (linear < 1.0f ? linear : 1.0f) : 0.0f;  // as encodeSrgb: NaN -> 0
-    const std::uint32_t bucket = std::bit_cast<std::uint32_t>(c) >> kBucketShift;
-    unsigned level = start_[bucket];
-    level += threshold_[level + 1] <= c ? 1u : 0u;
-    return static_cast<std::uint8_t>(level);
+    return level(c, std::bit_cast<std::uint32_t>(c) >> kBucketShift);
   }
   Rgba8 pixel(glm::vec3 linear) const { return {encode(linear.r), encode(linear.g), encode(linear.b), 255}; }
   // encode() of four values; the clamp and the bucket index four at a time where SSE2 is there.
@@ -43,11 +40,7 @@ class SrgbTable {
     alignas(16) std::uint32_t bucket[4];
     _mm_store_ps(clamped, c);
     _mm_store_si128(reinterpret_cast<__m128i*>(bucket), _mm_srli_epi32(_mm_castps_si128(c), kBucketShift));
-    for (int k = 0; k < 4; ++k) {
-      unsigned level = start_[bucket[k]];
-      level += threshold_[level + 1] <= clamped[k] ? 1u : 0u;
-      out[k] = static_cast<std::uint8_t>(level);
-    }
+    for (int k = 0; k < 4; ++k) out[k] = level(clamped[k], bucket[k]);
 #else
     for (int k = 0; k < 4; ++k) out[k] = encode(linear[k]);
 #endif
@@ -56,6 +49,12 @@ class SrgbTable {
  private:
   static constexpr int kBucketShift = 15;  // keeps the sign, the exponent and 8 mantissa bits
   static constexpr std::uint32_t kBuckets = (std::bit_cast<std::uint32_t>(1.0f) >> kBucketShift) + 1;  // every c in [0, 1]
+
+  // The level of clamped c in `bucket` (its bits >> kBucketShift): the bucket's start, plus one past its threshold.
+  std::uint8_t level(float c, std::uint32_t bucket) const {
+    const unsigned start = start_[bucket];
+    return static_cast<std::uint8_t>(start + (threshold_[start + 1] <= c ? 1u : 0u));
+  }
 
   float threshold_[257];            // [k]: smallest c in [0,1] with level ≥ k; [0] = -inf, [256] = +inf
   std::uint8_t start_[kBuckets];    // level of the smallest float of each bucket (32 KB)
