@@ -22,12 +22,12 @@ void parseSize(const std::string& text, int& width, int& height) {
   const auto x = text.find('x');
   const auto parse = [&](const std::string& part) {
     if (part.empty() || part.size() > 5 || part.find_first_not_of("0123456789") != std::string::npos)
-      throw Error("--size '" + text + "': expected WxH with whole numbers, e.g. 800x600");
+      throw UsageError("--size '" + text + "': expected WxH with whole numbers, e.g. 800x600");
     const int v = std::stoi(part);
-    if (v < 1 || v > 16384) throw Error("--size '" + text + "': each side must be in [1, 16384]");
+    if (v < 1 || v > 16384) throw UsageError("--size '" + text + "': each side must be in [1, 16384]");
     return v;
   };
-  if (x == std::string::npos) throw Error("--size '" + text + "': expected WxH, e.g. 800x600");
+  if (x == std::string::npos) throw UsageError("--size '" + text + "': expected WxH, e.g. 800x600");
   width = parse(text.substr(0, x));
   height = parse(text.substr(x + 1));
 }
@@ -41,7 +41,13 @@ RenderSettings settingsFor(const CommonOptions& options, const Scene& scene) {
     const bool lightKey = key == "lights" || key.rfind("lights.", 0) == 0;
     if (cameraKey && settings.camera.source == Source::Auto) settings = materialize(scene, settings, true, false);
     if (lightKey && settings.lightSource == Source::Auto) settings = materialize(scene, settings, false, true);
-    applySetting(settings, assignment);
+    try {
+      applySetting(settings, assignment);
+    } catch (const UsageError&) {
+      throw;
+    } catch (const Error& e) {
+      throw UsageError(e.what());
+    }
   }
   if (!options.size.empty()) parseSize(options.size, settings.width, settings.height);  // --size wins over --set width
   return settings;

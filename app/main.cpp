@@ -39,6 +39,9 @@ int main(int argc, char** argv) {
   try {
     for (auto& [subcommand, run] : commands)
       if (subcommand->parsed()) return run();
+  } catch (const facet::UsageError& e) {
+    std::fprintf(stderr, "facet: %s\n", e.what());
+    return 64;
   } catch (const facet::Error& e) {
     std::fprintf(stderr, "facet: %s\n", e.what());
     return 1;

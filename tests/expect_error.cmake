@@ -1,21 +1,33 @@
 # The contract for bad input, checked for any command: run COMMAND (its
 # words joined by '|'), with `cmake -E env ENV` when ENV is given (words
-# joined by '|', e.g. K=V or --unset=K), and require a non-zero exit, exactly
-# one line on stderr, that line matching PATTERN, and, when OUTPUT is given,
-# no file left at OUTPUT.
+# joined by '|', e.g. K=V or --unset=K), and require
+#  - the exit code EXIT (default 1; 64 for a command line that does not
+#    parse). A signal (crash, abort) is never a pass: execute_process then
+#    reports a text such as "Segmentation fault" instead of a number;
+#  - exactly one line on stderr, matching PATTERN;
+#  - when OUTPUT is given, no file left at OUTPUT (it is removed first).
 string(REPLACE "|" ";" command "${COMMAND}")
 if(ENV)
   string(REPLACE "|" ";" env "${ENV}")
   set(command ${CMAKE_COMMAND} -E env ${env} ${command})
 endif()
+if(NOT DEFINED EXIT)
+  set(EXIT 1)
+endif()
 if(OUTPUT)
   file(REMOVE "${OUTPUT}")
 endif()
 execute_process(COMMAND ${command} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(rc EQUAL 0)
-  message(FATAL_ERROR "expected a non-zero exit, got 0\nstdout: ${out}\nstderr: ${err}")
+if(NOT rc MATCHES "^[0-9]+$")
+  message(FATAL_ERROR "the command did not exit, it ended with: ${rc}\nstdout: ${out}\nstderr: ${err}")
+endif()
+if(NOT rc EQUAL EXIT)
+  message(FATAL_ERROR "expected exit code ${EXIT}, got ${rc}\nstdout: ${out}\nstderr: ${err}")
 endif()
 string(STRIP "${err}" err_stripped)
+if(err_stripped STREQUAL "")
+  message(FATAL_ERROR "expected one line on stderr, got none\nstdout: ${out}")
+endif()
 string(FIND "${err_stripped}" "\n" newline)
 if(NOT newline EQUAL -1)
   message(FATAL_ERROR "expected one line on stderr, got:\n${err}")

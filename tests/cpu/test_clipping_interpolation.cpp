@@ -65,7 +65,7 @@ TEST_CASE("clipped vertices lie on the clip planes, with attributes interpolated
   CHECK(found);
 }
 
-TEST_CASE("all three vertices outside one plane: nothing; NaN: nothing") {
+TEST_CASE("all three vertices outside one plane or NaN: nothing") {
   ClipVertex a, b, c;
   a.clip = {2, 0, 0.5f, 1};
   b.clip = {3, 1, 0.5f, 1};

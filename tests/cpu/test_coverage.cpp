@@ -125,7 +125,7 @@ TEST_CASE("sub-pixel shifts: 1/256 moves an edge across a centre, 1/512 does not
   CHECK(square(3.0f / 512) == block(3, 10, 3, 10));
 }
 
-TEST_CASE("zero-area and sub-grid slivers cover nothing; front-facing is counter-clockwise") {
+TEST_CASE("zero-area and sub-grid slivers cover nothing and front-facing is counter-clockwise") {
   CHECK(cover(at(1.5f, 1.5f), at(5.5f, 5.5f), at(9.5f, 9.5f)).empty());
   CHECK(cover(at(1.5f, 1.5f), at(9.5f, 1.5f), at(5.5f, 1.5f + 1.0f / 1024)).empty());  // snaps to zero area
   bool front = false;

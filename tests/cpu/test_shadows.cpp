@@ -79,7 +79,7 @@ TEST_CASE("a ground point behind the occluder is in shadow, one in front of it i
   }
 }
 
-TEST_CASE("zero bias shows shadow acne on the lit ground; the contract's bias does not") {
+TEST_CASE("zero bias shows shadow acne on the lit ground and the contract's bias does not") {
   const auto darkLitGroundPixels = [](float slope, float minimum) {
     RenderSettings s = shadowSettings(LightKind::Spot);
     s.shadows.biasSlope = slope;

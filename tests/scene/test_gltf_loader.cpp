@@ -95,7 +95,7 @@ TEST_CASE("broken files: repaired with warnings or refused with one line naming 
   }
 }
 
-TEST_CASE("an empty path is the default scene; builtin: names a primitive") {
+TEST_CASE("an empty path is the default scene and builtin: names a primitive") {
   CHECK(loadScene("").source == "default scene");
   CHECK(loadScene("builtin:default").source == "default scene");
   for (const char* name : {"builtin:sphere", "builtin:cube", "builtin:plane", "builtin:cylinder", "builtin:torus"}) {
