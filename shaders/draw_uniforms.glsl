@@ -1,7 +1,7 @@
 // The uniforms of one draw of the lit pass (one mesh instance), set by
 // renderer/gl/frame_renderer.cpp from FrameInputs::instances and ::materials,
 // and the two textures the lit pass reads (with texelFetch only).
-// Needs frame_block.glsl and texture.glsl before it.
+// Needs frame_block.glsl, srgb.glsl and texture.glsl before it.
 
 uniform mat4 clipFromModel;        // PM·EM·TM
 uniform mat4 worldFromModel;       // TM
@@ -16,7 +16,8 @@ layout(binding = 1) uniform usampler2D baseColorTexture; // sRGB-encoded bytes (
 // FACET_TEXTURED: the draw's material has one and its mesh has TEXCOORD_0.
 vec3 baseColorAt(vec2 st) {
 #if FACET_TEXTURED
-  return baseColorFactor * sampleBaseColor(baseColorTexture, st);
+  precise vec3 r = baseColorFactor * sampleBaseColor(baseColorTexture, st);
+  return r;
 #else
   return baseColorFactor;
 #endif

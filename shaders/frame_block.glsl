@@ -1,26 +1,28 @@
 // The per-frame uniform block. Its C++ mirror, byte for byte in std140, is
 // renderer/gl/frame_block.h (static_asserted, and checked against the
-// driver's offsets in tests/gl). Filled from FrameInputs only.
+// driver's offsets in tests/gl). Filled from FrameInputs only. What the
+// program is specialized on (light count and kinds, which lights have maps,
+// the specular model, the PCF radius: renderer/gl/shader_variant.cpp) is not
+// in the block: each setting reaches the shaders once.
 const int kMaxLights = 8;
 const int kLightPoint = 0;
 const int kLightDirectional = 1;
 const int kLightSpot = 2;
 
 struct LightData {
-  vec4 positionKind;        // xyz: world position; w: kind (kLight*)
+  vec4 position;            // xyz: world position (point, spot)
   vec4 directionCosCutoff;  // xyz: world direction, unit; w: cos β (spot)
   vec4 intensity;           // rgb: I_p = colour · intensity
   vec4 attenuation;         // xyz: c1, c2, c3
-  ivec4 shadow;             // x: has a shadow map; y: its first layer in shadowMaps
+  ivec4 shadow;             // x: the first layer of its faces in shadowMaps
   mat4 shadowFromWorld[6];  // per face: world -> shadow-map (u, v, z) after the divide
 };
 
 layout(std140, binding = 0) uniform Frame {
-  mat4 clipFromWorld;       // PM·EM
   vec4 eyePosition;         // xyz: P_eye; w: 1 perspective, 0 parallel
   vec4 towardEye;           // xyz: -k, V under parallel projection
-  vec4 ambientCounts;       // x: I_a; y: light count; z: shading mode (0 flat, 1 gouraud, 2 phong); w: specular (0 phong, 1 blinn-phong)
-  vec4 shadowParams;        // x: b_slope; y: b_min; z: PCF radius r; w: map size S
+  vec4 ambient;             // x: I_a
+  vec4 shadowParams;        // x: b_slope; y: b_min; z: map size S
   vec4 background;          // rgb: linear background
   LightData lights[kMaxLights];
 } frame;

@@ -1,29 +1,31 @@
 // The course's illumination equation in GLSL.
-// Mirror: renderer/cpu/lighting.cpp — the same functions, in the same order,
-// with the same names and arguments. Change one, change the other.
+// Mirror: renderer/cpu/lighting.h — the same functions, in the same order,
+// with the same names, arguments and float operations (shading_math.glsl).
+// Change one, change the other.
 //
 //   I = k_e + k_a·I_a·O_d + Σ_lights S·f_att·(k_d·I_p·max(N·L, 0)·O_d + k_s·I_p·spec)
 //
-// Needs frame_block.glsl, transform.glsl and `uniform sampler2DArray shadowMaps;`
-// (draw_uniforms.glsl) before it, and the program's specialization macros
-// (renderer/gl/shader_variant.cpp): FACET_LIGHT_COUNT, FACET_LIGHT_KIND(i),
-// FACET_LIGHT_SHADOWED(i), FACET_SPECULAR_MODEL, FACET_PCF_RADIUS. They hold
-// the values the frame block also holds; compiled in, the branches that do
+// Needs frame_block.glsl, transform.glsl, shading_math.glsl and
+// `uniform sampler2DArray shadowMaps;` (draw_uniforms.glsl) before it, and
+// the program's specialization macros (renderer/gl/shader_variant.cpp):
+// FACET_LIGHT_COUNT, FACET_LIGHT_KIND(i), FACET_LIGHT_SHADOWED(i),
+// FACET_SPECULAR_MODEL, FACET_PCF_RADIUS. Compiled in, the branches that do
 // not apply to this frame are gone (llvmpipe runs both sides of a branch).
 
-// f_att = min(1, 1/(c1 + c2·d + c3·d²))
+// f_att = min(1, 1/(c1 + c2·d + c3·d²)), as ((c1 + c2·d) + (c3·d)·d)
 float attenuation(vec3 c, float d) {
-  return min(1.0, 1.0 / (c.x + c.y * d + c.z * d * d));
+  precise float r = minOne(1.0 / ((c.x + c.y * d) + (c.z * d) * d));
+  return r;
 }
 
 // spec = max(R·V, 0)^n (Phong) or max(N·H, 0)^n (Blinn-Phong).
 float specularTerm(vec3 N, vec3 L, vec3 V, float shininess, int model) {
   if (model == 0) {
-    vec3 R = 2.0 * dot(L, N) * N - L;
-    return pow(max(dot(R, V), 0.0), shininess);
+    precise vec3 R = (2.0 * dot3(L, N)) * N - L;
+    return power(maxZero(dot3(R, V)), shininess);
   }
-  vec3 H = normalize(L + V);
-  return pow(max(dot(N, H), 0.0), shininess);
+  precise vec3 H = normalize3(L + V);
+  return power(maxZero(dot3(N, H)), shininess);
 }
 
 // Face of a point light's cube for P - P_light: largest |component|, ties to x, then y, then z.
@@ -39,27 +41,32 @@ int cubeFace(vec3 d) {
 // map or beyond its far plane counts as lit.
 float shadowFactor(int i, vec3 P, vec3 N, vec3 L) {
   if (!FACET_LIGHT_SHADOWED(i)) return 1.0;
-  int face = FACET_LIGHT_KIND(i) == kLightPoint ? cubeFace(P - frame.lights[i].positionKind.xyz) : 0;
+  int face = FACET_LIGHT_KIND(i) == kLightPoint ? cubeFace(P - frame.lights[i].position.xyz) : 0;
   precise vec4 s = transformPoint(frame.lights[i].shadowFromWorld[face], P);
   if (!(s.w > 0.0)) return 1.0;
-  vec3 uvz = s.xyz / s.w;
-  if (!(uvz.z <= 1.0) || isnan(uvz.x) || isnan(uvz.y)) return 1.0;
+  precise float u = s.x / s.w, v = s.y / s.w, z = s.z / s.w;
+  if (!(z <= 1.0) || isnan(u) || isnan(v)) return 1.0;
   // Far outside the map every texel is outside too; the clamp keeps the texel
   // index an int without changing which texels a point inside reads.
-  uvz.xy = clamp(uvz.xy, -1.0, 2.0);
-  float bias = max(frame.shadowParams.x * (1.0 - dot(N, L)), frame.shadowParams.y);
-  int size = int(frame.shadowParams.w), r = FACET_PCF_RADIUS;
-  int tx = int(floor(uvz.x * float(size)));
-  int ty = int(floor(uvz.y * float(size)));
-  int layer = frame.lights[i].shadow.y + face;
+  float uc = u < -1.0 ? -1.0 : (u > 2.0 ? 2.0 : u);
+  float vc = v < -1.0 ? -1.0 : (v > 2.0 ? 2.0 : v);
+  precise float slope = frame.shadowParams.x * (1.0 - dot3(N, L));
+  float bias = slope > frame.shadowParams.y ? slope : frame.shadowParams.y;
+  int size = int(frame.shadowParams.z), r = FACET_PCF_RADIUS;
+  precise float x = uc * float(size), y = vc * float(size);
+  int tx = int(floor(x));
+  int ty = int(floor(y));
+  int layer = frame.lights[i].shadow.x + face;
+  precise float compared = z - bias;
   int lit = 0;
   for (int dy = -r; dy <= r; ++dy)
     for (int dx = -r; dx <= r; ++dx) {
-      int x = tx + dx, y = ty + dy;
-      if (x < 0 || y < 0 || x >= size || y >= size) ++lit;
-      else if (!(uvz.z - bias > texelFetch(shadowMaps, ivec3(x, y, layer), 0).r)) ++lit;
+      int xi = tx + dx, yi = ty + dy;
+      if (xi < 0 || yi < 0 || xi >= size || yi >= size) ++lit;
+      else if (!(compared > texelFetch(shadowMaps, ivec3(xi, yi, layer), 0).r)) ++lit;
     }
-  return float(lit) / float((2 * r + 1) * (2 * r + 1));
+  precise float S = float(lit) / float((2 * r + 1) * (2 * r + 1));
+  return S;
 }
 
 // I split in the part O_d multiplies and the rest (Gouraud and flat apply a
@@ -73,38 +80,42 @@ struct Illumination {
 
 // Illumination at world point P with unit normal N and unit view vector V.
 Illumination illuminate(CourseMaterial material, vec3 P, vec3 N, vec3 V) {
-  Illumination I;
-  I.diffuse = vec3(material.ka * frame.ambientCounts.x);
-  I.specular = material.emissive;
+  precise float ambient = material.ka * frame.ambient.x;
+  precise vec3 diffuse = vec3(ambient, ambient, ambient);
+  precise vec3 specular = material.emissive;
   for (int i = 0; i < FACET_LIGHT_COUNT; ++i) {
     int kind = FACET_LIGHT_KIND(i);
-    vec3 L;
-    float fAtt = 1.0;
+    precise vec3 L;
+    precise float fAtt = 1.0;
     if (kind == kLightDirectional) {
       L = -frame.lights[i].directionCosCutoff.xyz;
     } else {
-      vec3 toLight = frame.lights[i].positionKind.xyz - P;
-      float d = length(toLight);
+      precise vec3 toLight = frame.lights[i].position.xyz - P;
+      precise float d = length3(toLight);
       L = toLight / d;
       fAtt = attenuation(frame.lights[i].attenuation.xyz, d);
     }
-    if (kind == kLightSpot && !(dot(-L, frame.lights[i].directionCosCutoff.xyz) > frame.lights[i].directionCosCutoff.w)) continue;
-    float NdotL = dot(N, L);
+    if (kind == kLightSpot && !(dot3(-L, frame.lights[i].directionCosCutoff.xyz) > frame.lights[i].directionCosCutoff.w)) continue;
+    precise float NdotL = dot3(N, L);
     if (!(NdotL > 0.0)) continue;  // no diffuse and no specular where N·L ≤ 0
     vec3 Ip = frame.lights[i].intensity.rgb;
-    float S = shadowFactor(i, P, N, L);
-    I.diffuse += S * fAtt * (material.kd * NdotL * Ip);
-    I.specular += S * fAtt * (material.ks * specularTerm(N, L, V, material.shininess, FACET_SPECULAR_MODEL) * Ip);
+    precise float S = shadowFactor(i, P, N, L);
+    precise float lightFactor = S * fAtt;
+    precise vec3 addDiffuse = lightFactor * ((material.kd * NdotL) * Ip);
+    precise vec3 addSpecular = lightFactor * ((material.ks * specularTerm(N, L, V, material.shininess, FACET_SPECULAR_MODEL)) * Ip);
+    diffuse = diffuse + addDiffuse;
+    specular = specular + addSpecular;
   }
-  return I;
+  return Illumination(diffuse, specular);
 }
 
 // I = O_d·diffuse + specular (linear, unclamped).
 vec3 shade(Illumination illumination, vec3 baseColor) {
-  return baseColor * illumination.diffuse + illumination.specular;
+  precise vec3 r = baseColor * illumination.diffuse + illumination.specular;
+  return r;
 }
 
 // V at P: toward the eye (perspective) or the constant -k (parallel).
 vec3 viewVector(vec3 P) {
-  return frame.eyePosition.w != 0.0 ? normalize(frame.eyePosition.xyz - P) : frame.towardEye.xyz;
+  return frame.eyePosition.w != 0.0 ? normalize3(frame.eyePosition.xyz - P) : frame.towardEye.xyz;
 }

@@ -3,10 +3,11 @@
 // O_d at this pixel (renderer/PIPELINE.md, section 7).
 #include "frame_block.glsl"
 #include "transform.glsl"
+#include "shading_math.glsl"
+#include "srgb.glsl"
 #include "texture.glsl"
 #include "draw_uniforms.glsl"
 #include "lighting.glsl"
-#include "srgb_encode.glsl"
 
 flat in vec3 frontDiffuse;
 flat in vec3 frontSpecular;
@@ -18,5 +19,5 @@ layout(location = 0) out vec4 color;
 
 void main() {
   Illumination I = gl_FrontFacing ? Illumination(frontDiffuse, frontSpecular) : Illumination(backDiffuse, backSpecular);
-  color = vec4(encodeSrgb(shade(I, baseColorAt(st))), 1.0);
+  color = encodeSrgb(shade(I, baseColorAt(st)));
 }

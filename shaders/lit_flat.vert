@@ -11,6 +11,8 @@
 // those of the CPU reference (renderer/PIPELINE.md, section 6).
 #include "frame_block.glsl"
 #include "transform.glsl"
+#include "shading_math.glsl"
+#include "srgb.glsl"
 #include "texture.glsl"
 #include "draw_uniforms.glsl"
 #include "lighting.glsl"
@@ -41,8 +43,8 @@ void main() {
   vec3 p0 = worldPosition(indices[first]);
   vec3 p1 = worldPosition(indices[first + 1]);
   vec3 p2 = worldPosition(indices[first + 2]);
-  vec3 N = normalize(cross(p1 - p0, p2 - p0));
-  vec3 centre = (p0 + p1 + p2) / 3.0;  // the centroid (`centroid` is a GLSL keyword)
+  vec3 N = normalize3(cross3(p1 - p0, p2 - p0));
+  precise vec3 centre = (p0 + p1 + p2) / 3.0;  // the centroid (`centroid` is a GLSL keyword)
   vec3 V = viewVector(centre);
   Illumination front = illuminate(material, centre, N, V);
   Illumination back = illuminate(material, centre, -N, V);

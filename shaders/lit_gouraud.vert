@@ -4,6 +4,8 @@
 // interpolates both and lit_gouraud.frag picks one (renderer/PIPELINE.md, section 7).
 #include "frame_block.glsl"
 #include "transform.glsl"
+#include "shading_math.glsl"
+#include "srgb.glsl"
 #include "texture.glsl"
 #include "draw_uniforms.glsl"
 #include "lighting.glsl"
@@ -21,7 +23,7 @@ out vec2 st;
 void main() {
   gl_Position = transformPoint(clipFromModel, position);
   vec3 P = transformPoint(worldFromModel, position).xyz;
-  vec3 N = normalize(transformDirection(normalMatrix, normal));
+  vec3 N = normalize3(transformDirection(normalMatrix, normal));
   vec3 V = viewVector(P);
   Illumination front = illuminate(material, P, N, V);
   Illumination back = illuminate(material, P, -N, V);

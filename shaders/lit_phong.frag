@@ -3,10 +3,11 @@
 // interpolated normal renormalized (renderer/PIPELINE.md, section 7).
 #include "frame_block.glsl"
 #include "transform.glsl"
+#include "shading_math.glsl"
+#include "srgb.glsl"
 #include "texture.glsl"
 #include "draw_uniforms.glsl"
 #include "lighting.glsl"
-#include "srgb_encode.glsl"
 
 in vec3 worldPosition;
 in vec3 worldNormal;
@@ -16,8 +17,7 @@ layout(location = 0) out vec4 color;
 
 void main() {
   vec3 P = worldPosition;
-  vec3 N = normalize(worldNormal);
+  vec3 N = normalize3(worldNormal);
   if (!gl_FrontFacing) N = -N;  // two-sided lighting: only drawn when culling is off
-  vec3 I = shade(illuminate(material, P, N, viewVector(P)), baseColorAt(st));
-  color = vec4(encodeSrgb(I), 1.0);
+  color = encodeSrgb(shade(illuminate(material, P, N, viewVector(P)), baseColorAt(st)));
 }

@@ -3,6 +3,8 @@
 // lighting per pixel in lit_phong.frag (renderer/PIPELINE.md, section 7).
 #include "frame_block.glsl"
 #include "transform.glsl"
+#include "shading_math.glsl"
+#include "srgb.glsl"
 #include "texture.glsl"
 #include "draw_uniforms.glsl"
 
@@ -17,6 +19,6 @@ out vec2 st;
 void main() {
   gl_Position = transformPoint(clipFromModel, position);
   worldPosition = transformPoint(worldFromModel, position).xyz;
-  worldNormal = normalize(transformDirection(normalMatrix, normal));
+  worldNormal = normalize3(transformDirection(normalMatrix, normal));
   st = texcoord;
 }

@@ -9,5 +9,6 @@ vec4 transformPoint(mat4 m, vec3 p) {
 }
 
 vec3 transformDirection(mat3 m, vec3 d) {
-  return (m[0] * d.x + m[1] * d.y) + m[2] * d.z;
+  precise vec3 r = (m[0] * d.x + m[1] * d.y) + m[2] * d.z;
+  return r;
 }

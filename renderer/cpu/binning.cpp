@@ -15,32 +15,6 @@ void pack(const WindowVertex& w, int varyingCount, std::vector<float>& out) {
 
 }  // namespace
 
-bool snapTriangle(const float* a, const float* b, const float* c, int width, int height, BinnedTriangle& t, bool& frontFacing, int (&box)[4]) {
-  constexpr float kLimit = 1 << 22;
-  for (const float* v : {a, b, c})
-    if (!(std::fabs(v[0]) < kLimit && std::fabs(v[1]) < kLimit)) return false;
-  std::int64_t X[3] = {snapToGrid(a[0]), snapToGrid(b[0]), snapToGrid(c[0])};
-  std::int64_t Y[3] = {snapToGrid(a[1]), snapToGrid(b[1]), snapToGrid(c[1])};
-  const std::int64_t area = (X[0] - X[1]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[0] - Y[1]);
-  if (area == 0) return false;
-  frontFacing = area < 0;
-  if (area < 0) {
-    std::swap(X[0], X[1]);
-    std::swap(Y[0], Y[1]);
-  }
-  for (int i = 0; i < 3; ++i) {
-    t.X[i] = static_cast<std::int32_t>(X[i]);
-    t.Y[i] = static_cast<std::int32_t>(Y[i]);
-  }
-  const std::int64_t minX = std::min({X[0], X[1], X[2]}), maxX = std::max({X[0], X[1], X[2]});
-  const std::int64_t minY = std::min({Y[0], Y[1], Y[2]}), maxY = std::max({Y[0], Y[1], Y[2]});
-  box[0] = static_cast<int>(std::max<std::int64_t>(0, (minX + 255) >> 8));
-  box[1] = static_cast<int>(std::max<std::int64_t>(0, (minY + 255) >> 8));
-  box[2] = static_cast<int>(std::min<std::int64_t>(width - 1, maxX >> 8));
-  box[3] = static_cast<int>(std::min<std::int64_t>(height - 1, maxY >> 8));
-  return box[0] <= box[2] && box[1] <= box[3];
-}
-
 void binTriangles(const Scene& scene, const FrameInputs& frame, const PassVertices& vertices, const TileGrid& grid, bool cullBackFaces,
                   std::size_t begin, std::size_t end, WorkerBins& bins, const FlatIllumination* flat) {
   bins.triangles.clear();
@@ -95,19 +69,20 @@ void binTriangles(const Scene& scene, const FrameInputs& frame, const PassVertic
 
     for (std::size_t k = 0; k < fanSize; k += 3) {
       BinnedTriangle tri;
-      bool front = true;
-      int box[4];
-      if (!snapTriangle(bins.vertex(vertices, fan[k]), bins.vertex(vertices, fan[k + 1]), bins.vertex(vertices, fan[k + 2]), grid.width, grid.height,
-                tri, front, box))
+      const float* p[3] = {bins.vertex(vertices, fan[k]), bins.vertex(vertices, fan[k + 1]), bins.vertex(vertices, fan[k + 2])};
+      PixelBox box;
+      if (!snapTriangle({p[0][0], p[1][0], p[2][0]}, {p[0][1], p[1][1], p[2][1]}, tri.snapped) ||
+          !pixelBox(tri.snapped, 0, 0, grid.width - 1, grid.height - 1, box))
         continue;
-      if (cullBackFaces && !front) continue;  // signed area ≤ 0 is dropped
+      if (cullBackFaces && !tri.snapped.frontFacing) continue;  // signed area ≤ 0 is dropped
       tri.vertex[0] = fan[k], tri.vertex[1] = fan[k + 1], tri.vertex[2] = fan[k + 2];
-      tri.instance = static_cast<std::uint32_t>(instance) | (front ? 0u : kBackFacing);
+      toSetUpOrder(tri.snapped, tri.vertex);
+      tri.instance = static_cast<std::uint32_t>(instance);
       const auto index = static_cast<std::uint32_t>(bins.triangles.size());
       bins.triangles.push_back(tri);
       if (flat) bins.flat.insert(bins.flat.end(), {illumination[0], illumination[1]});
-      for (int ty = box[1] >> kTileShift; ty <= box[3] >> kTileShift; ++ty)
-        for (int tx = box[0] >> kTileShift; tx <= box[2] >> kTileShift; ++tx)
+      for (int ty = box.minY >> kTileShift; ty <= box.maxY >> kTileShift; ++ty)
+        for (int tx = box.minX >> kTileShift; tx <= box.maxX >> kTileShift; ++tx)
           bins.tiles[static_cast<std::size_t>(ty * grid.columns + tx)].push_back(index);
     }
   }

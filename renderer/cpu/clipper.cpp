@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "cpu/window_transform.h"
+
 namespace facet::cpu {
 namespace {
 
@@ -24,17 +26,11 @@ ClipVertex interpolate(float t, const ClipVertex& out, const ClipVertex& in, int
   return v;
 }
 
-// Window coordinates of a vertex the clipper made: draw_pipe_clip computes them
-// in C, x·(1/w), times scale, plus translate, each rounded (no fused multiply-add).
-WindowVertex clippedToWindow(const ClipVertex& v, float halfWidth, float halfHeight, int varyingCount) {
+// A window vertex with window_transform.h's arithmetic for its origin.
+WindowVertex windowVertex(const ClipVertex& v, float halfWidth, float halfHeight, int varyingCount, bool madeByClipper) {
   WindowVertex w;
-  const float oneOverW = 1.0f / v.clip.w;
-  const float xNdc = v.clip.x * oneOverW, yNdc = v.clip.y * oneOverW;
-  const float xScaled = xNdc * halfWidth, yScaled = yNdc * halfHeight;
-  w.x = xScaled + halfWidth;
-  w.y = yScaled + halfHeight;
-  w.z = v.clip.z * oneOverW;
-  w.invW = oneOverW;
+  const WindowPosition p = windowPosition(v.clip, halfWidth, halfHeight, madeByClipper);
+  w.x = p.x, w.y = p.y, w.z = p.z, w.invW = p.invW;
   for (int k = 0; k < varyingCount; ++k) w.varyings[static_cast<std::size_t>(k)] = v.varyings[static_cast<std::size_t>(k)];
   return w;
 }
@@ -53,14 +49,7 @@ unsigned clipMask(const glm::vec4& p) {
 }
 
 WindowVertex toWindow(const ClipVertex& v, float halfWidth, float halfHeight, int varyingCount) {
-  WindowVertex w;
-  const float oneOverW = 1.0f / v.clip.w;
-  w.x = std::fma(v.clip.x * oneOverW, halfWidth, halfWidth);
-  w.y = std::fma(v.clip.y * oneOverW, halfHeight, halfHeight);
-  w.z = v.clip.z * oneOverW;  // depth range [0, 1]: scale 1, translate 0
-  w.invW = oneOverW;
-  for (int k = 0; k < varyingCount; ++k) w.varyings[static_cast<std::size_t>(k)] = v.varyings[static_cast<std::size_t>(k)];
-  return w;
+  return windowVertex(v, halfWidth, halfHeight, varyingCount, false);
 }
 
 void clipTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c, const WindowVertex& windowA,
@@ -127,7 +116,7 @@ void clipTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
   const WindowVertex* originals[3] = {&windowA, &windowB, &windowC};
   const auto window = [&](int index) {
     const auto i = static_cast<std::size_t>(index);
-    return original[i] ? *originals[i] : clippedToWindow(store[i], halfWidth, halfHeight, varyingCount);
+    return original[i] ? *originals[i] : windowVertex(store[i], halfWidth, halfHeight, varyingCount, true);
   };
   const WindowVertex first = window(list[0]);
   WindowVertex previous = window(list[1]);

@@ -27,8 +27,7 @@ struct WindowVertex {
   std::array<float, kMaxVaryings> varyings{};
 };
 
-// Window coordinates of an unclipped vertex: llvmpipe's JIT computes
-// x_w = fma(x·(1/w), W/2, W/2) (a fused multiply-add on CPUs with FMA).
+// Window coordinates of an unclipped vertex (window_transform.h).
 WindowVertex toWindow(const ClipVertex& v, float halfWidth, float halfHeight, int varyingCount);
 
 // Clips triangle (a, b, c) against -w ≤ x ≤ w, -w ≤ y ≤ w, 0 ≤ z ≤ w and

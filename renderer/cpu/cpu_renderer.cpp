@@ -9,6 +9,7 @@
 #include "cpu/lighting.h"
 #include "cpu/passes.h"
 #include "cpu/thread_pool.h"
+#include "image/srgb.h"
 
 namespace facet {
 namespace {
@@ -43,8 +44,7 @@ class CpuRenderer final : public Renderer {
     }
 
     const auto start = std::chrono::steady_clock::now();
-    const glm::vec3 background = cpu::encodeSrgb(frame.background);
-    result.image = Image(frame.width, frame.height, {cpu::quantize(background.r), cpu::quantize(background.g), cpu::quantize(background.b), 255});
+    result.image = Image(frame.width, frame.height, encodePixel(frame.background));
     cpu::litPass(pool_, buffers_, scene, frame, maps_, result.image);
     result.timings.push_back({"lit pass", millisecondsSince(start)});
     return result;

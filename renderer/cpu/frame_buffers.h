@@ -21,6 +21,7 @@
 #include "cpu/clipper.h"
 #include "cpu/interpolation.h"
 #include "cpu/lighting.h"
+#include "cpu/triangle_setup.h"
 
 namespace facet::cpu {
 
@@ -29,12 +30,11 @@ inline constexpr int kTileSize = 1 << kTileShift;  // pixels
 
 // A triangle after clipping, snapping and culling.
 struct BinnedTriangle {
-  std::int32_t X[3], Y[3];       // snapped to the 1/256 grid, llvmpipe's clockwise order
-  std::uint32_t vertex[3];       // packed window vertices in the submitted order (kClippedVertex: the worker's clipped store)
-  std::uint32_t instance;        // index into FrameInputs::instances; kBackFacing bit when back-facing
+  SnappedTriangle snapped;       // on the 1/256 grid, set-up order, and which side faces the eye
+  std::uint32_t vertex[3];       // packed window vertices in set-up order (kClippedVertex: the worker's clipped store)
+  std::uint32_t instance;        // index into FrameInputs::instances
 };
 inline constexpr std::uint32_t kClippedVertex = 0x80000000u;
-inline constexpr std::uint32_t kBackFacing = 0x80000000u;
 
 // Vertex flags: the clip mask (bits 0-5), and kNotFinite.
 inline constexpr std::uint8_t kNotFinite = 0x80;

@@ -1,15 +1,21 @@
 #pragma once
-// The course's illumination equation on the CPU.
-// Mirror: shaders/lighting.glsl — the same functions, in the same order, with
-// the same names and arguments. Change one, change the other.
+// The course's illumination equation on the CPU, written once for one pixel
+// (F = float) or four at a time (F = Float4, lanes.h): the vertex stage of
+// Gouraud, flat shading's triangles and Phong's pixels all call it.
+// Mirror: shaders/lighting.glsl, the same functions in the same order with
+// the same names, arguments and float operations. Change one, change the other.
 //
 //   I = k_e + k_a·I_a·O_d + Σ_lights S·f_att·(k_d·I_p·max(N·L, 0)·O_d + k_s·I_p·spec)
-#include <algorithm>
-#include <cmath>
+//
+// Lanes: a light that does not reach a lane (spot cut-off, N·L ≤ 0) leaves
+// that lane's sums as they were (a select), which is what the one-pixel code
+// does when it skips the light.
+#include <cstdint>
 
-#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "cpu/lanes.h"
+#include "cpu/shading_math.h"
 #include "cpu/shadow_maps.h"
 #include "cpu/vertex_math.h"
 #include "pipeline/frame_inputs.h"
@@ -17,119 +23,150 @@
 
 namespace facet::cpu {
 
-// f_att = min(1, 1/(c1 + c2·d + c3·d²))
-float attenuation(glm::vec3 c, float d);
-
-// spec = max(R·V, 0)^n with R = 2(L·N)N - L (Phong), or max(N·H, 0)^n with
-// H = normalize(L + V) (Blinn-Phong). The caller skips it where N·L ≤ 0.
-float specularTerm(glm::vec3 N, glm::vec3 L, glm::vec3 V, float shininess, SpecularModel model);
-
-// S of one light at world point P: PCF over (2r+1)² texels of the light's
-// map, a texel in shadow when z - bias > depth, bias = max(b_slope·(1 - N·L), b_min).
-// Outside the map (or beyond its far plane) counts as lit.
-float shadowFactor(const ShadowMaps& maps, const FrameLight& light, const ShadowSettings& shadows, glm::vec3 P, glm::vec3 N, glm::vec3 L);
-
 // I split in the part O_d multiplies and the rest, so that a textured O_d can
 // be applied per pixel when lighting is per vertex (Gouraud) or per triangle (flat):
 //   I = O_d·diffuse + specular
 //   diffuse  = k_a·I_a + Σ S·f_att·k_d·I_p·max(N·L, 0)
 //   specular = k_e + Σ S·f_att·k_s·I_p·spec
-struct Illumination {
-  glm::vec3 diffuse{0.0f};
-  glm::vec3 specular{0.0f};
+template <class F>
+struct IlluminationOf {
+  Vec3Of<F> diffuse{}, specular{};
 };
+using Illumination = IlluminationOf<float>;
 
-// Illumination at world point P with unit normal N and unit view vector V.
-Illumination illuminate(const FrameInputs& frame, const ShadowMaps& maps, const CourseMaterial& material, glm::vec3 P, glm::vec3 N,
-                        glm::vec3 V);
+// The course coefficients of the material shaded in each lane.
+template <class F>
+struct LaneMaterial {
+  Vec3Of<F> emissive;  // k_e
+  F ka, kd, ks, shininess;
+};
+inline LaneMaterial<float> laneMaterial(const CourseMaterial& m) { return {m.emissive, m.ka, m.kd, m.ks, m.shininess}; }
 
-// I = O_d·diffuse + specular (linear, unclamped).
-glm::vec3 shade(const Illumination& illumination, glm::vec3 baseColor);
-
-// V at P: toward the eye (perspective) or the constant -k (parallel).
-glm::vec3 viewVector(const FrameInputs& frame, glm::vec3 P);
-
-// Clamp to [0,1], then IEC 61966-2-1: 12.92·c below 0.0031308, else 1.055·c^(1/2.4) - 0.055.
-glm::vec3 encodeSrgb(glm::vec3 linear);
-
-// sRGB-encoded [0,1] to 8 bits, rounding to nearest.
-unsigned char quantize(float encoded);
-
-// [SECTION] Definitions, inline so that the fragment stage compiles them into its loop.
-
-inline float attenuation(glm::vec3 c, float d) {
-  return std::min(1.0f, 1.0f / (c.x + c.y * d + c.z * d * d));
+// f_att = min(1, 1/(c1 + c2·d + c3·d²)), as ((c1 + c2·d) + (c3·d)·d)
+template <class F>
+F attenuation(glm::vec3 c, F d) {
+  return minOne(F(1.0f) / ((F(c.x) + F(c.y) * d) + (F(c.z) * d) * d));
 }
 
-inline float specularTerm(glm::vec3 N, glm::vec3 L, glm::vec3 V, float shininess, SpecularModel model) {
+// spec = max(R·V, 0)^n with R = 2(L·N)N - L (Phong), or max(N·H, 0)^n with
+// H = normalize(L + V) (Blinn-Phong). The caller drops it where N·L ≤ 0.
+template <class F>
+F specularTerm(const Vec3Of<F>& N, const Vec3Of<F>& L, const Vec3Of<F>& V, F shininess, SpecularModel model) {
   if (model == SpecularModel::Phong) {
-    const glm::vec3 R = 2.0f * glm::dot(L, N) * N - L;
-    return std::pow(std::max(glm::dot(R, V), 0.0f), shininess);
+    const Vec3Of<F> R = (F(2.0f) * dot3(L, N)) * N - L;
+    return power(maxZero(dot3(R, V)), shininess);
   }
-  const glm::vec3 H = glm::normalize(L + V);
-  return std::pow(std::max(glm::dot(N, H), 0.0f), shininess);
+  const Vec3Of<F> H = normalize3(L + V);
+  return power(maxZero(dot3(N, H)), shininess);
 }
 
-inline float shadowFactor(const ShadowMaps& maps, const FrameLight& light, const ShadowSettings& shadows, glm::vec3 P, glm::vec3 N, glm::vec3 L) {
+// S of one light at world point P: PCF over (2r+1)² texels of the light's
+// map, a texel in shadow when z - bias > depth, bias = max(b_slope·(1 - N·L), b_min).
+// Outside the map (or beyond its far plane) counts as lit. One pixel at a
+// time: texel reads do not go into lanes.
+inline float shadowFactor(const ShadowMaps& maps, const FrameLight& light, const ShadowSettings& shadows, glm::vec3 P, glm::vec3 N,
+                          glm::vec3 L) {
   if (!light.hasShadowMap) return 1.0f;
   const int face = light.light.kind == LightKind::Point ? cubeFace(P - light.light.position) : 0;
   const glm::vec4 s = transformPoint(light.shadowFromWorld[static_cast<std::size_t>(face)], P);
   if (!(s.w > 0.0f)) return 1.0f;
-  glm::vec3 uvz = glm::vec3(s) / s.w;
-  if (!(uvz.z <= 1.0f) || std::isnan(uvz.x) || std::isnan(uvz.y)) return 1.0f;
+  const float u = s.x / s.w, v = s.y / s.w, z = s.z / s.w;
+  if (!(z <= 1.0f) || std::isnan(u) || std::isnan(v)) return 1.0f;
   // Far outside the map every texel is outside too; the clamp keeps the texel
   // index an int without changing which texels a point inside reads.
-  uvz.x = std::clamp(uvz.x, -1.0f, 2.0f);
-  uvz.y = std::clamp(uvz.y, -1.0f, 2.0f);
-  const float bias = std::max(shadows.biasSlope * (1.0f - glm::dot(N, L)), shadows.biasMin);
+  const float uc = u < -1.0f ? -1.0f : (u > 2.0f ? 2.0f : u);
+  const float vc = v < -1.0f ? -1.0f : (v > 2.0f ? 2.0f : v);
+  const float slope = shadows.biasSlope * (1.0f - dot3(N, L));
+  const float bias = slope > shadows.biasMin ? slope : shadows.biasMin;
   const int size = maps.size, r = shadows.pcfRadius;
-  const int tx = static_cast<int>(std::floor(uvz.x * static_cast<float>(size)));
-  const int ty = static_cast<int>(std::floor(uvz.y * static_cast<float>(size)));
+  const int tx = static_cast<int>(std::floor(uc * static_cast<float>(size)));
+  const int ty = static_cast<int>(std::floor(vc * static_cast<float>(size)));
   const int layer = light.shadowLayer + face;
   int lit = 0;
   for (int dy = -r; dy <= r; ++dy)
     for (int dx = -r; dx <= r; ++dx) {
       const int x = tx + dx, y = ty + dy;
       if (x < 0 || y < 0 || x >= size || y >= size) ++lit;
-      else if (!(uvz.z - bias > maps.texelFetch(layer, x, y))) ++lit;
+      else if (!(z - bias > maps.texelFetch(layer, x, y))) ++lit;
     }
   return static_cast<float>(lit) / static_cast<float>((2 * r + 1) * (2 * r + 1));
 }
 
-inline Illumination illuminate(const FrameInputs& frame, const ShadowMaps& maps, const CourseMaterial& material, glm::vec3 P, glm::vec3 N,
-                        glm::vec3 V) {
-  Illumination I;
-  I.diffuse = glm::vec3(material.ka * frame.ambient);
+// shadowFactor for the lanes the light reaches (1 elsewhere; those lanes are dropped).
+inline float shadowFactorLanes(const ShadowMaps& maps, const FrameLight& light, const ShadowSettings& shadows, glm::vec3 P, glm::vec3 N,
+                               glm::vec3 L, bool) {
+  return shadowFactor(maps, light, shadows, P, N, L);
+}
+#if defined(__SSE2__)
+inline Float4 shadowFactorLanes(const ShadowMaps& maps, const FrameLight& light, const ShadowSettings& shadows, const Vec3x4& P, const Vec3x4& N,
+                                const Vec3x4& L, Mask4 active) {
+  if (!light.hasShadowMap) return Float4(1.0f);
+  alignas(16) float p[3][4], n[3][4], l[3][4], S[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+  const Vec3x4* from[3] = {&P, &N, &L};
+  float (*to[3])[4] = {p, n, l};
+  for (int v = 0; v < 3; ++v) {
+    _mm_store_ps(to[v][0], from[v]->x.v);
+    _mm_store_ps(to[v][1], from[v]->y.v);
+    _mm_store_ps(to[v][2], from[v]->z.v);
+  }
+  const int lanes = laneBits(active);
+  for (int k = 0; k < 4; ++k)
+    if (lanes & (1 << k)) S[k] = shadowFactor(maps, light, shadows, {p[0][k], p[1][k], p[2][k]}, {n[0][k], n[1][k], n[2][k]}, {l[0][k], l[1][k], l[2][k]});
+  return Float4(_mm_load_ps(S));
+}
+#endif
+
+template <class F>
+MaskOf<F> allLanes() {
+  return F(0.0f) <= F(0.0f);
+}
+
+// Illumination at world point P with unit normal N and unit view vector V.
+template <class F>
+IlluminationOf<F> illuminate(const FrameInputs& frame, const ShadowMaps& maps, const LaneMaterial<F>& material, const Vec3Of<F>& P,
+                             const Vec3Of<F>& N, const Vec3Of<F>& V) {
+  using Vec3 = Vec3Of<F>;
+  IlluminationOf<F> I;
+  const F ambient = material.ka * F(frame.ambient);
+  I.diffuse = Vec3(ambient, ambient, ambient);
   I.specular = material.emissive;
   for (const FrameLight& fl : frame.lights) {
     const Light& light = fl.light;
-    glm::vec3 L;
-    float fAtt = 1.0f;
+    Vec3 L;
+    F fAtt = F(1.0f);
     if (light.kind == LightKind::Directional) {
-      L = -light.direction;
+      L = splat<F>(-light.direction);
     } else {
-      const glm::vec3 toLight = light.position - P;
-      const float d = glm::length(toLight);
+      const Vec3 toLight = splat<F>(light.position) - P;
+      const F d = length3(toLight);
       L = toLight / d;
       fAtt = attenuation(light.attenuation, d);
     }
-    if (light.kind == LightKind::Spot && !(glm::dot(-L, light.direction) > fl.cosCutoff)) continue;
-    const float NdotL = glm::dot(N, L);
-    if (!(NdotL > 0.0f)) continue;  // no diffuse and no specular where N·L ≤ 0
-    const glm::vec3 Ip = light.color * light.intensity;
-    const float S = shadowFactor(maps, fl, frame.shadows, P, N, L);
-    I.diffuse += S * fAtt * (material.kd * NdotL * Ip);
-    I.specular += S * fAtt * (material.ks * specularTerm(N, L, V, material.shininess, frame.specular) * Ip);
+    MaskOf<F> active = allLanes<F>();
+    if (light.kind == LightKind::Spot) active = dot3(-L, splat<F>(light.direction)) > F(fl.cosCutoff);
+    const F NdotL = dot3(N, L);
+    active = both(active, NdotL > F(0.0f));  // no diffuse and no specular where N·L ≤ 0
+    if (!anyLane(active)) continue;
+    const Vec3 Ip = splat<F>(fl.intensity);
+    const F S = shadowFactorLanes(maps, fl, frame.shadows, P, N, L, active);
+    const Vec3 diffuse = (S * fAtt) * ((material.kd * NdotL) * Ip);
+    const Vec3 specular = (S * fAtt) * ((material.ks * specularTerm(N, L, V, material.shininess, frame.specular)) * Ip);
+    I.diffuse = select(active, I.diffuse + diffuse, I.diffuse);
+    I.specular = select(active, I.specular + specular, I.specular);
   }
   return I;
 }
 
-inline glm::vec3 shade(const Illumination& illumination, glm::vec3 baseColor) {
+// I = O_d·diffuse + specular (linear, unclamped).
+template <class F>
+Vec3Of<F> shade(const IlluminationOf<F>& illumination, const Vec3Of<F>& baseColor) {
   return baseColor * illumination.diffuse + illumination.specular;
 }
 
-inline glm::vec3 viewVector(const FrameInputs& frame, glm::vec3 P) {
-  return frame.perspective ? glm::normalize(frame.eyePosition - P) : frame.towardEye;
+// V at P: toward the eye (perspective) or the constant -k (parallel).
+template <class F>
+Vec3Of<F> viewVector(const FrameInputs& frame, const Vec3Of<F>& P) {
+  return frame.perspective ? normalize3(splat<F>(frame.eyePosition) - P) : splat<F>(frame.towardEye);
 }
 
 }  // namespace facet::cpu

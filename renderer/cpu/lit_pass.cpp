@@ -69,13 +69,14 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         const std::size_t index = winner.index;
         const BinnedTriangle& t = bins.triangles[index];
         in = &winner.interpolation;
-        const FrameInstance& instance = frame.instances[t.instance & ~kBackFacing];
+        const FrameInstance& instance = frame.instances[t.instance];
         const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
         material = &frame.materials[static_cast<std::size_t>(instance.material)];
         texture = material->baseColorTexture >= 0 && !mesh.texcoords.empty()
                       ? &scene.textures[static_cast<std::size_t>(material->baseColorTexture)].image
                       : nullptr;
-        back = (t.instance & kBackFacing) != 0;
+        back = !t.snapped.frontFacing;
+        if (kMode != ShadingMode::Flat || texture) in->setUpVaryings(layout.count);
         if constexpr (kMode == ShadingMode::Flat) flat = &bins.flat[2 * index];
       }
 #if defined(__SSE2__)
@@ -83,10 +84,9 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         // Four pixels of one untextured triangle in a row: interpolation on four lanes, straight into the batch.
         const std::uint32_t* row = &scratch.id[(py - ty0) * kTileSize + (px - tx0)];
         if (!texture && px + 3 <= tx1 && row[1] == id && row[2] == id && row[3] == id) {
-          __m128 w[3];
-          in->weights4(px, py, w);
-          const __m128 P[3] = {in->varying4(0, w), in->varying4(1, w), in->varying4(2, w)};
-          const __m128 N[3] = {in->varying4(3, w), in->varying4(4, w), in->varying4(5, w)};
+          const __m128 w = in->inverseW4(px, py);
+          const __m128 P[3] = {in->varying4(0, px, py, w), in->varying4(1, px, py, w), in->varying4(2, px, py, w)};
+          const __m128 N[3] = {in->varying4(3, px, py, w), in->varying4(4, px, py, w), in->varying4(5, px, py, w)};
           batch.add4(static_cast<std::size_t>(py) * static_cast<std::size_t>(image.width()) + static_cast<std::size_t>(px), P, N, back,
                      material->baseColor, *material);
           px += 3;
@@ -94,9 +94,8 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         }
       }
 #endif
-      (void)in->at(px, py);
       float v[layout.count];
-      if (kMode != ShadingMode::Flat || texture) in->varyings(layout.count, v);
+      if (kMode != ShadingMode::Flat || texture) in->varyingsAt(px, py, v);
       glm::vec3 baseColor = material->baseColor;
       if (texture) baseColor *= sampleBaseColor(*texture, {v[layout.uv], v[layout.uv + 1]});
       glm::vec3 color;
@@ -107,7 +106,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         continue;  // written when the batch is shaded
       } else if constexpr (kMode == ShadingMode::Gouraud) {
         const int side = back ? 6 : 0;
-        color = shade({{v[side], v[side + 1], v[side + 2]}, {v[side + 3], v[side + 4], v[side + 5]}}, baseColor);
+        color = shade(Illumination{{v[side], v[side + 1], v[side + 2]}, {v[side + 3], v[side + 4], v[side + 5]}}, baseColor);
       } else {
         color = shade(back ? flat[1] : flat[0], baseColor);
       }
@@ -146,15 +145,15 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
       varyings[layout.uv + 1] = uv.y;
       if (frame.shading == ShadingMode::Phong) {
         put(varyings, 0, P);
-        put(varyings, 3, glm::normalize(transformDirection(instance.normalMatrix, mesh.normals[local])));
+        put(varyings, 3, normalize3(transformDirection(instance.normalMatrix, mesh.normals[local])));
       } else if (frame.shading == ShadingMode::Gouraud) {
-        const glm::vec3 N = glm::normalize(transformDirection(instance.normalMatrix, mesh.normals[local]));
-        const glm::vec3 V = viewVector(frame, P);
-        const Illumination front = illuminate(frame, maps, material, P, N, V);
+        const glm::vec3 N = normalize3(transformDirection(instance.normalMatrix, mesh.normals[local]));
+        const glm::vec3 V = viewVector<float>(frame, P);
+        const Illumination front = illuminate(frame, maps, laneMaterial(material), P, N, V);
         put(varyings, 0, front.diffuse);
         put(varyings, 3, front.specular);
         Illumination back;  // zero when one-sided, as ClipVertex's varyings were
-        if (twoSided) back = illuminate(frame, maps, material, P, -N, V);
+        if (twoSided) back = illuminate(frame, maps, laneMaterial(material), P, -N, V);
         put(varyings, 6, back.diffuse);
         put(varyings, 9, back.specular);
       }
@@ -168,11 +167,11 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
   const auto flatLighting = [&](std::uint32_t instance, const std::uint32_t (&vertex)[3], Illumination (&out)[2]) {
     const CourseMaterial& material = frame.materials[static_cast<std::size_t>(frame.instances[instance].material)];
     const glm::vec3 p0 = v.world[vertex[0]], p1 = v.world[vertex[1]], p2 = v.world[vertex[2]];
-    const glm::vec3 N = glm::normalize(glm::cross(p1 - p0, p2 - p0));
+    const glm::vec3 N = normalize3(cross3(p1 - p0, p2 - p0));
     const glm::vec3 centroid = (p0 + p1 + p2) / 3.0f;
-    const glm::vec3 V = viewVector(frame, centroid);
-    out[0] = illuminate(frame, maps, material, centroid, N, V);
-    out[1] = twoSided ? illuminate(frame, maps, material, centroid, -N, V) : Illumination{};
+    const glm::vec3 V = viewVector<float>(frame, centroid);
+    out[0] = illuminate(frame, maps, laneMaterial(material), centroid, N, V);
+    out[1] = twoSided ? illuminate(frame, maps, laneMaterial(material), centroid, -N, V) : Illumination{};
   };
   const FlatIllumination flat = flatLighting;  // refers to the lambda above, which outlives the pass
   const TileGrid grid = TileGrid::over(frame.width, frame.height);
@@ -195,12 +194,12 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
     scratch.triangles.clear();  // keeps its capacity: no allocation once the sizes settle
     forEachTriangleInTile(buffers.workers, v, tile, r,
                           [&](const WorkerBins& bins, std::uint32_t index, const BinnedTriangle& t, const InterpolationVertex (&vertices)[3],
-                              int minX, int minY, int maxX, int maxY) {
+                              const PixelBox& box) {
                             // Set up once: the z-buffer reads its depth, shading its weights if it wins a pixel.
                             const auto id = static_cast<std::uint32_t>(scratch.triangles.size());
                             scratch.triangles.push_back({Interpolation(vertices[0], vertices[1], vertices[2]), &bins, index});
                             const Interpolation& interpolation = scratch.triangles.back().interpolation;
-                            rasterizeBlocks(t, minX, minY, maxX, maxY, [&](int px, int py) {
+                            rasterizeBlocks(t.snapped, box, [&](int px, int py) {
                               const float z = interpolation.depthAt(px, py);
                               const int k = (py - r.y0) * kTileSize + (px - r.x0);
                               if (!(z < scratch.depth[k])) return;  // LESS

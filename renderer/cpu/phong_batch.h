@@ -1,15 +1,11 @@
 #pragma once
-// Phong shading's per-pixel illumination four pixels at a time (SSE2, part of
-// every x86-64 CPU). Each lane performs exactly the float operations of
-// illuminate(), shade() and viewVector() in lighting.h, in the same order and
-// with the same roundings (no fused multiply-add; glm's normalize is
-// v·(1/sqrt(v·v)), its dot (x + y) + z), so the result is bit-identical to
-// the scalar code; tests/cpu/test_fast_paths.cpp holds the two against each
-// other. What is not arithmetic on four lanes stays scalar per lane: the
-// shadow factor (texel reads) and pow (the C library's powf, as the scalar
-// code calls it). The light loop is the same for every lane; a light that
-// `continue`s for one lane leaves that lane's sums untouched (a select, not
-// an add of zero). Without SSE2 the batch calls the scalar functions.
+// Phong shading's per-pixel illumination four pixels at a time: the lanes of
+// lighting.h's illuminate<Float4>, shade and viewVector, the same code as one
+// pixel's illuminate<float> (lanes.h: every operation the same IEEE
+// operation per lane), so the result is bit-identical to shading each pixel
+// alone; tests/cpu/test_fast_paths.cpp holds the two against each other.
+// Pixels of different triangles and materials share a batch. Without SSE2
+// the batch shades its pixels one by one.
 #include <cstdint>
 
 #include "cpu/lighting.h"
@@ -40,7 +36,7 @@ class PhongBatch {
       N_[c][k] = interpolatedNormal[c];
       O_[c][k] = baseColor[c];
     }
-    back_[k] = back ? -0.0f : 0.0f;  // the sign bit to flip
+    back_[k] = back ? 1.0f : 0.0f;  // a back face: N is negated
     material_[k] = &material;
     if (count_ == kLanes) flush();
   }
@@ -55,7 +51,7 @@ class PhongBatch {
       for (int k = 0; k < 4; ++k) add(offset + static_cast<std::size_t>(k), {p[0][k], p[1][k], p[2][k]}, {n[0][k], n[1][k], n[2][k]}, back, baseColor, material);
       return;
     }
-    for (int k = 0; k < 4; ++k) offset_[k] = offset + static_cast<std::size_t>(k), material_[k] = &material, back_[k] = back ? -0.0f : 0.0f;
+    for (int k = 0; k < 4; ++k) offset_[k] = offset + static_cast<std::size_t>(k), material_[k] = &material, back_[k] = back ? 1.0f : 0.0f;
     for (int c = 0; c < 3; ++c) {
       _mm_store_ps(P_[c], P[c]);
       _mm_store_ps(N_[c], interpolatedNormal[c]);

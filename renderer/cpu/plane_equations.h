@@ -25,6 +25,13 @@
 // one division, one product.
 #include <cmath>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+#if defined(__FMA__)
+#include <immintrin.h>
+#endif
+
 namespace facet::cpu {
 
 // a·b + c with one rounding. The rule is the fused operation; on CPUs with
@@ -77,6 +84,26 @@ inline Plane planeOf(const PlaneSetup& s, float a0, float a1, float a2) {
   p.a0 = a0 - (p.dadx * s.x0Centre + p.dady * s.y0Centre);
   return p;
 }
+
+#if defined(__SSE2__)
+// fusedMultiplyAdd on four lanes.
+inline __m128 fusedMultiplyAdd4(__m128 a, __m128 b, __m128 c) {
+#if defined(__FMA__)
+  return _mm_fmadd_ps(a, b, c);
+#else
+  alignas(16) float x[4], y[4], z[4];
+  _mm_store_ps(x, a), _mm_store_ps(y, b), _mm_store_ps(z, c);
+  for (int k = 0; k < 4; ++k) x[k] = fusedMultiplyAdd(x[k], y[k], z[k]);
+  return _mm_load_ps(x);
+#endif
+}
+
+// Plane::at for the four pixels (px .. px+3, py), one per lane.
+inline __m128 planeAt4(const Plane& p, int px, int py) {
+  const __m128 x = _mm_add_ps(_mm_set1_ps(static_cast<float>(px)), _mm_setr_ps(0.0f, 1.0f, 2.0f, 3.0f));
+  return fusedMultiplyAdd4(_mm_set1_ps(p.dady), _mm_set1_ps(static_cast<float>(py)), fusedMultiplyAdd4(_mm_set1_ps(p.dadx), x, _mm_set1_ps(p.a0)));
+}
+#endif
 
 // Window z as the depth test sees it: the plane's value clamped to [0, 1].
 inline float depthAt(const Plane& z, int px, int py) { return maxX86(minX86(z.at(px, py), 1.0f), 0.0f); }

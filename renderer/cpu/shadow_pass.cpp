@@ -45,10 +45,10 @@ void shadowPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, con
     for (int y = r.y0; y <= r.y1; ++y) std::fill_n(depth + static_cast<std::size_t>(y) * static_cast<std::size_t>(size) + r.x0, r.x1 - r.x0 + 1, 1.0f);
     dirty[tile] = any ? 1 : 0;
     forEachTriangleInTile(buffers.workers, v, tile, r,
-                          [&](const WorkerBins&, std::uint32_t, const BinnedTriangle& t, const InterpolationVertex (&vertices)[3], int minX, int minY,
-                              int maxX, int maxY) {
+                          [&](const WorkerBins&, std::uint32_t, const BinnedTriangle& t, const InterpolationVertex (&vertices)[3],
+                              const PixelBox& box) {
                             const Interpolation interpolation(vertices[0], vertices[1], vertices[2]);
-                            rasterizeBlocks(t, minX, minY, maxX, maxY, [&](int px, int py) {
+                            rasterizeBlocks(t.snapped, box, [&](int px, int py) {
                               const float z = interpolation.depthAt(px, py);
                               float& stored = depth[static_cast<std::size_t>(py) * static_cast<std::size_t>(size) + static_cast<std::size_t>(px)];
                               if (z < stored) stored = z;

@@ -6,31 +6,15 @@
 #include <limits>
 #include <stdexcept>
 
-#include "cpu/lighting.h"
-#include "cpu/texture_sampling.h"
+#include "image/srgb.h"
 
 namespace facet::cpu {
-namespace {
-
-unsigned levelOf(float c) { return quantize(encodeSrgb(glm::vec3(c)).r); }
-
-}  // namespace
 
 SrgbTable::SrgbTable() {
-  threshold_[0] = -std::numeric_limits<float>::infinity();
-  // Non-negative floats order as their bit patterns: bisect on those in [0, 1].
-  const std::uint32_t one = std::bit_cast<std::uint32_t>(1.0f);
-  for (unsigned k = 1; k < 256; ++k) {
-    std::uint32_t lo = 0, hi = one;  // levelOf(hi) ≥ k always holds (levelOf(1) = 255)
-    if (levelOf(0.0f) >= k) hi = 0;
-    while (lo < hi) {
-      const std::uint32_t mid = lo + (hi - lo) / 2;
-      if (levelOf(std::bit_cast<float>(mid)) >= k) hi = mid;
-      else lo = mid + 1;
-    }
-    threshold_[k] = std::bit_cast<float>(hi);
-  }
+  const std::array<float, 256>& thresholds = srgbTables().thresholds;
+  std::copy(thresholds.begin(), thresholds.end(), threshold_);
   threshold_[256] = std::numeric_limits<float>::infinity();
+  const std::uint32_t one = std::bit_cast<std::uint32_t>(1.0f);
   // The level of c is the largest k with threshold_[k] <= c (levels never
   // decrease with c), so the buckets follow from the thresholds, in one walk.
   unsigned start = 0;
@@ -46,15 +30,6 @@ SrgbTable::SrgbTable() {
 const SrgbTable& srgbTable() {
   static const SrgbTable table;
   return table;
-}
-
-const float* srgbDecodeTable() {
-  static const auto table = [] {
-    std::array<float, 256> t{};
-    for (int v = 0; v < 256; ++v) t[static_cast<std::size_t>(v)] = decodeSrgb(glm::vec3(static_cast<float>(v)) / 255.0f).r;
-    return t;
-  }();
-  return table.data();
 }
 
 }  // namespace facet::cpu

@@ -1,13 +1,11 @@
 #pragma once
-// quantize(encodeSrgb(linear)) for one channel without calling pow: the
-// 8-bit result is a non-decreasing function of the clamped linear value, so
-// 255 thresholds (the smallest float reaching each level, found once by
-// bisection over float bit patterns with the exact formula) decide it. A
-// second table, indexed by the exponent and top 8 mantissa bits of the value,
-// holds the level at the start of each such bucket; no bucket holds more
-// than one threshold (checked when the table is built), so one comparison
-// finishes the job. Bit-identical to the formula: tests/cpu/test_fast_paths.cpp
-// checks every float in [2^-9, 1] (the pow branch) and samples below.
+// The 8-bit sRGB level of a linear value (image/srgb.h: the count of the 255
+// thresholds at or below it) in one table look-up and one comparison
+// instead of a binary search: a second table, indexed by the exponent and
+// top 8 mantissa bits of the clamped value, holds the level at the start of
+// each such bucket, and no bucket holds more than one threshold (checked
+// when the table is built). Equal to encodeLevel for every float in [0, 1]
+// and outside (tests/cpu/test_fast_paths.cpp).
 #include <bit>
 #include <cstdint>
 
@@ -24,9 +22,9 @@ namespace facet::cpu {
 class SrgbTable {
  public:
   SrgbTable();
-  // quantize(encodeSrgb(vec3(linear)).r), exactly.
+  // encodeLevel(linear), exactly.
   std::uint8_t encode(float linear) const {
-    const float c = linear > 0.0f ? (linear < 1.0f ? linear : 1.0f) : 0.0f;  // as encodeSrgb: NaN -> 0
+    const float c = linear > 0.0f ? (linear < 1.0f ? linear : 1.0f) : 0.0f;  // NaN and below 0: level 0; above 1: 255
     return level(c, std::bit_cast<std::uint32_t>(c) >> kBucketShift);
   }
   Rgba8 pixel(glm::vec3 linear) const { return {encode(linear.r), encode(linear.g), encode(linear.b), 255}; }
@@ -63,7 +61,5 @@ class SrgbTable {
 // The table, built on first use (thread-safe).
 const SrgbTable& srgbTable();
 
-// decodeSrgb(vec3(v)/255) per channel, as texture_sampling's texel() computes it, by table.
-const float* srgbDecodeTable();
 
 }  // namespace facet::cpu

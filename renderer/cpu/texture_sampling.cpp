@@ -2,31 +2,25 @@
 
 #include <cmath>
 
-#include <glm/common.hpp>
-
-#include "cpu/srgb_table.h"
+#include "image/srgb.h"
 
 namespace facet::cpu {
 namespace {
 
-int wrap(int i, int size) { return ((i % size) + size) % size; }
-
-// decodeSrgb(glm::vec3(c.r, c.g, c.b) / 255.0f), by a table of the 256 values per channel.
+// The texel (x, y), bottom row first, decoded to linear by the shared table.
 glm::vec3 texel(const Image& image, int x, int y) {
-  static const float* const decoded = srgbDecodeTable();
+  const float* decoded = srgbTables().decoded.data();
   const Rgba8 c = image.at(x, y);
   return {decoded[c.r], decoded[c.g], decoded[c.b]};
 }
 
+// floor(x) as a texel index: beyond ±2^24 every float is a whole number, and
+// the clamp keeps the conversion defined without changing any texel inside.
+int texelIndex(float x0) { return static_cast<int>(x0 < -16777216.0f ? -16777216.0f : (x0 > 16777216.0f ? 16777216.0f : x0)); }
+
 }  // namespace
 
 glm::vec3 lerp(glm::vec3 a, glm::vec3 b, float t) { return a + t * (b - a); }
-
-glm::vec3 decodeSrgb(glm::vec3 c) {
-  glm::vec3 out;
-  for (int i = 0; i < 3; ++i) out[i] = c[i] <= 0.04045f ? c[i] / 12.92f : std::pow((c[i] + 0.055f) / 1.055f, 2.4f);
-  return out;
-}
 
 glm::vec3 sampleBaseColor(const Image& image, glm::vec2 st) {
   const int w = image.width(), h = image.height();
@@ -35,8 +29,7 @@ glm::vec3 sampleBaseColor(const Image& image, glm::vec2 st) {
   if (!std::isfinite(x) || !std::isfinite(y)) return texel(image, 0, 0);
   const float x0 = std::floor(x), y0 = std::floor(y);
   const float fx = x - x0, fy = y - y0;
-  // Coordinates far outside [0,1] still wrap: reduce before converting to int, which could overflow.
-  const int ix = static_cast<int>(std::fmod(x0, static_cast<float>(w))), iy = static_cast<int>(std::fmod(y0, static_cast<float>(h)));
+  const int ix = texelIndex(x0), iy = texelIndex(y0);
   const int ix0 = wrap(ix, w), ix1 = wrap(ix + 1, w), iy0 = wrap(iy, h), iy1 = wrap(iy + 1, h);
   const glm::vec3 c00 = texel(image, ix0, iy0), c10 = texel(image, ix1, iy0);
   const glm::vec3 c01 = texel(image, ix0, iy1), c11 = texel(image, ix1, iy1);

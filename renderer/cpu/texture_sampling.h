@@ -8,11 +8,10 @@
 
 namespace facet::cpu {
 
-// IEC 61966-2-1 inverse: an sRGB-encoded value in [0,1] to linear.
-glm::vec3 decodeSrgb(glm::vec3 c);
+// REPEAT: i mod size in [0, size), with % only on non-negative operands.
+inline int wrap(int i, int size) { return i >= 0 ? i % size : size - 1 - (-1 - i) % size; }
 
-// a + t·(b - a), as GLSL's mix computes it on llvmpipe (glm::mix computes
-// a·(1 - t) + b·t, which rounds differently).
+// a + t·(b - a), written out on both sides (GLSL's mix may round as a·(1 - t) + b·t).
 glm::vec3 lerp(glm::vec3 a, glm::vec3 b, float t);
 
 // Bilinear from four texels, REPEAT wrap, no mipmaps; t = 0 is the top of the

@@ -1,5 +1,7 @@
 #include "cpu/thread_pool.h"
 
+#include "cpu/denormals.h"
+
 namespace facet::cpu {
 
 ThreadPool::ThreadPool(int threads) : size_(threads < 1 ? 1 : threads) {
@@ -15,22 +17,34 @@ ThreadPool::~ThreadPool() {
   for (std::thread& t : threads_) t.join();
 }
 
-void ThreadPool::run(FunctionRef<void(int)> work) {
-  if (size_ == 1) {
-    work(0);
-    return;
+void ThreadPool::runOne(const FunctionRef<void(int)>& work, int worker) {
+  const FlushDenormals flush;
+  try {
+    work(worker);
+  } catch (...) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!failure_) failure_ = std::current_exception();
   }
-  {
+}
+
+void ThreadPool::run(FunctionRef<void(int)> work) {
+  if (size_ > 1) {
     std::lock_guard<std::mutex> lock(mutex_);
     work_ = &work;
     running_ = size_ - 1;
     ++generation_;
   }
   start_.notify_all();
-  work(0);
-  std::unique_lock<std::mutex> lock(mutex_);
-  done_.wait(lock, [this] { return running_ == 0; });
-  work_ = nullptr;
+  runOne(work, 0);
+  std::exception_ptr failure;
+  {
+    std::unique_lock<std::mutex> lock(mutex_);
+    done_.wait(lock, [this] { return running_ == 0; });
+    work_ = nullptr;
+    failure = failure_;
+    failure_ = nullptr;
+  }
+  if (failure) std::rethrow_exception(failure);
 }
 
 void ThreadPool::loop(int worker) {
@@ -44,7 +58,7 @@ void ThreadPool::loop(int worker) {
       seen = generation_;
       work = work_;
     }
-    (*work)(worker);
+    runOne(*work, worker);
     {
       std::lock_guard<std::mutex> lock(mutex_);
       if (--running_ == 0) done_.notify_one();

@@ -1,12 +1,17 @@
 #pragma once
 // A fixed set of worker threads kept for the renderer's lifetime, so a frame
 // starts no thread. run(work) calls work(worker) once on every worker
-// (worker 0 is the calling thread) and returns when all have finished.
+// (worker 0 is the calling thread) and returns when all have finished, with
+// denormals flushed while the work runs (denormals.h). An exception thrown
+// by the work on any worker reaches the caller of run, after every worker
+// has finished (the first one thrown; the others are dropped).
 #include <condition_variable>
-#include "cpu/function_ref.h"
+#include <exception>
 #include <mutex>
 #include <thread>
 #include <vector>
+
+#include "cpu/function_ref.h"
 
 namespace facet::cpu {
 
@@ -22,6 +27,8 @@ class ThreadPool {
 
  private:
   void loop(int worker);
+  // work(worker) with denormals flushed; an exception is kept in failure_.
+  void runOne(const FunctionRef<void(int)>& work, int worker);
 
   int size_;
   std::vector<std::thread> threads_;
@@ -31,6 +38,7 @@ class ThreadPool {
   unsigned long generation_ = 0;
   int running_ = 0;
   bool stop_ = false;
+  std::exception_ptr failure_;
 };
 
 }  // namespace facet::cpu

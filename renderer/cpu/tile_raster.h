@@ -10,52 +10,41 @@
 #include <vector>
 
 #include "cpu/frame_buffers.h"
+#include "cpu/triangle_setup.h"
 
 namespace facet::cpu {
 
-// The triangle's pixel bounding box within [x0, x1]×[y0, y1] (inclusive);
-// false when empty.
-inline bool boundsWithin(const BinnedTriangle& t, int x0, int y0, int x1, int y1, int& minX, int& minY, int& maxX, int& maxY) {
-  const std::int64_t lx = std::min({t.X[0], t.X[1], t.X[2]}), hx = std::max({t.X[0], t.X[1], t.X[2]});
-  const std::int64_t ly = std::min({t.Y[0], t.Y[1], t.Y[2]}), hy = std::max({t.Y[0], t.Y[1], t.Y[2]});
-  minX = static_cast<int>(std::max<std::int64_t>(x0, (lx + 255) >> 8));
-  maxX = static_cast<int>(std::min<std::int64_t>(x1, hx >> 8));
-  minY = static_cast<int>(std::max<std::int64_t>(y0, (ly + 255) >> 8));
-  maxY = static_cast<int>(std::min<std::int64_t>(y1, hy >> 8));
-  return minX <= maxX && minY <= maxY;
-}
-
-// Calls visit(bins, index, triangle, vertices, minX, minY, maxX, maxY) for
-// each triangle binned to `tile` whose pixel box reaches into r, in
-// submission order (worker 0's bins first), with that box clipped to r;
-// vertices[k] views the triangle's packed window vertex k.
+// Calls visit(bins, index, triangle, vertices, box) for each triangle
+// binned to `tile` whose pixel box reaches into r, in submission order
+// (worker 0's bins first), with that box clipped to r; vertices[k] views the
+// triangle's packed window vertex k, in set-up order.
 template <class Visit>
 void forEachTriangleInTile(const std::vector<WorkerBins>& workers, const PassVertices& v, int tile, const TileRect& r, Visit&& visit) {
   for (const WorkerBins& bins : workers)
     for (const std::uint32_t index : bins.tiles[static_cast<std::size_t>(tile)]) {
       const BinnedTriangle& t = bins.triangles[index];
-      int minX, minY, maxX, maxY;
-      if (!boundsWithin(t, r.x0, r.y0, r.x1, r.y1, minX, minY, maxX, maxY)) continue;
+      PixelBox box;
+      if (!pixelBox(t.snapped, r.x0, r.y0, r.x1, r.y1, box)) continue;
       InterpolationVertex vertices[3];
       for (int k = 0; k < 3; ++k) {
         const float* p = bins.vertex(v, t.vertex[k]);
         vertices[k] = {p[0], p[1], p[2], p[3], p + 4};
       }
-      visit(bins, index, t, vertices, minX, minY, maxX, maxY);
+      visit(bins, index, t, vertices, box);
     }
 }
 
 template <class Fragment>
-void rasterizeBlocks(const BinnedTriangle& t, int minX, int minY, int maxX, int maxY, Fragment&& fragment) {
+void rasterizeBlocks(const SnappedTriangle& t, const PixelBox& box, Fragment&& fragment) {
+  EdgeFunction edges[3];
+  edgeFunctions(t, edges);
   std::int64_t c[3], sx[3], sy[3];  // value at pixel (0, 0), step per pixel in x and in y
   for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3;
-    const std::int64_t dcdx = std::int64_t{t.Y[i]} - t.Y[j], dcdy = std::int64_t{t.X[i]} - t.X[j];
-    c[i] = dcdx * t.X[i] - dcdy * t.Y[i];
-    if (dcdx < 0 || (dcdx == 0 && dcdy > 0)) c[i] += 1;  // left or bottom edge: inclusive
-    sx[i] = -dcdx * 256;
-    sy[i] = dcdy * 256;
+    c[i] = edges[i].c;
+    sx[i] = -edges[i].dcdx * 256;
+    sy[i] = edges[i].dcdy * 256;
   }
+  const int minX = box.minX, minY = box.minY, maxX = box.maxX, maxY = box.maxY;
   for (int by = minY & ~7; by <= maxY; by += 8) {
     const int y0 = std::max(by, minY), y1 = std::min(by + 7, maxY);
     for (int bx = minX & ~7; bx <= maxX; bx += 8) {

@@ -17,44 +17,53 @@ inline constexpr int kMaxLights = 8;  // kMaxLights in frame_block.glsl
 
 // LightData in frame_block.glsl.
 struct LightBlock {
-  glm::vec4 positionKind;        // xyz: world position; w: kind (LightKind as a number)
+  glm::vec4 position;            // xyz: world position (point, spot)
   glm::vec4 directionCosCutoff;  // xyz: world direction, unit; w: cos β (spot)
   glm::vec4 intensity;           // rgb: I_p = colour · intensity
   glm::vec4 attenuation;         // xyz: c1, c2, c3
-  glm::ivec4 shadow;             // x: has a shadow map; y: its first layer in shadowMaps
+  glm::ivec4 shadow;             // x: the first layer of its faces in shadowMaps
   std::array<glm::mat4, 6> shadowFromWorld;  // per face: world -> shadow-map (u, v, z) after the divide
 };
 
-// Frame in frame_block.glsl.
+// Frame in frame_block.glsl. What the lit programs are specialized on (light
+// count and kinds, shadowed lights, specular model, PCF radius) is not here.
 struct FrameBlock {
-  glm::mat4 clipFromWorld;   // PM·EM
   glm::vec4 eyePosition;     // xyz: P_eye; w: 1 perspective, 0 parallel
   glm::vec4 towardEye;       // xyz: -k, V under parallel projection
-  glm::vec4 ambientCounts;   // x: I_a; y: light count; z: shading mode; w: specular model
-  glm::vec4 shadowParams;    // x: b_slope; y: b_min; z: PCF radius r; w: map size S
+  glm::vec4 ambient;         // x: I_a
+  glm::vec4 shadowParams;    // x: b_slope; y: b_min; z: map size S
   glm::vec4 background;      // rgb: linear background
   std::array<LightBlock, kMaxLights> lights;
 };
 
+// SrgbTables in srgb.glsl: image/srgb.h's two tables, four floats to a vec4 (std140 arrays of float would pad each to 16 bytes).
+struct SrgbBlock {
+  std::array<float, 256> thresholds;
+  std::array<float, 256> decoded;
+};
+static_assert(sizeof(SrgbBlock) == 2 * 64 * 16);
+
 // std140: a struct's members at multiples of 16, the struct padded to 16, arrays of it at that stride.
-static_assert(offsetof(LightBlock, positionKind) == 0);
+static_assert(offsetof(LightBlock, position) == 0);
 static_assert(offsetof(LightBlock, directionCosCutoff) == 16);
 static_assert(offsetof(LightBlock, intensity) == 32);
 static_assert(offsetof(LightBlock, attenuation) == 48);
 static_assert(offsetof(LightBlock, shadow) == 64);
 static_assert(offsetof(LightBlock, shadowFromWorld) == 80);
 static_assert(sizeof(LightBlock) == 80 + 6 * 64);
-static_assert(offsetof(FrameBlock, clipFromWorld) == 0);
-static_assert(offsetof(FrameBlock, eyePosition) == 64);
-static_assert(offsetof(FrameBlock, towardEye) == 80);
-static_assert(offsetof(FrameBlock, ambientCounts) == 96);
-static_assert(offsetof(FrameBlock, shadowParams) == 112);
-static_assert(offsetof(FrameBlock, background) == 128);
-static_assert(offsetof(FrameBlock, lights) == 144);
-static_assert(sizeof(FrameBlock) == 144 + kMaxLights * sizeof(LightBlock));
+static_assert(offsetof(FrameBlock, eyePosition) == 0);
+static_assert(offsetof(FrameBlock, towardEye) == 16);
+static_assert(offsetof(FrameBlock, ambient) == 32);
+static_assert(offsetof(FrameBlock, shadowParams) == 48);
+static_assert(offsetof(FrameBlock, background) == 64);
+static_assert(offsetof(FrameBlock, lights) == 80);
+static_assert(sizeof(FrameBlock) == 80 + kMaxLights * sizeof(LightBlock));
 
 // The block's values for one frame, from FrameInputs only. Throws
 // facet::Error when the frame has more than kMaxLights lights.
 FrameBlock makeFrameBlock(const FrameInputs& frame);
+
+// The sRGB tables, once per renderer.
+SrgbBlock makeSrgbBlock();
 
 }  // namespace facet::gl

@@ -16,6 +16,7 @@ namespace {
 
 // Bindings the shaders declare (frame_block.glsl, draw_uniforms.glsl, lit_flat.vert).
 constexpr GLuint kFrameBlockBinding = 0;      // uniform block Frame
+constexpr GLuint kSrgbBlockBinding = 1;       // uniform block SrgbTables (srgb.glsl)
 constexpr GLuint kShadowMapsUnit = 0;         // sampler2DArray shadowMaps
 constexpr GLuint kBaseColorTextureUnit = 1;   // usampler2D baseColorTexture
 constexpr GLuint kMeshIndicesBinding = 0;     // storage buffers of lit_flat.vert
@@ -48,6 +49,9 @@ GlFrameRenderer::GlFrameRenderer(const GetProcAddress& getProcAddress)
     : gl_(loadGlFunctions(getProcAddress)), rendererName_(rendererAndVersion(gl_)) {
   frameUniforms_ = createBuffer(gl_);
   gl_.glNamedBufferStorage(frameUniforms_.id(), sizeof(FrameBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  srgbUniforms_ = createBuffer(gl_);
+  const SrgbBlock srgb = makeSrgbBlock();
+  gl_.glNamedBufferStorage(srgbUniforms_.id(), sizeof srgb, &srgb, 0);
   emptyVertexArray_ = createVertexArray(gl_);
 }
 
@@ -70,6 +74,7 @@ std::vector<PassTiming> GlFrameRenderer::drawFrame(const FrameInputs& frame) {
   const FrameBlock block = makeFrameBlock(frame);
   gl_.glNamedBufferSubData(frameUniforms_.id(), 0, sizeof block, &block);
   gl_.glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniforms_.id());
+  gl_.glBindBufferBase(GL_UNIFORM_BUFFER, kSrgbBlockBinding, srgbUniforms_.id());
   // The contract's conventions, set every frame because a viewer's UI shares the context.
   gl_.glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // clip z in [0, w], window origin at the lower left
   gl_.glFrontFace(GL_CCW);                           // counter-clockwise in window coordinates is front

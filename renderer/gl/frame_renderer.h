@@ -78,6 +78,7 @@ class GlFrameRenderer {
   std::optional<DepthProgram> depthProgram_;
   std::optional<ShaderProgram> backgroundProgram_;
   GlObject frameUniforms_;     // the Frame block (FrameBlock), binding 0
+  GlObject srgbUniforms_;      // the SrgbTables block (SrgbBlock), binding 1, written once
   GlObject emptyVertexArray_;  // for draws that read no attributes (background, flat shading)
   SceneBuffers scene_;
   ShadowMapArray shadowMaps_;

@@ -58,6 +58,7 @@ FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings)
     fl.light = light;
     if (light.kind != LightKind::Point) fl.light.direction = glm::normalize(light.direction);
     if (light.kind == LightKind::Spot) fl.cosCutoff = std::cos(glm::radians(light.spotCutoffDeg));
+    fl.intensity = light.color * light.intensity;
     fl.hasShadowMap = settings.shadows.enabled && light.castsShadow;
     if (fl.hasShadowMap) {
       fl.frustum = lightFrustum(fl.light, sphere);

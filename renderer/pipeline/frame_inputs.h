@@ -26,6 +26,7 @@ struct FrameInstance {
 
 struct FrameLight {
   Light light;                    // world space, direction normalized
+  glm::vec3 intensity{0.0f};      // I_p = colour · intensity, linear RGB
   float cosCutoff = -1.0f;        // cos β (spot); -1 for other kinds
   bool hasShadowMap = false;      // castsShadow and shadows enabled
   LightFrustum frustum;           // faces used in pass 1 and pass 2

@@ -26,7 +26,7 @@
 #include "compare/diff_report_folder.h"
 #include "compare/image_diff.h"
 #include "cpu/cpu_renderer.h"
-#include "cpu/lighting.h"
+#include "image/srgb.h"
 #include "gl/gl_renderer.h"
 #include "image/png.h"
 #include "pipeline/frame_inputs.h"
@@ -132,8 +132,7 @@ int main(int argc, char** argv) {
       writePng(glPath, glImage);
       writePng(cpuPath, cpuImage);
 
-      const glm::vec3 encoded = cpu::encodeSrgb(frame.background);
-      const Rgba8 background{cpu::quantize(encoded.r), cpu::quantize(encoded.g), cpu::quantize(encoded.b), 255};
+      const Rgba8 background = encodePixel(frame.background);
       const long coverage = coverageMismatches(glImage, cpuImage, background);
       const DiffResult d = compareImages(cpuImage, glImage, agreement);
       const bool withinTight = compareImages(cpuImage, glImage, agreement::tight()).status == DiffStatus::Pass;

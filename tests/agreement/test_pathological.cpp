@@ -10,7 +10,7 @@
 #include "agreement_thresholds.h"
 #include "compare/image_diff.h"
 #include "cpu/cpu_renderer.h"
-#include "cpu/lighting.h"
+#include "image/srgb.h"
 #include "gl/gl_renderer.h"
 #include "math/transforms.h"
 #include "pipeline/frame_inputs.h"
@@ -37,8 +37,7 @@ Renders renderBoth(const Scene& scene, const RenderSettings& settings) {
   Renders r;
   r.gl = glRenderer().render(scene, frame).image;
   r.cpu = makeCpuRenderer(2)->render(scene, frame).image;
-  const glm::vec3 encoded = cpu::encodeSrgb(frame.background);
-  r.background = {cpu::quantize(encoded.r), cpu::quantize(encoded.g), cpu::quantize(encoded.b), 255};
+  r.background = encodePixel(frame.background);
   return r;
 }
 

@@ -97,14 +97,24 @@ TEST_CASE("perspective-correct interpolation across a slanted quad matches the a
   double worstCorrect = 0, worstLinear = 0;
   int pixels = 0;
   for (const auto& tri : {std::array{0, 1, 2}, std::array{0, 2, 3}}) {
-    TriangleSetup setup;
-    REQUIRE(setupTriangle(w[tri[0]], w[tri[1]], w[tri[2]], size, size, setup));
-    Interpolation in(w[tri[0]], w[tri[1]], w[tri[2]]);
-    rasterize(setup, 0, size, [&](int px, int py) {
-      in.at(px, py);
+    SnappedTriangle snapped;
+    PixelBox box;
+    REQUIRE(snapTriangle({w[tri[0]].x, w[tri[1]].x, w[tri[2]].x}, {w[tri[0]].y, w[tri[1]].y, w[tri[2]].y}, snapped));
+    REQUIRE(pixelBox(snapped, 0, 0, size - 1, size - 1, box));
+    InterpolationVertex vertices[3];
+    for (int k = 0; k < 3; ++k) {
+      const WindowVertex& corner = w[tri[static_cast<std::size_t>(k)]];
+      vertices[k] = {corner.x, corner.y, corner.z, corner.invW, corner.varyings.data()};
+    }
+    toSetUpOrder(snapped, vertices);
+    Interpolation in(vertices[0], vertices[1], vertices[2]);
+    in.setUpVaryings(1);
+    rasterize(snapped, box, [&](int px, int py) {
+      float varying = 0;
+      in.varyingsAt(px, py, &varying);
       const double yNdc = (py + 0.5) / 32.0 - 1.0;
       const double analytic = -1.0 / (yNdc * std::tan(glm::radians(45.0)));
-      worstCorrect = std::max(worstCorrect, std::fabs(in.varying(0) - analytic) / analytic);
+      worstCorrect = std::max(worstCorrect, std::fabs(varying - analytic) / analytic);
       // What screen-linear interpolation would give: the same weights without the 1/w.
       const float x = static_cast<float>(px) + 0.5f, y = static_cast<float>(py) + 0.5f;
       const WindowVertex &a = w[tri[0]], &b = w[tri[1]], &c = w[tri[2]];

@@ -1,7 +1,8 @@
-// The CPU renderer's fast paths give the same bits as the plain formulas:
-// the sRGB table against quantize(encodeSrgb), the four-lane Phong batch
-// against illuminate, thread counts and reused buffers (shadow maps cleared
-// tile by tile) against a fresh renderer.
+// The CPU renderer's fast paths give the same bits as the plain ones: the
+// sRGB bucket table against the thresholds' binary search (and those against
+// the IEC formula), the four-lane Phong batch against illuminate<float>,
+// thread counts and reused buffers (shadow maps cleared tile by tile)
+// against a fresh renderer.
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -16,7 +17,7 @@
 #include "cpu/lighting.h"
 #include "cpu/phong_batch.h"
 #include "cpu/srgb_table.h"
-#include "cpu/texture_sampling.h"
+#include "image/srgb.h"
 #include "pipeline/frame_inputs.h"
 #include "scene/default_scene.h"
 #include "math/transforms.h"
@@ -25,7 +26,13 @@ using namespace facet;
 
 namespace {
 
-unsigned formula(float linear) { return cpu::quantize(cpu::encodeSrgb(glm::vec3(linear)).r); }
+unsigned formula(float linear) { return encodeLevel(linear); }
+
+// IEC 61966-2-1 written out here, in double: the 8-bit level of c in [0, 1].
+unsigned iecLevel(float c) {
+  const double x = c;
+  return static_cast<unsigned>(std::floor(255.0 * (x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1.0 / 2.4) - 0.055) + 0.5));
+}
 
 Image render(Renderer& renderer, const Scene& scene, const RenderSettings& settings) {
   return renderer.render(scene, buildFrameInputs(scene, settings)).image;
@@ -33,7 +40,26 @@ Image render(Renderer& renderer, const Scene& scene, const RenderSettings& setti
 
 }  // namespace
 
-TEST_CASE("sRGB table: equal to quantize(encodeSrgb(c)) for every float from 2^-9 to 1, and at the edges") {
+TEST_CASE("sRGB thresholds: each is the first float of its level by the IEC formula, and every byte decodes to the formula's value") {
+  const SrgbTables& tables = srgbTables();
+  for (unsigned k = 1; k < 256; ++k) {
+    CAPTURE(k);
+    const float t = tables.thresholds[k];
+    CHECK(iecLevel(t) == k);
+    CHECK(iecLevel(std::nextafter(t, 0.0f)) == k - 1);
+    CHECK(encodeLevel(t) == k);
+    CHECK(encodeLevel(std::nextafter(t, 0.0f)) == k - 1);
+  }
+  for (unsigned v = 0; v < 256; ++v) {
+    const double c = v / 255.0;
+    CHECK(tables.decoded[v] == static_cast<float>(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4)));
+  }
+  CHECK(encodeLevel(-1.0f) == 0);
+  CHECK(encodeLevel(std::numeric_limits<float>::quiet_NaN()) == 0);
+  CHECK(encodeLevel(2.0f) == 255);
+}
+
+TEST_CASE("sRGB table: equal to the thresholds' binary search for every float from 2^-9 to 1, and at the edges") {
   const cpu::SrgbTable& table = cpu::srgbTable();
   const std::uint32_t first = std::bit_cast<std::uint32_t>(0x1p-9f), last = std::bit_cast<std::uint32_t>(1.0f);
   std::uint64_t mismatches = 0;
@@ -57,11 +83,6 @@ TEST_CASE("sRGB table: equal to quantize(encodeSrgb(c)) for every float from 2^-
     for (int k = 0; k < 4; ++k) mismatches4 += out[k] != table.encode(four[k]);
   }
   CHECK(mismatches4 == 0);
-}
-
-TEST_CASE("sRGB decode table: equal to decodeSrgb(v / 255) for every byte") {
-  const float* decoded = cpu::srgbDecodeTable();
-  for (int v = 0; v < 256; ++v) CHECK(std::bit_cast<std::uint32_t>(decoded[v]) == std::bit_cast<std::uint32_t>(cpu::decodeSrgb(glm::vec3(static_cast<float>(v)) / 255.0f).r));
 }
 
 TEST_CASE("CPU renderer: the image does not depend on the thread count, nor on the frames rendered before") {
@@ -94,7 +115,7 @@ TEST_CASE("CPU renderer: the image does not depend on the thread count, nor on t
   }
 }
 
-TEST_CASE("Phong batch: four lanes at a time give the bits of illuminate, shade and the sRGB encode, per pixel") {
+TEST_CASE("Phong batch: four lanes at a time give the bits of illuminate<float>, shade and the sRGB encode, per pixel") {
   const Scene scene = makeDefaultScene();
   std::mt19937 random(12345);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f), coordinate(-3.0f, 3.0f);
@@ -138,8 +159,8 @@ TEST_CASE("Phong batch: four lanes at a time give the bits of illuminate, shade 
         const glm::vec3 interpolated = N * (0.5f + unit(random));  // not unit length, as interpolated normals are
         materials.push_back(material);
         batch.add(static_cast<std::size_t>(i), P, interpolated, back, baseColor, materials.back());
-        const glm::vec3 lit = back ? -glm::normalize(interpolated) : glm::normalize(interpolated);
-        scalar.at(i, 0) = cpu::srgbTable().pixel(cpu::shade(cpu::illuminate(frame, maps, material, P, lit, cpu::viewVector(frame, P)), baseColor));
+        const glm::vec3 lit = back ? -cpu::normalize3(interpolated) : cpu::normalize3(interpolated);
+        scalar.at(i, 0) = encodePixel(cpu::shade(cpu::illuminate(frame, maps, cpu::laneMaterial(material), P, lit, cpu::viewVector<float>(frame, P)), baseColor));
       }
       batch.flush();
       CAPTURE(static_cast<int>(model));

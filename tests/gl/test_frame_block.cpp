@@ -26,14 +26,14 @@ struct Member {
 
 std::vector<Member> frameBlockMembers() {
   std::vector<Member> members = {
-      {"Frame.clipFromWorld", offsetof(FrameBlock, clipFromWorld)}, {"Frame.eyePosition", offsetof(FrameBlock, eyePosition)},
-      {"Frame.towardEye", offsetof(FrameBlock, towardEye)},         {"Frame.ambientCounts", offsetof(FrameBlock, ambientCounts)},
-      {"Frame.shadowParams", offsetof(FrameBlock, shadowParams)},   {"Frame.background", offsetof(FrameBlock, background)},
+      {"Frame.eyePosition", offsetof(FrameBlock, eyePosition)},   {"Frame.towardEye", offsetof(FrameBlock, towardEye)},
+      {"Frame.ambient", offsetof(FrameBlock, ambient)},           {"Frame.shadowParams", offsetof(FrameBlock, shadowParams)},
+      {"Frame.background", offsetof(FrameBlock, background)},
   };
   for (std::size_t i = 0; i < static_cast<std::size_t>(kMaxLights); ++i) {
     const std::string light = "Frame.lights[" + std::to_string(i) + "].";
     const std::size_t base = offsetof(FrameBlock, lights) + i * sizeof(LightBlock);
-    members.push_back({light + "positionKind", base + offsetof(LightBlock, positionKind)});
+    members.push_back({light + "position", base + offsetof(LightBlock, position)});
     members.push_back({light + "directionCosCutoff", base + offsetof(LightBlock, directionCosCutoff)});
     members.push_back({light + "intensity", base + offsetof(LightBlock, intensity)});
     members.push_back({light + "attenuation", base + offsetof(LightBlock, attenuation)});
@@ -86,17 +86,16 @@ TEST_CASE("makeFrameBlock copies FrameInputs into the block's slots") {
   const Scene scene = makeDefaultScene();
   const FrameInputs frame = buildFrameInputs(scene, test::smallSettings(ShadingMode::Gouraud));
   const FrameBlock block = makeFrameBlock(frame);
-  CHECK(block.clipFromWorld == frame.clipFromWorld);
   CHECK(block.eyePosition == glm::vec4(frame.eyePosition, 1.0f));  // w = 1: perspective
-  CHECK(block.ambientCounts == glm::vec4(frame.ambient, 1.0f, 1.0f, 1.0f));  // one light, Gouraud, Blinn-Phong
-  CHECK(block.shadowParams == glm::vec4(frame.shadows.biasSlope, frame.shadows.biasMin, 1.0f, 512.0f));
+  CHECK(block.ambient == glm::vec4(frame.ambient, 0.0f, 0.0f, 0.0f));
+  CHECK(block.shadowParams == glm::vec4(frame.shadows.biasSlope, frame.shadows.biasMin, 512.0f, 0.0f));
   const FrameLight& light = frame.lights[0];
-  CHECK(block.lights[0].positionKind == glm::vec4(light.light.position, 0.0f));  // kLightPoint
-  CHECK(block.lights[0].intensity == glm::vec4(light.light.color * light.light.intensity, 0.0f));
+  CHECK(block.lights[0].position == glm::vec4(light.light.position, 1.0f));
+  CHECK(block.lights[0].intensity == glm::vec4(light.intensity, 0.0f));
   CHECK(block.lights[0].attenuation == glm::vec4(light.light.attenuation, 0.0f));
-  CHECK(block.lights[0].shadow == glm::ivec4(1, 0, 0, 0));
+  CHECK(block.lights[0].shadow == glm::ivec4(0, 0, 0, 0));  // its faces start at layer 0
   for (std::size_t face = 0; face < 6; ++face) CHECK(block.lights[0].shadowFromWorld[face] == light.shadowFromWorld[face]);
-  CHECK(block.lights[1].shadow == glm::ivec4(0));  // unused slots stay zero
+  CHECK(block.lights[1].intensity == glm::vec4(0.0f));  // unused slots stay zero
 }
 
 TEST_CASE("a frame with more lights than the block holds is refused with facet::Error") {

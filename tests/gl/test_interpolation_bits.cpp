@@ -108,12 +108,14 @@ TEST_CASE("llvmpipe's depth and perspective-correct attributes equal the CPU's p
     std::vector<Planes> fanPlanes;
     std::vector<int> coveredBy(kWidth * kHeight, -1);
     for (std::size_t f = 0; f + 2 < fan.size(); f += 3) {
-      cpu::TriangleSetup setup;
-      if (!cpu::setupTriangle(fan[f], fan[f + 1], fan[f + 2], kWidth, kHeight, setup)) continue;
-      const std::size_t order[3] = {f + (setup.frontFacing ? 1 : 0), f + (setup.frontFacing ? 0 : 1), f + 2};  // llvmpipe's set-up order
-      const cpu::WindowVertex& a = fan[order[0]];
-      const cpu::WindowVertex& b = fan[order[1]];
-      const cpu::WindowVertex& c = fan[order[2]];
+      cpu::SnappedTriangle snapped;
+      cpu::PixelBox box;
+      if (!cpu::snapTriangle({fan[f].x, fan[f + 1].x, fan[f + 2].x}, {fan[f].y, fan[f + 1].y, fan[f + 2].y}, snapped) ||
+          !cpu::pixelBox(snapped, 0, 0, kWidth - 1, kHeight - 1, box))
+        continue;
+      const cpu::WindowVertex* v[3] = {&fan[f], &fan[f + 1], &fan[f + 2]};
+      cpu::toSetUpOrder(snapped, v);
+      const cpu::WindowVertex &a = *v[0], &b = *v[1], &c = *v[2];
       const cpu::PlaneSetup s = cpu::setUpPlanes(a.x, a.y, b.x, b.y, c.x, c.y);
       Planes p;
       p.z = cpu::planeOf(s, a.z, b.z, c.z);
@@ -122,7 +124,7 @@ TEST_CASE("llvmpipe's depth and perspective-correct attributes equal the CPU's p
         p.attribute[k] = cpu::planeOf(s, a.varyings[k] * a.invW, b.varyings[k] * b.invW, c.varyings[k] * c.invW);
       const int index = static_cast<int>(fanPlanes.size());
       fanPlanes.push_back(p);
-      cpu::rasterize(setup, 0, kHeight, [&](int px, int py) { coveredBy[static_cast<std::size_t>(py * kWidth + px)] = index; });
+      cpu::rasterize(snapped, box, [&](int px, int py) { coveredBy[static_cast<std::size_t>(py * kWidth + px)] = index; });
     }
 
     for (int py = 0; py < kHeight; ++py)

@@ -53,7 +53,7 @@ TEST_CASE("a driver log names files, on one line") {
 }
 
 TEST_CASE("every shader file is embedded, and every program of the backend compiles and links, in every specialization") {
-  for (const char* name : {"frame_block.glsl", "transform.glsl", "lighting.glsl", "srgb_encode.glsl", "texture.glsl", "draw_uniforms.glsl"})
+  for (const char* name : {"frame_block.glsl", "transform.glsl", "shading_math.glsl", "lighting.glsl", "srgb.glsl", "texture.glsl", "draw_uniforms.glsl"})
     CHECK_MESSAGE(findEmbeddedShaderFile(name).has_value(), name);
   test::GlHarness harness;
   const Scene scene = makeDefaultScene();

@@ -1,0 +1,149 @@
+#pragma once
+// The shading code is written once (shading_math.h, lighting.h) and runs on
+// one pixel or on four at a time. This header gives it the lane types: for
+// one pixel, float, bool, std::int32_t and glm::vec3; for four, Float4,
+// Mask4, Int4 and Vec3x4 over SSE2, whose every operation is the IEEE
+// operation of the one-pixel type lane by lane (no fused multiply-add, no
+// approximate reciprocal), so both give the same bits. Where SSE2 is
+// missing, only the one-pixel types exist.
+#include <cmath>
+#include <cstdint>
+
+#include <glm/vec3.hpp>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+namespace facet::cpu {
+
+// [SECTION] One lane: the operations the generic code calls by name.
+
+inline float select(bool mask, float a, float b) { return mask ? a : b; }
+inline std::int32_t select(bool mask, std::int32_t a, std::int32_t b) { return mask ? a : b; }
+inline glm::vec3 select(bool mask, glm::vec3 a, glm::vec3 b) { return mask ? a : b; }
+inline bool anyLane(bool mask) { return mask; }
+inline bool both(bool a, bool b) { return a && b; }
+inline float squareRoot(float x) { return std::sqrt(x); }
+inline float floorOf(float x) { return std::floor(x); }
+inline std::int32_t bitsOf(float x) {
+  std::int32_t i;
+  static_assert(sizeof i == sizeof x);
+  __builtin_memcpy(&i, &x, sizeof i);
+  return i;
+}
+inline float floatOfBits(std::int32_t i) {
+  float x;
+  __builtin_memcpy(&x, &i, sizeof x);
+  return x;
+}
+inline float toFloat(std::int32_t i) { return static_cast<float>(i); }
+inline std::int32_t truncateToInt(float x) { return static_cast<std::int32_t>(x); }  // |x| < 2^31
+
+#if defined(__SSE2__)
+
+// [SECTION] Four lanes.
+
+struct Mask4 {
+  __m128 m;  // all ones or all zeros per lane
+};
+inline Mask4 operator&(Mask4 a, Mask4 b) { return {_mm_and_ps(a.m, b.m)}; }
+inline Mask4 operator|(Mask4 a, Mask4 b) { return {_mm_or_ps(a.m, b.m)}; }
+inline Mask4 operator!(Mask4 a) { return {_mm_xor_ps(a.m, _mm_castsi128_ps(_mm_set1_epi32(-1)))}; }
+inline Mask4 both(Mask4 a, Mask4 b) { return a & b; }
+inline bool anyLane(Mask4 a) { return _mm_movemask_ps(a.m) != 0; }
+inline int laneBits(Mask4 a) { return _mm_movemask_ps(a.m); }
+
+struct Float4 {
+  __m128 v;
+  Float4() = default;
+  explicit Float4(__m128 value) : v(value) {}
+  Float4(float value) : v(_mm_set1_ps(value)) {}  // a constant in every lane, as a float literal in the one-lane code
+};
+inline Float4 operator+(Float4 a, Float4 b) { return Float4(_mm_add_ps(a.v, b.v)); }
+inline Float4 operator-(Float4 a, Float4 b) { return Float4(_mm_sub_ps(a.v, b.v)); }
+inline Float4 operator*(Float4 a, Float4 b) { return Float4(_mm_mul_ps(a.v, b.v)); }
+inline Float4 operator/(Float4 a, Float4 b) { return Float4(_mm_div_ps(a.v, b.v)); }
+inline Float4 operator-(Float4 a) { return Float4(_mm_xor_ps(a.v, _mm_set1_ps(-0.0f))); }  // the sign bit, as float's unary minus
+inline Mask4 operator<(Float4 a, Float4 b) { return {_mm_cmplt_ps(a.v, b.v)}; }
+inline Mask4 operator>(Float4 a, Float4 b) { return {_mm_cmpgt_ps(a.v, b.v)}; }
+inline Mask4 operator<=(Float4 a, Float4 b) { return {_mm_cmple_ps(a.v, b.v)}; }
+inline Mask4 operator>=(Float4 a, Float4 b) { return {_mm_cmpge_ps(a.v, b.v)}; }
+inline Float4 select(Mask4 mask, Float4 a, Float4 b) { return Float4(_mm_or_ps(_mm_and_ps(mask.m, a.v), _mm_andnot_ps(mask.m, b.v))); }
+inline Float4 squareRoot(Float4 x) { return Float4(_mm_sqrt_ps(x.v)); }
+
+struct Int4 {
+  __m128i v;
+  Int4() = default;
+  explicit Int4(__m128i value) : v(value) {}
+  Int4(std::int32_t value) : v(_mm_set1_epi32(value)) {}
+};
+inline Int4 operator+(Int4 a, Int4 b) { return Int4(_mm_add_epi32(a.v, b.v)); }
+inline Int4 operator-(Int4 a, Int4 b) { return Int4(_mm_sub_epi32(a.v, b.v)); }
+inline Int4 operator&(Int4 a, Int4 b) { return Int4(_mm_and_si128(a.v, b.v)); }
+inline Int4 operator|(Int4 a, Int4 b) { return Int4(_mm_or_si128(a.v, b.v)); }
+inline Int4 operator>>(Int4 a, int n) { return Int4(_mm_srai_epi32(a.v, n)); }
+inline Int4 operator<<(Int4 a, int n) { return Int4(_mm_slli_epi32(a.v, n)); }
+inline Int4 select(Mask4 mask, Int4 a, Int4 b) {
+  const __m128i m = _mm_castps_si128(mask.m);
+  return Int4(_mm_or_si128(_mm_and_si128(m, a.v), _mm_andnot_si128(m, b.v)));
+}
+inline Int4 bitsOf(Float4 x) { return Int4(_mm_castps_si128(x.v)); }
+inline Float4 floatOfBits(Int4 i) { return Float4(_mm_castsi128_ps(i.v)); }
+inline Float4 toFloat(Int4 i) { return Float4(_mm_cvtepi32_ps(i.v)); }
+inline Int4 truncateToInt(Float4 x) { return Int4(_mm_cvttps_epi32(x.v)); }
+// floor for |x| < 2^31: truncate, then one less where that went up (negative non-integers).
+inline Float4 floorOf(Float4 x) {
+  const Float4 t = toFloat(truncateToInt(x));
+  return select(x < t, t - Float4(1.0f), t);
+}
+
+// Three components of four lanes: glm::vec3's operations, lane by lane.
+struct Vec3x4 {
+  Float4 x, y, z;
+  Vec3x4() = default;
+  Vec3x4(Float4 a, Float4 b, Float4 c) : x(a), y(b), z(c) {}
+  explicit Vec3x4(glm::vec3 v) : x(v.x), y(v.y), z(v.z) {}  // the same vector in every lane
+};
+inline Vec3x4 operator+(const Vec3x4& a, const Vec3x4& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline Vec3x4 operator-(const Vec3x4& a, const Vec3x4& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline Vec3x4 operator-(const Vec3x4& a) { return {-a.x, -a.y, -a.z}; }
+inline Vec3x4 operator*(Float4 s, const Vec3x4& v) { return {s * v.x, s * v.y, s * v.z}; }
+inline Vec3x4 operator*(const Vec3x4& v, Float4 s) { return {v.x * s, v.y * s, v.z * s}; }
+inline Vec3x4 operator*(const Vec3x4& a, const Vec3x4& b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
+inline Vec3x4 operator/(const Vec3x4& v, Float4 s) { return {v.x / s, v.y / s, v.z / s}; }
+inline Vec3x4 select(Mask4 mask, const Vec3x4& a, const Vec3x4& b) { return {select(mask, a.x, b.x), select(mask, a.y, b.y), select(mask, a.z, b.z)}; }
+
+#endif
+
+// The vector and integer types that go with a lane type.
+template <class F>
+struct LaneTypes;
+template <>
+struct LaneTypes<float> {
+  using Vec3 = glm::vec3;
+  using Int = std::int32_t;
+  using Mask = bool;
+};
+#if defined(__SSE2__)
+template <>
+struct LaneTypes<Float4> {
+  using Vec3 = Vec3x4;
+  using Int = Int4;
+  using Mask = Mask4;
+};
+#endif
+template <class F>
+using Vec3Of = typename LaneTypes<F>::Vec3;
+template <class F>
+using IntOf = typename LaneTypes<F>::Int;
+template <class F>
+using MaskOf = typename LaneTypes<F>::Mask;
+
+// A world-space vector as a lane type's vector (the same in every lane).
+template <class F>
+Vec3Of<F> splat(glm::vec3 v) {
+  return Vec3Of<F>(v);
+}
+
+}  // namespace facet::cpu

@@ -1,0 +1,55 @@
+#include "image/srgb.h"
+
+#include <bit>
+#include <cmath>
+#include <limits>
+
+namespace facet {
+namespace {
+
+// floor(255·E(c) + 0.5) for c in [0, 1], in double precision.
+unsigned levelOf(float c) {
+  const double x = c;
+  const double encoded = x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1.0 / 2.4) - 0.055;
+  return static_cast<unsigned>(std::floor(255.0 * encoded + 0.5));
+}
+
+SrgbTables build() {
+  SrgbTables t{};
+  t.thresholds[0] = -std::numeric_limits<float>::infinity();
+  // Non-negative floats order as their bit patterns: bisect on those in [0, 1].
+  const std::uint32_t one = std::bit_cast<std::uint32_t>(1.0f);
+  for (unsigned k = 1; k < 256; ++k) {
+    std::uint32_t lo = 0, hi = one;  // levelOf(1) = 255 ≥ k
+    while (lo < hi) {
+      const std::uint32_t mid = lo + (hi - lo) / 2;
+      if (levelOf(std::bit_cast<float>(mid)) >= k) hi = mid;
+      else lo = mid + 1;
+    }
+    t.thresholds[k] = std::bit_cast<float>(hi);
+  }
+  for (unsigned v = 0; v < 256; ++v) {
+    const double c = v / 255.0;
+    t.decoded[v] = static_cast<float>(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+  }
+  return t;
+}
+
+}  // namespace
+
+const SrgbTables& srgbTables() {
+  static const SrgbTables tables = build();
+  return tables;
+}
+
+std::uint8_t encodeLevel(float linear) {
+  const SrgbTables& t = srgbTables();
+  unsigned level = 0;
+  for (unsigned step = 128; step > 0; step /= 2)
+    if (t.thresholds[level + step] <= linear) level += step;
+  return static_cast<std::uint8_t>(level);
+}
+
+Rgba8 encodePixel(glm::vec3 linear) { return {encodeLevel(linear.r), encodeLevel(linear.g), encodeLevel(linear.b), 255}; }
+
+}  // namespace facet
