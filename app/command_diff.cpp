@@ -11,6 +11,7 @@
 
 #include "commands.h"
 #include "common/error.h"
+#include "compare/backend_agreement.h"
 #include "compare/compare_files.h"
 #include "compare/diff_report_folder.h"
 #include "compare/diff_text.h"
@@ -28,6 +29,7 @@ struct DiffOptions {
   std::string actual;
   std::string output;  // a .png: heat map; anything else: report folder
   DiffThresholds thresholds;
+  bool agreement = false;  // --agreement: backendAgreement() instead of the thresholds
 };
 
 constexpr const char* kFooter = R"(
@@ -40,6 +42,8 @@ threshold when any of its R, G, B, A channels differs by more than it.
   PASS     neither
 Defaults: --fail 1/255 --failpercent 0 (one 8-bit step passes, two fail),
 --warn 0 --warnpercent 0 (any difference warns), hard limits off.
+--agreement holds the images to what facet's two backends are held to:
+every byte equal (--fail 0).
 Positions are (x, y) counted from the top-left pixel, as image viewers show.
 
 With two folders, the PNG files are paired by name; a file in only one
@@ -146,7 +150,8 @@ int compareTwoFolders(const DiffOptions& options) {
   return run.finish();
 }
 
-int runDiff(const DiffOptions& options) {
+int runDiff(DiffOptions options) {
+  if (options.agreement) options.thresholds = backendAgreement();
   checkThresholds(options.thresholds);
   std::error_code ec;
   const bool expectedIsFolder = fs::is_directory(options.expected, ec);
@@ -175,6 +180,8 @@ Command addDiffCommand(CLI::App& app) {
   threshold("--warn", t.warnThreshold, "a channel difference above this warns for its pixel (fraction of full scale)");
   command->add_option("--warnpercent", t.warnPercent, "percent of pixels allowed to warn")->check(CLI::Range(0.0, 100.0))->capture_default_str();
   threshold("--hardwarn", t.hardWarn, "any channel difference above this warns (default: off)");
+  command->add_flag("--agreement", options->agreement,
+                    "hold the images to what the OpenGL and CPU backends are held to: every byte equal (overrides the thresholds)");
   command->add_option("-o,--output", options->output, "FILE.png: heat map (two PNGs only); FOLDER: HTML report with images");
   command->footer(kFooter);
   return [options]() {

@@ -89,11 +89,11 @@ void ReferenceView::drawControls(std::uint64_t version) {
     const DiffResult& d = result_->diff;
     ImGui::Separator();
     ImGui::Text("max difference    %d of 255", d.maxDifference);
-    ImGui::Text("pixels over 1/255 %" PRId64 " (%.3f%%)", d.failingPixels, d.failingPercent);
+    ImGui::Text("pixels differing  %" PRId64 " (%.3f%%)", d.failingPixels, d.failingPercent);
     ImGui::Text("PSNR              %s", psnrText(d.psnr).c_str());
     ImGui::Text("verdict           %s", std::string(kDiffStatusNames[static_cast<std::size_t>(d.status)]).c_str());
     if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("as the agreement suite judges GL against CPU:\nfailure when more than 0.5%% of pixels differ by more than 1/255");
+      ImGui::SetTooltip("as the agreement suite judges GL against CPU:\nevery byte must be equal (renderer/compare/backend_agreement.h)");
   }
 
   ImGui::Separator();
@@ -145,7 +145,7 @@ std::string ReferenceView::summary() const {
   if (!result_->error.empty()) return "reference: " + result_->error;
   const DiffResult& d = result_->diff;
   char text[200];
-  std::snprintf(text, sizeof text, "reference: max difference %d, %" PRId64 " pixels over 1/255 (%.3f%%), PSNR %s, %s, CPU %.0f ms",
+  std::snprintf(text, sizeof text, "reference: max difference %d, %" PRId64 " pixels differ (%.3f%%), PSNR %s, %s, CPU %.0f ms",
                 d.maxDifference, d.failingPixels, d.failingPercent, psnrText(d.psnr).c_str(),
                 std::string(kDiffStatusNames[static_cast<std::size_t>(d.status)]).c_str(), result_->milliseconds);
   return text;

@@ -62,8 +62,8 @@ ReferenceResult ReferenceWorker::render(Renderer& renderer, const ReferenceReque
     const auto start = std::chrono::steady_clock::now();
     Image cpuImage = renderer.render(*request.scene, request.frame).image;
     result.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    result.diff = compareImages(cpuImage, request.glImage, referenceThresholds());
-    result.heatMap = heatMap(cpuImage, request.glImage, referenceThresholds());
+    result.diff = compareImages(cpuImage, request.glImage, backendAgreement());
+    result.heatMap = heatMap(cpuImage, request.glImage, backendAgreement());
     result.cpuImage = std::move(cpuImage);
     result.glImage = request.glImage;
   } catch (const std::bad_alloc&) {

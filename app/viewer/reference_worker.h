@@ -17,24 +17,13 @@
 #include <thread>
 
 #include "compare/diff_result.h"
-#include "compare/diff_thresholds.h"
+#include "compare/backend_agreement.h"
 #include "image/image.h"
 #include "pipeline/frame_inputs.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
 
 namespace facet::viewer {
-
-// The agreement suite's bar for GL against CPU (tests/agreement/
-// agreement_thresholds.h, glVersusCpu): a pixel fails when a channel is more
-// than one 8-bit step off, and up to 0.5% of pixels may fail (shadow and
-// spot cut-off edges, where the backends' last float bits decide).
-inline DiffThresholds referenceThresholds() {
-  DiffThresholds t;
-  t.failThreshold = 1.0 / 255.0;
-  t.failPercent = 0.5;
-  return t;
-}
 
 struct ReferenceRequest {
   std::uint64_t version = 0;           // the viewer's frame version it was made for

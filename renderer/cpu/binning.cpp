@@ -78,6 +78,7 @@ void binTriangles(const Scene& scene, const FrameInputs& frame, const PassVertic
       tri.vertex[0] = fan[k], tri.vertex[1] = fan[k + 1], tri.vertex[2] = fan[k + 2];
       toSetUpOrder(tri.snapped, tri.vertex);
       tri.instance = static_cast<std::uint32_t>(instance);
+      tri.triangle = static_cast<std::uint32_t>(global);
       const auto index = static_cast<std::uint32_t>(bins.triangles.size());
       bins.triangles.push_back(tri);
       if (flat) bins.flat.insert(bins.flat.end(), {illumination[0], illumination[1]});

@@ -32,6 +32,27 @@ class CpuRenderer final : public Renderer {
   RenderResult render(const Scene& scene, const FrameInputs& frame) override {
     RenderResult result;
     cpu::prepareFrame(pool_, buffers_, scene, frame);
+    shadowPasses(scene, frame, result);
+
+    const auto start = std::chrono::steady_clock::now();
+    result.image = Image(frame.width, frame.height, encodePixel(frame.background));
+    cpu::litPass(pool_, buffers_, scene, frame, maps_, result.image);
+    result.timings.push_back({"lit pass", millisecondsSince(start)});
+    return result;
+  }
+
+  std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) override {
+    cpu::prepareFrame(pool_, buffers_, scene, frame);
+    RenderResult maps;  // the vertex stage of Gouraud reads the shadow maps
+    shadowPasses(scene, frame, maps);
+    std::vector<std::uint32_t> ids(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 0u);
+    Image unused;
+    cpu::litPass(pool_, buffers_, scene, frame, maps_, unused, &ids);
+    return ids;
+  }
+
+ private:
+  void shadowPasses(const Scene& scene, const FrameInputs& frame, RenderResult& result) {
     if (frame.shadowLayerCount > 0) {
       const auto start = std::chrono::steady_clock::now();
       maps_.reset(frame.shadows.mapSize, frame.shadowLayerCount);
@@ -42,15 +63,8 @@ class CpuRenderer final : public Renderer {
       }
       result.timings.push_back({"shadow pass (" + std::to_string(frame.shadowLayerCount) + " maps)", millisecondsSince(start)});
     }
-
-    const auto start = std::chrono::steady_clock::now();
-    result.image = Image(frame.width, frame.height, encodePixel(frame.background));
-    cpu::litPass(pool_, buffers_, scene, frame, maps_, result.image);
-    result.timings.push_back({"lit pass", millisecondsSince(start)});
-    return result;
   }
 
- private:
   cpu::ThreadPool pool_;
   cpu::FrameBuffers buffers_;
   cpu::ShadowMaps maps_;

@@ -33,6 +33,7 @@ struct BinnedTriangle {
   SnappedTriangle snapped;       // on the 1/256 grid, set-up order, and which side faces the eye
   std::uint32_t vertex[3];       // packed window vertices in set-up order (kClippedVertex: the worker's clipped store)
   std::uint32_t instance;        // index into FrameInputs::instances
+  std::uint32_t triangle;        // index in the frame's triangle list (instances in order); the clipper's pieces share it
 };
 inline constexpr std::uint32_t kClippedVertex = 0x80000000u;
 

@@ -117,7 +117,8 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
 
 }  // namespace
 
-void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, Image& image) {
+void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, Image& image,
+             std::vector<std::uint32_t>* triangleIds) {
   const Layout layout = layoutFor(frame.shading);
   const bool twoSided = !frame.cullBackFaces;
   const float halfWidth = 0.5f * static_cast<float>(frame.width), halfHeight = 0.5f * static_cast<float>(frame.height);
@@ -207,6 +208,15 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
                               scratch.id[k] = id;
                             });
                           });
+    if (triangleIds) {  // which triangle each pixel keeps, instead of its colour
+      for (int py = r.y0; py <= r.y1; ++py)
+        for (int px = r.x0; px <= r.x1; ++px) {
+          const std::uint32_t id = scratch.id[(py - r.y0) * kTileSize + (px - r.x0)];
+          (*triangleIds)[static_cast<std::size_t>(py) * static_cast<std::size_t>(frame.width) + static_cast<std::size_t>(px)] =
+              id == kNoTriangle ? 0u : 1u + scratch.triangles[id].bins->triangles[scratch.triangles[id].index].triangle;
+        }
+      return;
+    }
     switch (frame.shading) {
       case ShadingMode::Phong: shadeTile<ShadingMode::Phong>(scene, frame, maps, scratch, r.x0, r.y0, r.x1, r.y1, image); break;
       case ShadingMode::Gouraud: shadeTile<ShadingMode::Gouraud>(scene, frame, maps, scratch, r.x0, r.y0, r.x1, r.y1, image); break;

@@ -5,6 +5,8 @@
 // threads; each pixel is written by one thread, in triangle order, so
 // results do not depend on the thread count.
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 #include "cpu/frame_buffers.h"
 #include "cpu/function_ref.h"
@@ -36,6 +38,10 @@ void shadowPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, con
 // tile's triangles are first resolved with the z-buffer (LESS, in triangle
 // order) to the last one that passed the test at each pixel, the one whose
 // colour the pixel keeps; shading is a function of triangle and pixel alone.
-void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, Image& image);
+// With triangleIds (width × height, bottom row first), the pass writes
+// which triangle each pixel keeps instead (Renderer::visibleTriangles) and
+// leaves the image alone.
+void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, Image& image,
+             std::vector<std::uint32_t>* triangleIds = nullptr);
 
 }  // namespace facet::cpu

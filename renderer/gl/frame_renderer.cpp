@@ -106,6 +106,52 @@ Image GlFrameRenderer::readImage() const {
   return image;
 }
 
+std::vector<std::uint32_t> GlFrameRenderer::drawTriangleIds(const FrameInputs& frame) {
+  if (!triangleIdProgram_) triangleIdProgram_.emplace(buildProgram(gl_, {"triangle_id.vert", "triangle_id.frag"}));
+  const GLuint program = triangleIdProgram_->id();
+  const GLint clipFromModel = uniformLocation(gl_, *triangleIdProgram_, "clipFromModel");
+  const GLint firstTriangle = uniformLocation(gl_, *triangleIdProgram_, "firstTriangle");
+  idTarget_.resize(gl_, frame.width, frame.height);
+  gl_.glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  gl_.glFrontFace(GL_CCW);
+  for (GLenum capability : {GL_BLEND, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_DITHER, GL_FRAMEBUFFER_SRGB, GL_POLYGON_OFFSET_FILL})
+    gl_.glDisable(capability);
+  gl_.glBindFramebuffer(GL_FRAMEBUFFER, idTarget_.framebuffer());
+  gl_.glViewport(0, 0, frame.width, frame.height);
+  const GLuint background = 0;
+  const float farDepth = 1.0f;
+  gl_.glClearNamedFramebufferuiv(idTarget_.framebuffer(), GL_COLOR, 0, &background);
+  gl_.glDepthMask(GL_TRUE);
+  gl_.glClearNamedFramebufferfv(idTarget_.framebuffer(), GL_DEPTH, 0, &farDepth);
+  gl_.glEnable(GL_DEPTH_TEST);
+  gl_.glDepthFunc(GL_LESS);
+  if (frame.cullBackFaces) {
+    gl_.glEnable(GL_CULL_FACE);
+    gl_.glCullFace(GL_BACK);
+  } else {
+    gl_.glDisable(GL_CULL_FACE);
+  }
+  gl_.glUseProgram(program);
+  GLuint first = 0;
+  for (const FrameInstance& instance : frame.instances) {
+    const MeshBuffers& mesh = scene_.mesh(instance.mesh);
+    gl_.glProgramUniformMatrix4fv(program, clipFromModel, 1, GL_FALSE, glm::value_ptr(instance.clipFromModel));
+    gl_.glProgramUniform1ui(program, firstTriangle, first);
+    if (mesh.indexCount > 0) {
+      gl_.glBindVertexArray(mesh.vertexArray.id());
+      gl_.glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+    }
+    first += static_cast<GLuint>(mesh.indexCount / 3);
+  }
+  std::vector<std::uint32_t> ids(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height));
+  gl_.glBindFramebuffer(GL_READ_FRAMEBUFFER, idTarget_.framebuffer());
+  gl_.glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  gl_.glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  gl_.glReadPixels(0, 0, frame.width, frame.height, GL_RED_INTEGER, GL_UNSIGNED_INT, ids.data());
+  checkError("the triangle id pass");
+  return ids;
+}
+
 bool GlFrameRenderer::isTextured(const FrameInputs& frame, const FrameInstance& instance) const {
   if (instance.material < 0 || static_cast<std::size_t>(instance.material) >= frame.materials.size())
     throw Error("OpenGL backend: the frame has no material " + std::to_string(instance.material));

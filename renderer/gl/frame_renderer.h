@@ -6,6 +6,7 @@
 // context's getProcAddress, so the headless renderer (gl_renderer.cpp) and
 // the viewer's GLFW window share it. Every call needs its context current.
 #include <array>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -40,6 +41,10 @@ class GlFrameRenderer {
 
   // The last frame's RGBA8 pixels, bottom row first as glReadPixels gives them.
   Image readImage() const;
+
+  // Which triangle each pixel keeps (Renderer::visibleTriangles): the lit
+  // pass's geometry, culling and z-buffer, writing ids instead of colours.
+  std::vector<std::uint32_t> drawTriangleIds(const FrameInputs& frame);
 
   // The framebuffer drawFrame draws into (colour attachment 0), for a viewer to blit from.
   GLuint framebuffer() const { return target_.framebuffer(); }
@@ -77,12 +82,14 @@ class GlFrameRenderer {
   std::map<std::string, LitProgram> litPrograms_;
   std::optional<DepthProgram> depthProgram_;
   std::optional<ShaderProgram> backgroundProgram_;
+  std::optional<ShaderProgram> triangleIdProgram_;
   GlObject frameUniforms_;     // the Frame block (FrameBlock), binding 0
   GlObject srgbUniforms_;      // the SrgbTables block (SrgbBlock), binding 1, written once
   GlObject emptyVertexArray_;  // for draws that read no attributes (background, flat shading)
   SceneBuffers scene_;
   ShadowMapArray shadowMaps_;
   RenderTarget target_;
+  TriangleIdTarget idTarget_;
 };
 
 }  // namespace facet::gl

@@ -21,6 +21,7 @@ namespace facet::gl {
   X(PFNGLBINDVERTEXARRAYPROC, glBindVertexArray)                              \
   X(PFNGLCHECKNAMEDFRAMEBUFFERSTATUSPROC, glCheckNamedFramebufferStatus)      \
   X(PFNGLCLEARNAMEDFRAMEBUFFERFVPROC, glClearNamedFramebufferfv)              \
+  X(PFNGLCLEARNAMEDFRAMEBUFFERUIVPROC, glClearNamedFramebufferuiv)            \
   X(PFNGLCLIPCONTROLPROC, glClipControl)                                      \
   X(PFNGLCOMPILESHADERPROC, glCompileShader)                                  \
   X(PFNGLCREATEBUFFERSPROC, glCreateBuffers)                                  \
@@ -70,6 +71,7 @@ namespace facet::gl {
   X(PFNGLPIXELSTOREIPROC, glPixelStorei)                                      \
   X(PFNGLPROGRAMUNIFORM1FPROC, glProgramUniform1f)                            \
   X(PFNGLPROGRAMUNIFORM1IPROC, glProgramUniform1i)                            \
+  X(PFNGLPROGRAMUNIFORM1UIPROC, glProgramUniform1ui)                          \
   X(PFNGLPROGRAMUNIFORM3FVPROC, glProgramUniform3fv)                          \
   X(PFNGLPROGRAMUNIFORMMATRIX3FVPROC, glProgramUniformMatrix3fv)              \
   X(PFNGLPROGRAMUNIFORMMATRIX4FVPROC, glProgramUniformMatrix4fv)              \

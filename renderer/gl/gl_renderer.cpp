@@ -29,6 +29,12 @@ class GlRenderer final : public Renderer {
 
   std::string description() const override { return "gl: " + frameRenderer_->rendererName() + " via " + std::string(context_->name()); }
 
+  std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) override {
+    context_->makeCurrent();
+    frameRenderer_->uploadScene(scene);
+    return frameRenderer_->drawTriangleIds(frame);
+  }
+
   RenderResult render(const Scene& scene, const FrameInputs& frame) override {
     context_->makeCurrent();  // another renderer of this process may have made its own current
     RenderResult result;

@@ -29,6 +29,18 @@ class RenderTarget {
   int width_ = 0, height_ = 0;
 };
 
+// The target of triangle ids (Renderer::visibleTriangles): GL_R32UI and
+// GL_DEPTH_COMPONENT32F, W×H.
+class TriangleIdTarget {
+ public:
+  void resize(const GlFunctions& gl, int width, int height);
+  GLuint framebuffer() const { return framebuffer_.id(); }
+
+ private:
+  GlObject ids_, depth_, framebuffer_;
+  int width_ = 0, height_ = 0;
+};
+
 // Pass 1's target: a GL_TEXTURE_2D_ARRAY of S×S GL_DEPTH_COMPONENT32F layers,
 // one per light face, each drawn through a depth-only framebuffer.
 class ShadowMapArray {

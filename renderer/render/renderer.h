@@ -1,6 +1,7 @@
 #pragma once
 // The interface both backends implement: a Scene and its FrameInputs in, an
 // Image out. Backends consume FrameInputs; they never compute a matrix.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,13 @@ class Renderer {
   virtual std::string description() const = 0;
   // Throws facet::Error when the frame cannot be rendered.
   virtual RenderResult render(const Scene& scene, const FrameInputs& frame) = 0;
+
+  // Which triangle each pixel of the frame keeps after the z-buffer, for
+  // tests that hold two backends' coverage together: width × height values,
+  // bottom row first, 0 for the background, else 1 + the triangle's index in
+  // the frame (instances in FrameInputs order, each mesh's triangles in
+  // order; the pieces of a clipped triangle keep its index).
+  virtual std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) = 0;
 };
 
 }  // namespace facet

@@ -13,12 +13,11 @@ function(run what)
   message(STATUS "${what}: ${out}")
 endfunction()
 
-# `facet diff`'s exit code for two images, with the agreement suite's
-# thresholds for GL against CPU (tests/agreement/agreement_thresholds.h): a
-# pixel fails above one 8-bit step, 0.5% of pixels may fail. A heat map goes
-# beside the images.
+# `facet diff`'s exit code for two images, held to what the backends are
+# held to (--agreement: renderer/compare/backend_agreement.h, every byte
+# equal). A heat map goes beside the images.
 function(compare expected actual heatmap result)
-  execute_process(COMMAND ${FACET} diff ${expected} ${actual} --fail 1/255 --failpercent 0.5 -o ${heatmap}
+  execute_process(COMMAND ${FACET} diff ${expected} ${actual} --agreement -o ${heatmap}
     RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   message(STATUS "${out}${err}")
   set(${result} ${rc} PARENT_SCOPE)
@@ -32,7 +31,7 @@ function(view_and_render tag)
   run("facet view (${tag})" ${XVFB_RUN} -a ${FACET} view --size ${size} --frames 3 --screenshot ${view} ${ARGN})
   run("facet render (${tag})" ${FACET} render --backend gl --size ${size} -o ${render} ${ARGN})
   compare(${render} ${view} ${OUT}_${tag}_heatmap.png rc)
-  if(rc GREATER 1)  # 0 PASS, 1 WARNING (within the fail thresholds)
+  if(NOT rc EQUAL 0)  # 0 PASS: every byte equal
     message(FATAL_ERROR "the viewer's screenshot ${view} and facet render's ${render} differ (facet diff exit ${rc})")
   endif()
 endfunction()
