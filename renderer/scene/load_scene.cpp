@@ -1,5 +1,7 @@
 #include "scene/load_scene.h"
 
+#include <glm/mat4x4.hpp>
+
 #include "common/error.h"
 #include "scene/default_scene.h"
 #include "scene/gltf_loader.h"
@@ -25,14 +27,15 @@ Scene primitiveScene(std::string_view name, Mesh mesh) {
   return scene;
 }
 
-}  // namespace
+// "+ground": a 6 m square ground under the primitive, a quarter metre below
+// its lowest point, so that its shadow has something to fall on.
+void addGround(Scene& scene) {
+  const float floor = scene.worldBounds().min.y - 0.25f;
+  const int material = scene.addMaterial("matte grey ground", {0.6f, 0.6f, 0.58f}, 0.0f, 0.9f);
+  scene.addObject(makePlane(8), material, glm::mat4(3.0f, 0, 0, 0, 0, 1.0f, 0, 0, 0, 0, 3.0f, 0, 0, floor, 0, 1.0f));
+}
 
-std::vector<std::string_view> builtinSceneNames() { return {"default", "sphere", "cube", "plane", "cylinder", "torus"}; }
-
-Scene loadScene(const std::string& path) {
-  if (path.empty() || path == "builtin:default") return makeDefaultScene();
-  if (path.rfind(kBuiltin, 0) != 0) return loadGltf(path);
-  const std::string_view name = std::string_view(path).substr(kBuiltin.size());
+Scene primitive(std::string_view name, const std::string& path) {
   if (name == "sphere") return primitiveScene(name, makeSphere(32));
   if (name == "cube") return primitiveScene(name, makeCube());
   if (name == "plane") return primitiveScene(name, makePlane(4));
@@ -40,7 +43,26 @@ Scene loadScene(const std::string& path) {
   if (name == "torus") return primitiveScene(name, makeTorus());
   std::string names;
   for (std::string_view n : builtinSceneNames()) names += (names.empty() ? "" : ", ") + std::string(n);
-  throw Error(path + ": no such built-in scene (there are " + names + ")");
+  throw Error(path + ": no such built-in scene (there are " + names + "; a primitive takes +ground)");
+}
+
+}  // namespace
+
+std::vector<std::string_view> builtinSceneNames() { return {"default", "sphere", "cube", "plane", "cylinder", "torus"}; }
+
+Scene loadScene(const std::string& path) {
+  if (path.empty() || path == "builtin:default") return makeDefaultScene();
+  if (path.rfind(kBuiltin, 0) != 0) return loadGltf(path);
+  std::string_view name = std::string_view(path).substr(kBuiltin.size());
+  constexpr std::string_view kGround = "+ground";
+  const bool ground = name.size() > kGround.size() && name.substr(name.size() - kGround.size()) == kGround;
+  if (ground) name.remove_suffix(kGround.size());
+  Scene scene = primitive(name, path);
+  if (ground) {
+    addGround(scene);
+    scene.source = path;
+  }
+  return scene;
 }
 
 }  // namespace facet

@@ -12,6 +12,7 @@ namespace facet {
 //   "builtin:NAME"             one procedural primitive on its own (sphere,
 //                              cube, plane, cylinder, torus), with no camera
 //                              or light of its own (auto ones frame and light it)
+//   "builtin:NAME+ground"      the primitive above a 6 m ground that receives its shadow
 //   anything else              a glTF 2.0 file (.gltf, .glb)
 Scene loadScene(const std::string& path);
 
