@@ -24,7 +24,8 @@ void parseSize(const std::string& text, int& width, int& height) {
     if (part.empty() || part.size() > 5 || part.find_first_not_of("0123456789") != std::string::npos)
       throw UsageError("--size '" + text + "': expected WxH with whole numbers, e.g. 800x600");
     const int v = std::stoi(part);
-    if (v < 1 || v > 16384) throw UsageError("--size '" + text + "': each side must be in [1, 16384]");
+    if (v < 1 || v > kMaxImageSide)
+      throw UsageError("--size '" + text + "': each side must be in [1, " + std::to_string(kMaxImageSide) + "]");
     return v;
   };
   if (x == std::string::npos) throw UsageError("--size '" + text + "': expected WxH, e.g. 800x600");

@@ -28,7 +28,7 @@ void addCommonOptions(CLI::App& command, CommonOptions& options, const std::stri
 // this scene, then changes the key.
 RenderSettings settingsFor(const CommonOptions& options, const Scene& scene);
 
-// Parses "WxH" (1..16384 each) or throws facet::Error.
+// Parses "WxH" (1..kMaxImageSide each) or throws facet::UsageError.
 void parseSize(const std::string& text, int& width, int& height);
 
 }  // namespace facet

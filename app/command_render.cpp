@@ -54,6 +54,7 @@ Command addRenderCommand(CLI::App& app) {
     for (const std::string& warning : scene.warnings) std::fprintf(stderr, "warning: %s: %s\n", scene.source.c_str(), warning.c_str());
     const RenderSettings settings = settingsFor(options->common, scene);
     const FrameInputs frame = buildFrameInputs(scene, settings);
+    for (const std::string& warning : frame.warnings) std::fprintf(stderr, "warning: %s: %s\n", scene.source.c_str(), warning.c_str());
     std::unique_ptr<Renderer> renderer = makeRenderer(*options);
     const RenderResult result = renderer->render(scene, frame);
     writePng(output, result.image);

@@ -4,7 +4,7 @@
 // program is specialized on (light count and kinds, which lights have maps,
 // the specular model, the PCF radius: renderer/gl/shader_variant.cpp) is not
 // in the block: each setting reaches the shaders once.
-const int kMaxLights = 8;
+// FACET_MAX_LIGHTS is facet::kMaxLights, defined for every program (renderer/gl/shader_program.cpp).
 const int kLightPoint = 0;
 const int kLightDirectional = 1;
 const int kLightSpot = 2;
@@ -24,7 +24,7 @@ layout(std140, binding = 0) uniform Frame {
   vec4 ambient;             // x: I_a
   vec4 shadowParams;        // x: b_slope; y: b_min; z: map size S
   vec4 background;          // rgb: linear background
-  LightData lights[kMaxLights];
+  LightData lights[FACET_MAX_LIGHTS];
 } frame;
 
 // The course material of the draw being shaded (uniforms set per draw).

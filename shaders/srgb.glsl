@@ -1,23 +1,23 @@
 // sRGB by the tables of renderer/image/srgb.h, which the OpenGL backend
-// uploads once into this block (binding 1): a linear value's 8-bit level is
-// the number of the 255 thresholds at or below it, found by binary search;
-// an 8-bit texel's linear value is read. Mirror: facet::encodeLevel and
-// SrgbTables::decoded, the same tables, so both backends write the same bytes.
+// uploads once into this block (binding 1). A linear value's 8-bit level:
+// clamp to [0, 1] (NaN to 0), the bucket of its bits >> 15 gives the level
+// of the bucket's first float, plus one when the next threshold is at or
+// below the value. An 8-bit texel's linear value is read. Mirror:
+// facet::encodeLevel and SrgbTables::decoded, the same tables and steps, so
+// both backends write the same bytes.
 layout(std140, binding = 1) uniform SrgbTables {
-  vec4 thresholds[64];  // [k / 4][k % 4]: the smallest linear value of level k (k = 1..255)
+  vec4 thresholds[65];  // [k / 4][k % 4]: the smallest linear value of level k (k = 1..255); [256]: +inf
   vec4 decoded[64];     // [v / 4][v % 4]: the linear value of 8-bit level v
+  uvec4 buckets[2033];  // byte b (16 to a uvec4, 4 to a uint, lowest first): the level at the start of bucket b
 } srgb;
 
-float srgbThreshold(int k) {
-  return srgb.thresholds[k >> 2][k & 3];
-}
-
-// 0..255 for any float: NaN and below 0 give 0, above 1 gives 255.
 int encodeLevel(float linear) {
-  int level = 0;
-  for (int step = 128; step > 0; step >>= 1)
-    if (srgbThreshold(level + step) <= linear) level += step;
-  return level;
+  float c = linear > 0.0 ? (linear < 1.0 ? linear : 1.0) : 0.0;
+  uint bucket = floatBitsToUint(c) >> 15u;
+  uint word = srgb.buckets[bucket >> 4u][(bucket >> 2u) & 3u];
+  int start = int((word >> ((bucket & 3u) * 8u)) & 0xFFu);
+  int next = start + 1;
+  return srgb.thresholds[next >> 2][next & 3] <= c ? next : start;
 }
 
 // The colour to write into the RGBA8 target: each level / 255, which the

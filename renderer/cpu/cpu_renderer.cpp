@@ -10,6 +10,7 @@
 #include "cpu/passes.h"
 #include "cpu/thread_pool.h"
 #include "image/srgb.h"
+#include "pipeline/frame_checks.h"
 
 namespace facet {
 namespace {
@@ -30,6 +31,7 @@ class CpuRenderer final : public Renderer {
   std::string description() const override { return "cpu reference rasterizer, " + std::to_string(pool_.size()) + " thread(s)"; }
 
   RenderResult render(const Scene& scene, const FrameInputs& frame) override {
+    check_(scene, frame);
     RenderResult result;
     cpu::prepareFrame(pool_, buffers_, scene, frame);
     shadowPasses(scene, frame, result);
@@ -42,6 +44,7 @@ class CpuRenderer final : public Renderer {
   }
 
   std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) override {
+    check_(scene, frame);
     cpu::prepareFrame(pool_, buffers_, scene, frame);
     RenderResult maps;  // the vertex stage of Gouraud reads the shadow maps
     shadowPasses(scene, frame, maps);
@@ -65,6 +68,7 @@ class CpuRenderer final : public Renderer {
     }
   }
 
+  FrameCheck check_;
   cpu::ThreadPool pool_;
   cpu::FrameBuffers buffers_;
   cpu::ShadowMaps maps_;

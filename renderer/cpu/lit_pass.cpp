@@ -50,7 +50,6 @@ template <ShadingMode kMode>
 void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, WorkerBins::TileScratch& scratch, int tx0, int ty0, int tx1,
                int ty1, Image& image) {
   constexpr Layout layout = layoutFor(kMode);
-  const SrgbTable& srgb = srgbTable();
   std::uint32_t current = kNoTriangle;
   Interpolation* in = nullptr;
   const CourseMaterial* material = nullptr;
@@ -110,7 +109,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
       } else {
         color = shade(back ? flat[1] : flat[0], baseColor);
       }
-      image.at(px, py) = srgb.pixel(color);
+      image.at(px, py) = encodePixel(color);
     }
   batch.flush();
 }

@@ -40,7 +40,7 @@ void PhongBatch::flush() {
   _mm_store_ps(rgb[1], color.y.v);
   _mm_store_ps(rgb[2], color.z.v);
   std::uint8_t bytes[3][kLanes];
-  for (int c = 0; c < 3; ++c) srgb_.encode4(rgb[c], bytes[c]);
+  for (int c = 0; c < 3; ++c) encodeLevels4(rgb[c], bytes[c]);
   for (int k = 0; k < count_; ++k) pixels_[offset_[k]] = {bytes[0][k], bytes[1][k], bytes[2][k], 255};
   count_ = 0;
 }
@@ -53,7 +53,7 @@ void PhongBatch::flush() {
     const glm::vec3 unit = normalize3(glm::vec3{N_[0][k], N_[1][k], N_[2][k]});
     const glm::vec3 N = back_[k] != 0.0f ? -unit : unit;
     const glm::vec3 O{O_[0][k], O_[1][k], O_[2][k]};
-    pixels_[offset_[k]] = srgb_.pixel(shade(illuminate(frame_, maps_, laneMaterial(*material_[k]), P, N, viewVector<float>(frame_, P)), O));
+    pixels_[offset_[k]] = encodePixel(shade(illuminate(frame_, maps_, laneMaterial(*material_[k]), P, N, viewVector<float>(frame_, P)), O));
   }
   count_ = 0;
 }

@@ -23,7 +23,7 @@ class PhongBatch {
   static constexpr int kLanes = 4;  // add4 and flush assume four
 
   PhongBatch(const FrameInputs& frame, const ShadowMaps& maps, Rgba8* pixels)
-      : frame_(frame), maps_(maps), srgb_(srgbTable()), pixels_(pixels) {}
+      : frame_(frame), maps_(maps), pixels_(pixels) {}
 
   // Queues the pixel at pixels[offset]: world position P, the interpolated
   // normal (normalized here, and negated for a back face, as the scalar path
@@ -68,7 +68,6 @@ class PhongBatch {
  private:
   const FrameInputs& frame_;
   const ShadowMaps& maps_;
-  const SrgbTable& srgb_;
   Rgba8* pixels_;
   int count_ = 0;
   std::size_t offset_[kLanes];

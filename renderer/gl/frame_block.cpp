@@ -1,5 +1,7 @@
 #include "gl/frame_block.h"
 
+#include <algorithm>
+#include <bit>
 #include <string>
 
 #include "common/error.h"
@@ -16,8 +18,6 @@ static_assert(static_cast<int>(ShadingMode::Flat) == 0 && static_cast<int>(Shadi
               static_cast<int>(ShadingMode::Phong) == 2);
 
 FrameBlock makeFrameBlock(const FrameInputs& frame) {
-  if (frame.lights.size() > static_cast<std::size_t>(kMaxLights))
-    throw Error(std::to_string(frame.lights.size()) + " lights: the OpenGL backend shades with at most " + std::to_string(kMaxLights));
   FrameBlock block{};
   block.eyePosition = glm::vec4(frame.eyePosition, frame.perspective ? 1.0f : 0.0f);
   block.towardEye = glm::vec4(frame.towardEye, 0.0f);
@@ -37,9 +37,15 @@ FrameBlock makeFrameBlock(const FrameInputs& frame) {
   return block;
 }
 
+static_assert(std::endian::native == std::endian::little, "srgb.glsl reads the bucket bytes of a uint lowest first");
+
 SrgbBlock makeSrgbBlock() {
   const SrgbTables& tables = srgbTables();
-  return {tables.thresholds, tables.decoded};
+  SrgbBlock block{};
+  std::copy(tables.thresholds.begin(), tables.thresholds.end(), block.thresholds.begin());
+  block.decoded = tables.decoded;
+  std::copy(tables.buckets.begin(), tables.buckets.end(), block.buckets.begin());  // little-endian: byte b is byte b % 4 of uint b / 4
+  return block;
 }
 
 }  // namespace facet::gl

@@ -5,15 +5,18 @@
 // here; tests/gl/test_frame_block.cpp compares it with the driver's offsets.
 #include <array>
 #include <cstddef>
+#include <cstdint>
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
 
+#include "image/srgb.h"
 #include "pipeline/frame_inputs.h"
 
 namespace facet::gl {
 
-inline constexpr int kMaxLights = 8;  // kMaxLights in frame_block.glsl
+// The block holds facet::kMaxLights lights (render_settings.h); the shaders
+// get the same number as FACET_MAX_LIGHTS (shader_program.cpp).
 
 // LightData in frame_block.glsl.
 struct LightBlock {
@@ -33,15 +36,20 @@ struct FrameBlock {
   glm::vec4 ambient;         // x: I_a
   glm::vec4 shadowParams;    // x: b_slope; y: b_min; z: map size S
   glm::vec4 background;      // rgb: linear background
-  std::array<LightBlock, kMaxLights> lights;
+  std::array<LightBlock, facet::kMaxLights> lights;
 };
 
-// SrgbTables in srgb.glsl: image/srgb.h's two tables, four floats to a vec4 (std140 arrays of float would pad each to 16 bytes).
+// SrgbTables in srgb.glsl: image/srgb.h's tables, four floats (or bytes
+// packed in four uints) to a vec4, as std140 arrays of scalars would pad
+// each element to 16 bytes.
 struct SrgbBlock {
-  std::array<float, 256> thresholds;
-  std::array<float, 256> decoded;
+  std::array<float, 260> thresholds;        // 257 used, padded to 65 vec4
+  std::array<float, 256> decoded;           // 64 vec4
+  std::array<std::uint8_t, 2033 * 16> buckets;  // kSrgbBuckets used, padded to 2033 uvec4
 };
-static_assert(sizeof(SrgbBlock) == 2 * 64 * 16);
+static_assert(offsetof(SrgbBlock, decoded) == 65 * 16);
+static_assert(offsetof(SrgbBlock, buckets) == (65 + 64) * 16);
+static_assert(sizeof(SrgbBlock) == (65 + 64 + 2033) * 16);
 
 // std140: a struct's members at multiples of 16, the struct padded to 16, arrays of it at that stride.
 static_assert(offsetof(LightBlock, position) == 0);
@@ -57,10 +65,11 @@ static_assert(offsetof(FrameBlock, ambient) == 32);
 static_assert(offsetof(FrameBlock, shadowParams) == 48);
 static_assert(offsetof(FrameBlock, background) == 64);
 static_assert(offsetof(FrameBlock, lights) == 80);
-static_assert(sizeof(FrameBlock) == 80 + kMaxLights * sizeof(LightBlock));
+static_assert(kSrgbBuckets <= 2033 * 16);
+static_assert(sizeof(FrameBlock) == 80 + facet::kMaxLights * sizeof(LightBlock));
 
-// The block's values for one frame, from FrameInputs only. Throws
-// facet::Error when the frame has more than kMaxLights lights.
+// The block's values for one frame, from FrameInputs only (checkFrame has
+// held its light count to kMaxLights).
 FrameBlock makeFrameBlock(const FrameInputs& frame);
 
 // The sRGB tables, once per renderer.

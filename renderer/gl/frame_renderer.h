@@ -35,8 +35,9 @@ class GlFrameRenderer {
   void uploadScene(const Scene& scene);
 
   // Pass 1 and the lit pass of one frame, with glFinish between them so that
-  // each timing is that pass's. Throws facet::Error (limits, framebuffer,
-  // shaders, a GL error).
+  // each timing is that pass's. The frame must have passed checkFrame
+  // (pipeline/frame_checks.h) against the uploaded scene. Throws
+  // facet::Error (driver limits, framebuffer, shaders, a GL error).
   std::vector<PassTiming> drawFrame(const FrameInputs& frame);
 
   // The last frame's RGBA8 pixels, bottom row first as glReadPixels gives them.

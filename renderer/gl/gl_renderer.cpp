@@ -4,6 +4,7 @@
 
 #include "gl/frame_renderer.h"
 #include "gl/headless_context.h"
+#include "pipeline/frame_checks.h"
 
 namespace facet {
 namespace {
@@ -30,17 +31,18 @@ class GlRenderer final : public Renderer {
   std::string description() const override { return "gl: " + frameRenderer_->rendererName() + " via " + std::string(context_->name()); }
 
   std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) override {
+    check_(scene, frame);
     context_->makeCurrent();
-    frameRenderer_->uploadScene(scene);
+    upload(scene);
     return frameRenderer_->drawTriangleIds(frame);
   }
 
   RenderResult render(const Scene& scene, const FrameInputs& frame) override {
+    check_(scene, frame);
     context_->makeCurrent();  // another renderer of this process may have made its own current
     RenderResult result;
     Clock::time_point start = Clock::now();
-    frameRenderer_->uploadScene(scene);
-    result.timings.push_back({"scene upload", millisecondsSince(start)});
+    if (upload(scene)) result.timings.push_back({"scene upload", millisecondsSince(start)});
     for (PassTiming& timing : frameRenderer_->drawFrame(frame)) result.timings.push_back(std::move(timing));
     start = Clock::now();
     result.image = frameRenderer_->readImage();
@@ -49,6 +51,16 @@ class GlRenderer final : public Renderer {
   }
 
  private:
+  // Uploads the scene unless it is the one uploaded last (Scene::identity); true when it uploaded.
+  bool upload(const Scene& scene) {
+    if (scene.identity.is(uploaded_)) return false;
+    frameRenderer_->uploadScene(scene);
+    uploaded_ = scene.identity.token();
+    return true;
+  }
+
+  FrameCheck check_;
+  std::weak_ptr<const char> uploaded_;
   std::unique_ptr<gl::HeadlessContext> context_;
   std::unique_ptr<gl::GlFrameRenderer> frameRenderer_;
 };

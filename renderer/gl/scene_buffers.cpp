@@ -28,9 +28,7 @@ MeshBuffers uploadMesh(const GlFunctions& gl, const Mesh& mesh) {
     buffers.indexCount = 0;  // nothing to draw; GL refuses empty buffer storage
     return buffers;
   }
-  if (mesh.normals.size() != mesh.positions.size())
-    throw Error("mesh '" + mesh.name + "': " + std::to_string(mesh.normals.size()) + " normals for " + std::to_string(mesh.positions.size()) +
-                " positions");
+  if (mesh.normals.size() != mesh.positions.size()) return {};  // checkScene refuses it; no frame draws it
   buffers.positions = uploadBuffer(gl, mesh.positions);
   buffers.normals = uploadBuffer(gl, mesh.normals);
   buffers.indices = uploadBuffer(gl, mesh.indices);

@@ -25,7 +25,8 @@ struct MeshBuffers {
 class SceneBuffers {
  public:
   SceneBuffers() = default;
-  // Throws facet::Error for a mesh whose normals do not match its positions.
+  // A mesh that checkScene would refuse (normals that do not match its
+  // positions) is left empty; checkFrame keeps any frame from drawing it.
   SceneBuffers(const GlFunctions& gl, const Scene& scene);
 
   // Throw facet::Error for an index the uploaded scene does not have.

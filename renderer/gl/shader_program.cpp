@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "common/error.h"
+#include "settings/render_settings.h"
 
 namespace facet::gl {
 namespace {
@@ -33,9 +34,12 @@ std::string withDefines(const std::string& text, std::string_view defines) {
   return text.substr(0, firstLineEnd + 1) + std::string(defines) + "#line 2 0\n" + text.substr(firstLineEnd + 1);
 }
 
+// What every program is compiled with: the limits the C++ side holds (render_settings.h).
+std::string commonDefines() { return "#define FACET_MAX_LIGHTS " + std::to_string(kMaxLights) + "\n"; }
+
 GlObject compileStage(const GlFunctions& gl, std::string_view file, std::string_view defines, const ShaderFileLookup& find) {
   ShaderSource source = assembleShaderSource(file, find);
-  source.text = withDefines(source.text, defines);
+  source.text = withDefines(source.text, commonDefines() + std::string(defines));
   GlObject shader(gl, gl.glCreateShader(stageOf(file)), [](const GlFunctions& f, GLuint id) { f.glDeleteShader(id); });
   const char* text = source.text.c_str();
   const auto length = static_cast<GLint>(source.text.size());

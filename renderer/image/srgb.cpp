@@ -1,8 +1,8 @@
 #include "image/srgb.h"
 
-#include <bit>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace facet {
 namespace {
@@ -17,6 +17,7 @@ unsigned levelOf(float c) {
 SrgbTables build() {
   SrgbTables t{};
   t.thresholds[0] = -std::numeric_limits<float>::infinity();
+  t.thresholds[256] = std::numeric_limits<float>::infinity();
   // Non-negative floats order as their bit patterns: bisect on those in [0, 1].
   const std::uint32_t one = std::bit_cast<std::uint32_t>(1.0f);
   for (unsigned k = 1; k < 256; ++k) {
@@ -27,6 +28,16 @@ SrgbTables build() {
       else lo = mid + 1;
     }
     t.thresholds[k] = std::bit_cast<float>(hi);
+  }
+  // The level of c is the largest k with thresholds[k] <= c, so the buckets
+  // follow from the thresholds, in one walk.
+  unsigned start = 0;
+  for (std::uint32_t b = 0; b < kSrgbBuckets; ++b) {
+    const float first = std::bit_cast<float>(b << kSrgbBucketShift);
+    const float last = std::bit_cast<float>(std::min((b << kSrgbBucketShift) + ((1u << kSrgbBucketShift) - 1), one));
+    while (t.thresholds[start + 1] <= first) ++start;
+    if (start + 2 <= 256 && t.thresholds[start + 2] <= last) throw std::logic_error("sRGB tables: two thresholds in one bucket");
+    t.buckets[b] = static_cast<std::uint8_t>(start);
   }
   for (unsigned v = 0; v < 256; ++v) {
     const double c = v / 255.0;
@@ -42,14 +53,12 @@ const SrgbTables& srgbTables() {
   return tables;
 }
 
-std::uint8_t encodeLevel(float linear) {
+std::uint8_t levelBySearch(float linear) {
   const SrgbTables& t = srgbTables();
   unsigned level = 0;
   for (unsigned step = 128; step > 0; step /= 2)
     if (t.thresholds[level + step] <= linear) level += step;
   return static_cast<std::uint8_t>(level);
 }
-
-Rgba8 encodePixel(glm::vec3 linear) { return {encodeLevel(linear.r), encodeLevel(linear.g), encodeLevel(linear.b), 255}; }
 
 }  // namespace facet

@@ -5,17 +5,23 @@
 // - A linear value c in [0, 1] is written as the 8-bit level
 //   floor(255·E(c) + 0.5), E(c) = 12.92·c for c ≤ 0.0031308, else
 //   1.055·c^(1/2.4) - 0.055, evaluated in double precision. Levels never
-//   decrease with c, so 255 thresholds decide them: the level of any float c
+//   decrease with c, so 255 thresholds decide them: the level of a float c
 //   is the number of thresholds t_k (k = 1..255, the smallest float reaching
-//   level k) with t_k ≤ c. So NaN and c < 0 give 0, c > 1 gives 255.
+//   level k) with t_k ≤ c. NaN and c < 0 give 0, c > 1 gives 255.
+// - Finding that number: c is clamped to [0, 1] (NaN to 0); its bits >> 15
+//   (exponent and top 8 mantissa bits) pick a bucket, whose first float's
+//   level the bucket table holds; no bucket holds more than one threshold
+//   (checked when the tables are built), so the level is that start, plus
+//   one when t_(start+1) ≤ c. One look-up and one comparison, the same in
+//   both backends (encodeLevel here, shaders/srgb.glsl); levelBySearch is
+//   the plain count it is tested against.
 // - An 8-bit texel v is decoded to the float nearest the inverse formula at
 //   v/255 (v/255 ≤ 0.04045: v/255/12.92, else ((v/255 + 0.055)/1.055)^2.4),
 //   in double precision.
 //
-// The OpenGL backend reads the same two tables from a uniform block
-// (shaders/srgb.glsl); the CPU backend finds levels by a faster table built
-// from the thresholds (renderer/cpu/srgb_table.h, tested against encodeLevel).
+// The OpenGL backend reads these tables from a uniform block.
 #include <array>
+#include <bit>
 #include <cstdint>
 
 #include <glm/vec3.hpp>
@@ -24,18 +30,33 @@
 
 namespace facet {
 
+inline constexpr int kSrgbBucketShift = 15;
+inline constexpr std::uint32_t kSrgbBuckets = (std::bit_cast<std::uint32_t>(1.0f) >> kSrgbBucketShift) + 1;  // every c in [0, 1]
+
 struct SrgbTables {
-  std::array<float, 256> thresholds;  // [k]: the smallest float c with level(c) ≥ k, k = 1..255; [0] = -inf (unused)
-  std::array<float, 256> decoded;     // [v]: the linear value of 8-bit level v
+  std::array<float, 257> thresholds;               // [k]: the smallest float c with level(c) ≥ k, k = 1..255; [0] = -inf, [256] = +inf
+  std::array<float, 256> decoded;                  // [v]: the linear value of 8-bit level v
+  std::array<std::uint8_t, kSrgbBuckets> buckets;  // [b]: the level of the smallest float of bucket b
 };
 
 // Built once, on first use (thread-safe).
 const SrgbTables& srgbTables();
 
-// The level of linear c by binary search over the thresholds, as the shaders do it.
-std::uint8_t encodeLevel(float linear);
+// c clamped to [0, 1], NaN to 0 (x86's minps/maxps order: (c < 1 ? c : 1), then (c > 0 ? c : 0)).
+inline float clampUnit(float c) { return c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0f; }
+
+// The 8-bit level of linear c by the bucket table.
+inline std::uint8_t encodeLevel(float linear) {
+  const SrgbTables& t = srgbTables();
+  const float c = clampUnit(linear);
+  const unsigned start = t.buckets[std::bit_cast<std::uint32_t>(c) >> kSrgbBucketShift];
+  return static_cast<std::uint8_t>(start + (t.thresholds[start + 1] <= c ? 1u : 0u));
+}
+
+// The same level as the count of thresholds at or below c, by binary search.
+std::uint8_t levelBySearch(float linear);
 
 // The three levels of a linear colour, alpha 255.
-Rgba8 encodePixel(glm::vec3 linear);
+inline Rgba8 encodePixel(glm::vec3 linear) { return {encodeLevel(linear.r), encodeLevel(linear.g), encodeLevel(linear.b), 255}; }
 
 }  // namespace facet

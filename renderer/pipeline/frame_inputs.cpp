@@ -10,11 +10,19 @@
 #include "math/normal_matrix.h"
 #include "math/projection.h"
 #include "math/viewport.h"
+#include "pipeline/frame_checks.h"
 #include "pipeline/view_setup.h"
 
 namespace facet {
 
 FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings) {
+  for (std::size_t i = 0; i < scene.instances.size(); ++i)  // read below, before checkFrame
+    if (scene.instances[i].mesh < 0 || static_cast<std::size_t>(scene.instances[i].mesh) >= scene.meshes.size())
+      throw Error("instance " + std::to_string(i) + ": mesh " + std::to_string(scene.instances[i].mesh) + " does not exist (the scene has " +
+                  std::to_string(scene.meshes.size()) + ")");
+  if (settings.lightSource == Source::Manual && settings.lights.size() > kMaxLights)
+    throw Error("settings key 'lights': " + std::to_string(settings.lights.size()) + " lights, a frame shades at most " +
+                std::to_string(kMaxLights));
   FrameInputs f;
   f.width = settings.width;
   f.height = settings.height;
@@ -53,7 +61,12 @@ FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings)
   // Shadow-map window coordinates: [-1,1]² of the light's NDC onto [0,1]².
   const glm::mat4 shadowWindowFromNdc = windowToViewport({-1, 1, -1, 1}, {0, 1, 0, 1});
   const Sphere sphere = sceneSphere(scene);
-  for (const Light& light : resolveLights(scene, settings)) {
+  std::vector<Light> lights = resolveLights(scene, settings);
+  if (lights.size() > kMaxLights) {
+    f.warnings.push_back("the scene has " + std::to_string(lights.size()) + " lights; a frame shades the first " + std::to_string(kMaxLights));
+    lights.resize(kMaxLights);
+  }
+  for (const Light& light : lights) {
     FrameLight fl;
     fl.light = light;
     if (light.kind != LightKind::Point) fl.light.direction = glm::normalize(light.direction);
@@ -76,6 +89,7 @@ FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings)
   f.cullBackFaces = settings.cullBackFaces;
   f.shadows = settings.shadows;
   f.background = settings.background;
+  checkFrame(scene, f);
   return f;
 }
 

@@ -4,6 +4,8 @@
 // resolved lights and course material coefficients. Backends consume these
 // values; they never build a camera or light matrix themselves.
 #include <array>
+#include <cstddef>
+#include <string>
 #include <vector>
 
 #include <glm/mat3x3.hpp>
@@ -15,6 +17,10 @@
 #include "settings/render_settings.h"
 
 namespace facet {
+
+// Vertices a frame draws over all its instances: the CPU backend refers to
+// them with 31 bits (the top bit marks a vertex the clipper made).
+inline constexpr std::size_t kMaxFrameVertices = std::size_t{1} << 31;
 
 struct FrameInstance {
   int mesh = 0;                   // index into Scene::meshes
@@ -58,10 +64,16 @@ struct FrameInputs {
   ShadowSettings shadows;
   int shadowLayerCount = 0;       // S×S depth maps over all lights: one per face
   glm::vec3 background{0.0f};    // linear RGB
+
+  std::vector<std::string> warnings;  // what building the frame dropped (lights beyond kMaxLights)
 };
 
 // Throws facet::Error (naming the settings key) when the camera cannot be
-// built: eye on the reference point, up along the line of sight.
+// built (eye on the reference point, up along the line of sight), when the
+// settings list more than kMaxLights lights, when an instance names a mesh
+// the scene lacks, or when checkFrame (pipeline/frame_checks.h) refuses the
+// frame. A scene with more lights than kMaxLights gives the first
+// kMaxLights and a warning.
 FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings);
 
 }  // namespace facet

@@ -95,6 +95,7 @@ RenderSettings materialize(const Scene& scene, const RenderSettings& settings, b
   if (camera) out.camera = resolveCamera(scene, settings);
   if (lights) {
     out.lights = resolveLights(scene, settings);
+    if (out.lights.size() > kMaxLights) out.lights.resize(kMaxLights);  // what the frame shows (buildFrameInputs)
     out.lightSource = Source::Manual;
   }
   return out;

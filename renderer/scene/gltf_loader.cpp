@@ -37,7 +37,7 @@ namespace {
 constexpr std::uint64_t kMaxFileBytes = 1ull << 30;     // .gltf/.glb and each external buffer
 constexpr int kMaxJsonDepth = 64;                       // glTF needs about 8
 constexpr int kMaxNodeDepth = 256;                      // node hierarchy
-constexpr int kMaxImageSide = 16384;                    // texture width/height
+constexpr int kMaxTextureSide = 16384;                    // texture width/height
 constexpr std::uint64_t kMaxSceneTriangles = 100'000'000;  // over all instances
 
 using Warnings = std::vector<std::string>;
@@ -157,7 +157,7 @@ bool loadImage(tinygltf::Image* image, const int index, std::string*, std::strin
   if (!png && !jpeg) return skip("not a PNG or JPEG image");
   int w = 0, h = 0, channels = 0;
   if (!stbi_info_from_memory(bytes, size, &w, &h, &channels)) return skip("unreadable image header");
-  if (w <= 0 || h <= 0 || w > kMaxImageSide || h > kMaxImageSide)
+  if (w <= 0 || h <= 0 || w > kMaxTextureSide || h > kMaxTextureSide)
     return skip("image size " + std::to_string(w) + "x" + std::to_string(h) + " is out of range");
   stbi_uc* pixels = stbi_load_from_memory(bytes, size, &w, &h, &channels, 4);
   if (!pixels) return skip(std::string("cannot decode image (") + stbi_failure_reason() + ")");

@@ -20,6 +20,7 @@ void Bounds::include(glm::vec3 p) {
 float Bounds::radius() const { return empty ? 0.0f : 0.5f * glm::length(max - min); }
 
 int Scene::addMaterial(std::string name, glm::vec3 color, float metallic, float roughness) {
+  identity.renew();
   Material m;
   m.name = std::move(name);
   m.baseColor = glm::vec4(color, 1.0f);
@@ -30,6 +31,7 @@ int Scene::addMaterial(std::string name, glm::vec3 color, float metallic, float 
 }
 
 void Scene::addObject(Mesh mesh, int material, const glm::mat4& worldFromModel) {
+  identity.renew();
   mesh.material = material;
   meshes.push_back(std::move(mesh));
   instances.push_back({static_cast<int>(meshes.size() - 1), worldFromModel});

@@ -1,6 +1,7 @@
 #pragma once
 // The scene in memory: what every loader produces and both backends draw.
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -76,6 +77,32 @@ struct Bounds {
   float radius() const;  // of the sphere around the box, centred at center()
 };
 
+// Which scene content a renderer last derived something from (the GL
+// backend's buffers and textures, the checked meshes): a token of its own
+// for every Scene made or copied, so that a renderer given the same Scene
+// object again can keep what it has, and one given another (even at the
+// same address) cannot mistake it. Moving a Scene moves its token.
+class SceneIdentity {
+ public:
+  SceneIdentity() : token_(std::make_shared<char>()) {}
+  SceneIdentity(const SceneIdentity&) : SceneIdentity() {}
+  SceneIdentity& operator=(const SceneIdentity&) {
+    token_ = std::make_shared<char>();
+    return *this;
+  }
+  SceneIdentity(SceneIdentity&&) = default;
+  SceneIdentity& operator=(SceneIdentity&&) = default;
+
+  // A new token: the content changed in place.
+  void renew() { token_ = std::make_shared<char>(); }
+  // Whether `seen` (a token kept by a renderer) is this one.
+  bool is(const std::weak_ptr<const char>& seen) const { return !seen.expired() && seen.lock() == token_; }
+  std::weak_ptr<const char> token() const { return token_; }
+
+ private:
+  std::shared_ptr<const char> token_;
+};
+
 struct Scene {
   std::string source;                // file path, or "default scene"
   std::vector<Mesh> meshes;
@@ -94,6 +121,11 @@ struct Scene {
   int addMaterial(std::string name, glm::vec3 color, float metallic, float roughness);
   // Appends `mesh` with `material` and one instance of it placed by worldFromModel.
   void addObject(Mesh mesh, int material, const glm::mat4& worldFromModel);
+
+  // A code that changes a scene's meshes, materials or textures in place
+  // after a renderer has drawn it calls identity.renew() (addMaterial and
+  // addObject do).
+  SceneIdentity identity;
 };
 
 }  // namespace facet

@@ -1,4 +1,5 @@
 #pragma once
+#include <cstddef>
 // Every knob of the pipeline, in one struct with one set of defaults (the
 // member initializers below: the only place a default is written). The
 // command line, the viewer, the tests and the benchmarks all go through it.
@@ -13,6 +14,15 @@
 #include "scene/scene.h"
 
 namespace facet {
+
+// The limits of a frame, each written once; the field table, the command
+// line, the frame checks (pipeline/frame_checks.h) and the OpenGL backend's
+// uniform block read them here.
+inline constexpr int kMaxImageSide = 16384;       // pixels, each side (llvmpipe's largest render target)
+inline constexpr int kMinShadowMapSize = 16;      // S
+inline constexpr int kMaxShadowMapSize = 8192;    // S
+inline constexpr int kMaxPcfRadius = 8;           // r
+inline constexpr std::size_t kMaxLights = 8;      // lights a frame shades; a scene's others are dropped with a warning
 
 enum class ShadingMode { Flat, Gouraud, Phong, Count };
 inline constexpr std::array<std::string_view, static_cast<int>(ShadingMode::Count)> kShadingModeNames = {"flat", "gouraud", "phong"};

@@ -37,8 +37,8 @@ void visitLight(Visitor& v, Light& l) {
 
 template <class Visitor>
 void visitSettings(Visitor& v, RenderSettings& s) {
-  v.field({"width", "image width in pixels", 1, 16384}, s.width);
-  v.field({"height", "image height in pixels", 1, 16384}, s.height);
+  v.field({"width", "image width in pixels", 1, kMaxImageSide}, s.width);
+  v.field({"height", "image height in pixels", 1, kMaxImageSide}, s.height);
   v.group("camera", [&] {
     CameraSettings& c = s.camera;
     v.choice({"source", "auto: the scene's camera or one fitted to the scene; manual: the values below"}, c.source, kSourceNames);
@@ -67,10 +67,10 @@ void visitSettings(Visitor& v, RenderSettings& s) {
   v.group("shadows", [&] {
     ShadowSettings& sh = s.shadows;
     v.field({"enabled", "2-pass shadow maps"}, sh.enabled);
-    v.field({"mapSize", "S of the S x S shadow map", 16, 8192}, sh.mapSize);
+    v.field({"mapSize", "S of the S x S shadow map", kMinShadowMapSize, kMaxShadowMapSize}, sh.mapSize);
     v.field({"biasSlope", "b_slope of bias = max(b_slope (1 - N.L), b_min)", 0, 1}, sh.biasSlope);
     v.field({"biasMin", "b_min of bias = max(b_slope (1 - N.L), b_min)", 0, 1}, sh.biasMin);
-    v.field({"pcfRadius", "r: PCF over (2r+1)^2 samples, 0 = hard", 0, 8}, sh.pcfRadius);
+    v.field({"pcfRadius", "r: PCF over (2r+1)^2 samples, 0 = hard", 0, kMaxPcfRadius}, sh.pcfRadius);
   });
   v.field({"background", "linear RGB of empty pixels, each in [0, 1]", 0, 1, FieldKind::Color}, s.background);
 }

@@ -11,6 +11,7 @@
 #include "gl/shader_program.h"
 #include "gl/shader_variant.h"
 #include "pipeline/frame_inputs.h"
+#include "cpu/cpu_renderer.h"
 #include "gl_test_support.h"
 #include "scene/default_scene.h"
 
@@ -30,7 +31,7 @@ std::vector<Member> frameBlockMembers() {
       {"Frame.ambient", offsetof(FrameBlock, ambient)},           {"Frame.shadowParams", offsetof(FrameBlock, shadowParams)},
       {"Frame.background", offsetof(FrameBlock, background)},
   };
-  for (std::size_t i = 0; i < static_cast<std::size_t>(kMaxLights); ++i) {
+  for (std::size_t i = 0; i < facet::kMaxLights; ++i) {
     const std::string light = "Frame.lights[" + std::to_string(i) + "].";
     const std::size_t base = offsetof(FrameBlock, lights) + i * sizeof(LightBlock);
     members.push_back({light + "position", base + offsetof(LightBlock, position)});
@@ -98,9 +99,11 @@ TEST_CASE("makeFrameBlock copies FrameInputs into the block's slots") {
   CHECK(block.lights[1].intensity == glm::vec4(0.0f));  // unused slots stay zero
 }
 
-TEST_CASE("a frame with more lights than the block holds is refused with facet::Error") {
+TEST_CASE("a frame with more lights than the block holds is refused by both backends alike, before drawing") {
   const Scene scene = makeDefaultScene();
-  FrameInputs frame = buildFrameInputs(scene, test::smallSettings());
-  frame.lights.resize(static_cast<std::size_t>(kMaxLights) + 1, frame.lights[0]);
-  CHECK_THROWS_WITH_AS(makeFrameBlock(frame), doctest::Contains("at most 8"), Error);
+  FrameInputs frame = buildFrameInputs(scene, test::smallSettings(ShadingMode::Phong, false));
+  frame.lights.resize(facet::kMaxLights + 1, frame.lights[0]);
+  const char* expected = "9 lights: a frame shades at most 8";
+  CHECK_THROWS_WITH_AS(makeGlRenderer(GlContextKind::OsMesa)->render(scene, frame), expected, Error);
+  CHECK_THROWS_WITH_AS(makeCpuRenderer(1)->render(scene, frame), expected, Error);
 }

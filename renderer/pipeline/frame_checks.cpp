@@ -1,0 +1,95 @@
+#include "pipeline/frame_checks.h"
+
+#include <string>
+
+#include "common/error.h"
+
+namespace facet {
+namespace {
+
+std::string meshName(const Scene& scene, std::size_t m) {
+  const std::string& name = scene.meshes[m].name;
+  return "mesh " + std::to_string(m) + (name.empty() ? "" : " '" + name + "'");
+}
+
+void checkMesh(const Scene& scene, std::size_t m) {
+  const Mesh& mesh = scene.meshes[m];
+  const std::size_t n = mesh.positions.size();
+  if (mesh.normals.size() != n)
+    throw Error(meshName(scene, m) + ": " + std::to_string(mesh.normals.size()) + " normals for " + std::to_string(n) + " positions");
+  if (!mesh.texcoords.empty() && mesh.texcoords.size() != n)
+    throw Error(meshName(scene, m) + ": " + std::to_string(mesh.texcoords.size()) + " texture coordinates for " + std::to_string(n) +
+                " positions");
+  if (n >= kMaxFrameVertices) throw Error(meshName(scene, m) + ": " + std::to_string(n) + " vertices, more than a frame holds");
+  for (std::size_t i = 0; i < mesh.indices.size(); ++i)
+    if (mesh.indices[i] >= n)
+      throw Error(meshName(scene, m) + ": index " + std::to_string(mesh.indices[i]) + " (at " + std::to_string(i) + ") is not below its " +
+                  std::to_string(n) + " positions");
+  if (mesh.material < -1 || mesh.material >= static_cast<int>(scene.materials.size()))
+    throw Error(meshName(scene, m) + ": material " + std::to_string(mesh.material) + " does not exist");
+}
+
+}  // namespace
+
+void checkScene(const Scene& scene) {
+  for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+    const int mesh = scene.instances[i].mesh;
+    if (mesh < 0 || static_cast<std::size_t>(mesh) >= scene.meshes.size())
+      throw Error("instance " + std::to_string(i) + ": mesh " + std::to_string(mesh) + " does not exist (the scene has " +
+                  std::to_string(scene.meshes.size()) + ")");
+  }
+  for (std::size_t m = 0; m < scene.meshes.size(); ++m) checkMesh(scene, m);
+  for (std::size_t m = 0; m < scene.materials.size(); ++m) {
+    const int texture = scene.materials[m].baseColorTexture;
+    if (texture < -1 || texture >= static_cast<int>(scene.textures.size()) ||
+        (texture >= 0 && scene.textures[static_cast<std::size_t>(texture)].image.empty()))
+      throw Error("material " + std::to_string(m) + " '" + scene.materials[m].name + "': base colour texture " + std::to_string(texture) +
+                  " is missing or empty");
+  }
+}
+
+void checkFrame(const Scene& scene, const FrameInputs& frame) {
+  if (frame.width < 1 || frame.height < 1 || frame.width > kMaxImageSide || frame.height > kMaxImageSide)
+    throw Error("image size " + std::to_string(frame.width) + "x" + std::to_string(frame.height) + ": each side must be in [1, " +
+                std::to_string(kMaxImageSide) + "]");
+  if (frame.lights.size() > kMaxLights)
+    throw Error(std::to_string(frame.lights.size()) + " lights: a frame shades at most " + std::to_string(kMaxLights));
+  std::size_t vertices = 0;
+  for (std::size_t i = 0; i < frame.instances.size(); ++i) {
+    const FrameInstance& instance = frame.instances[i];
+    if (instance.mesh < 0 || static_cast<std::size_t>(instance.mesh) >= scene.meshes.size())
+      throw Error("frame instance " + std::to_string(i) + ": mesh " + std::to_string(instance.mesh) + " is not in the scene");
+    if (instance.material < 0 || static_cast<std::size_t>(instance.material) >= frame.materials.size())
+      throw Error("frame instance " + std::to_string(i) + ": material " + std::to_string(instance.material) + " is not in the frame");
+    const int texture = frame.materials[static_cast<std::size_t>(instance.material)].baseColorTexture;
+    if (texture < -1 || texture >= static_cast<int>(scene.textures.size()) ||
+        (texture >= 0 && scene.textures[static_cast<std::size_t>(texture)].image.empty()))
+      throw Error("frame instance " + std::to_string(i) + ": base colour texture " + std::to_string(texture) + " is missing or empty");
+    vertices += scene.meshes[static_cast<std::size_t>(instance.mesh)].positions.size();
+  }
+  if (vertices >= kMaxFrameVertices) throw Error(std::to_string(vertices) + " vertices over the frame's instances: more than a frame holds");
+  int layers = 0;
+  for (const FrameLight& light : frame.lights) {
+    if (!light.hasShadowMap) continue;
+    if (light.frustum.faceCount < 1 || light.frustum.faceCount > 6 || light.shadowLayer != layers)
+      throw Error("a shadow-casting light's faces are not laid out as buildFrameInputs lays them out");
+    layers += light.frustum.faceCount;
+  }
+  if (layers != frame.shadowLayerCount) throw Error("the frame's shadow layer count does not match its lights");
+  if (layers > 0 && (frame.shadows.mapSize < 1 || frame.shadows.mapSize > kMaxShadowMapSize))
+    throw Error("settings key 'shadows.mapSize': " + std::to_string(frame.shadows.mapSize) + " is not in [1, " +
+                std::to_string(kMaxShadowMapSize) + "]");
+  if (frame.shadows.pcfRadius < 0 || frame.shadows.pcfRadius > kMaxPcfRadius)
+    throw Error("settings key 'shadows.pcfRadius': " + std::to_string(frame.shadows.pcfRadius) + " is not in [0, " + std::to_string(kMaxPcfRadius) +
+                "]");
+}
+
+void FrameCheck::operator()(const Scene& scene, const FrameInputs& frame) {
+  if (!scene.identity.is(checked_)) {
+    checkScene(scene);
+    checked_ = scene.identity.token();
+  }
+  checkFrame(scene, frame);
+}
+
+}  // namespace facet
