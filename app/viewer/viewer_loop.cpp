@@ -1,8 +1,9 @@
 // The viewer's main loop, shaped as Dear ImGui's
 // examples/example_glfw_opengl3/main.cpp: set up GLFW, OpenGL and ImGui, then
 // every frame: events, the ImGui frame (panel and shortcuts edit the
-// settings), the 3D frame into GlFrameRenderer's framebuffer, a blit of it
-// to the window, ImGui on top, swap.
+// settings), the 3D frame by the GL backend's Renderer (the one facet render
+// uses, on the window's context) into its framebuffer, a blit of it to the
+// window, ImGui on top, swap.
 #include "viewer/viewer_loop.h"
 
 #include <algorithm>
@@ -15,7 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/error.h"
-#include "gl/frame_renderer.h"
+#include "gl/gl_renderer.h"
 #include "image/png.h"
 #include "pipeline/frame_inputs.h"
 #include "settings/settings_json.h"
@@ -74,34 +75,33 @@ Image readWindow(const ViewerGl& gl, int width, int height) {
   return image;
 }
 
-// The 3D frame on screen: what GlFrameRenderer's framebuffer holds.
+// The 3D frame on screen: what the renderer's framebuffer holds.
 struct DrawnFrame {
   std::uint64_t version = 0;           // counts the distinct frames drawn; 0: none yet
   std::string key;                     // frameKey when it was last drawn (or failed to draw)
-  std::uint64_t uploadedScene = 0;     // the sceneSerial GlFrameRenderer holds
   std::shared_ptr<const Scene> scene;  // the scene `frame` was built from
   FrameInputs frame;
-  double milliseconds = 0;             // drawFrame, when it last ran
+  Image image;                         // what render() read back
+  double milliseconds = 0;             // the frame's passes (upload, shadow, lit; not the read-back), when it last ran
   std::string error;                   // why the newest settings could not be drawn; the last good image stays
 };
 
 // Draws the 3D frame when the scene or the settings changed since the last
-// one (or always, with force); true when it tried.
-bool drawChangedFrame(gl::GlFrameRenderer& renderer, const ViewerState& state, DrawnFrame& drawn, bool force) {
+// one (or always, with force); true when it tried. The renderer uploads a
+// scene only when it is not the one it drew last.
+bool drawChangedFrame(Renderer& renderer, const ViewerState& state, DrawnFrame& drawn, bool force) {
   const std::string key = frameKey(state);
   if (key == drawn.key && !force) return false;
   try {
-    if (drawn.uploadedScene != state.sceneSerial) {
-      renderer.uploadScene(*state.scene);
-      drawn.uploadedScene = state.sceneSerial;
-    }
     FrameInputs frame = buildFrameInputs(*state.scene, state.settings);
-    const Clock::time_point start = Clock::now();
-    renderer.drawFrame(frame);
-    drawn.milliseconds = millisecondsSince(start);
+    RenderResult result = renderer.render(*state.scene, frame);
+    drawn.milliseconds = 0;
+    for (const PassTiming& t : result.timings)
+      if (t.pass != "read-back") drawn.milliseconds += t.milliseconds;
     if (key != drawn.key || drawn.version == 0) ++drawn.version;
     drawn.scene = state.scene;
     drawn.frame = std::move(frame);
+    drawn.image = std::move(result.image);
     drawn.error.clear();
   } catch (const Error& e) {
     drawn.error = e.what();
@@ -110,9 +110,9 @@ bool drawChangedFrame(gl::GlFrameRenderer& renderer, const ViewerState& state, D
   return true;
 }
 
-// GlFrameRenderer's framebuffer into the window's, scaled for the frame
+// The renderer's framebuffer into the window's, scaled for the frame
 // after a resize, before the new size is drawn.
-void blitToWindow(const ViewerGl& gl, const gl::GlFrameRenderer& renderer, const DrawnFrame& drawn, int width, int height) {
+void blitToWindow(const ViewerGl& gl, const WindowGlRenderer& renderer, const DrawnFrame& drawn, int width, int height) {
   gl.gl.glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
   gl.gl.glDisable(GL_SCISSOR_TEST);  // a blit honours the scissor box
   gl.gl.glViewport(0, 0, width, height);
@@ -143,7 +143,8 @@ int runViewer(const ViewerOptions& options) {
   glfwSwapInterval(batch ? 0 : 1);
   if (!batch) window.setMinimumSize(kMinimumWindowWidth, kMinimumWindowHeight);
   const ViewerGl gl = loadViewerGl(glfwGetProcAddress);
-  gl::GlFrameRenderer renderer(glfwGetProcAddress);
+  const std::unique_ptr<WindowGlRenderer> rendererOwner = makeWindowGlRenderer(glfwGetProcAddress);
+  WindowGlRenderer& renderer = *rendererOwner;
   ImGuiSession imgui(window.handle());
   ReferenceView reference(gl.gl, referenceThreads(), options.followReference);
   ViewInput input;
@@ -192,17 +193,17 @@ int runViewer(const ViewerOptions& options) {
     changedLastFrame = !typing && drawChangedFrame(renderer, state, drawn, redrawEveryFrame || (batch && framesLeft > 0));
     if (changedLastFrame && drawn.error.empty()) drawTimes.add(drawn.milliseconds);
     if (batch && !drawn.error.empty()) throw Error(drawn.error);
-    reference.update(drawn.version, [&] { return ReferenceRequest{drawn.version, drawn.scene, drawn.frame, renderer.readImage()}; });
+    reference.update(drawn.version, [&] { return ReferenceRequest{drawn.version, drawn.scene, drawn.frame, drawn.image}; });
     reference.drawMainView(drawn.version);
 
     // Rendering: the 3D frame, then ImGui on top
     blitToWindow(gl, renderer, drawn, width, height);
-    if ((keys.screenshot || panel.screenshot) && drawn.version > 0) saveScreenshot(state, renderer.readImage());
+    if ((keys.screenshot || panel.screenshot) && drawn.version > 0) saveScreenshot(state, drawn.image);
     imgui.render();
 
     // --screenshot: after `frames` frames (and the reference, when asked for), before the swap
     if (batch && --framesLeft <= 0 && (!options.followReference || reference.isCurrent(drawn.version))) {
-      const Image image = options.screenshotWithPanel ? readWindow(gl, width, height) : renderer.readImage();
+      const Image image = options.screenshotWithPanel ? readWindow(gl, width, height) : drawn.image;
       writePng(options.batchScreenshot, image);
       std::printf("screenshot written to %s: %dx%d, %d frames, GL frame %.1f ms (median)\n", options.batchScreenshot.c_str(), image.width(),
                   image.height(), options.frames, drawTimes.median());

@@ -16,7 +16,7 @@ namespace facet::viewer {
 struct ViewerState {
   std::shared_ptr<const Scene> scene;  // shared with the reference worker
   Sphere sphere;                        // of scene: the orbit's scale
-  std::uint64_t sceneSerial = 0;        // counts scene loads, so the GL side knows to upload
+  std::uint64_t sceneSerial = 0;        // counts scene loads: a new scene is a new frame
   RenderSettings settings;              // what the next frame draws
   RenderSettings startSettings;         // as the command line or the last settings file gave them:
                                         // R resets the camera to theirs, a new scene starts with their camera and lights

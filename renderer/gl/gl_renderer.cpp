@@ -13,60 +13,102 @@ using Clock = std::chrono::steady_clock;
 
 double millisecondsSince(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
 
-class GlRenderer final : public Renderer {
+// What both renderers do with a frame, on whatever context is current.
+class GlFrames {
  public:
-  explicit GlRenderer(GlContextKind kind)
-      : context_(gl::makeHeadlessContext(kind)),
-        frameRenderer_(std::make_unique<gl::GlFrameRenderer>([this](const char* name) { return context_->getProcAddress(name); })) {}
+  explicit GlFrames(const gl::GetProcAddress& getProcAddress) : frameRenderer_(getProcAddress) {}
 
-  // GL objects go while their context is current, then the context.
-  ~GlRenderer() override {
-    try {
-      context_->makeCurrent();
-      frameRenderer_.reset();
-    } catch (...) {  // a destructor must not throw; the process keeps running without the context
-    }
-  }
-
-  std::string description() const override { return "gl: " + frameRenderer_->rendererName() + " via " + std::string(context_->name()); }
-
-  std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) override {
+  RenderResult render(const Scene& scene, const FrameInputs& frame) {
     check_(scene, frame);
-    context_->makeCurrent();
-    upload(scene);
-    return frameRenderer_->drawTriangleIds(frame);
-  }
-
-  RenderResult render(const Scene& scene, const FrameInputs& frame) override {
-    check_(scene, frame);
-    context_->makeCurrent();  // another renderer of this process may have made its own current
     RenderResult result;
     Clock::time_point start = Clock::now();
     if (upload(scene)) result.timings.push_back({"scene upload", millisecondsSince(start)});
-    for (PassTiming& timing : frameRenderer_->drawFrame(frame)) result.timings.push_back(std::move(timing));
+    for (PassTiming& timing : frameRenderer_.drawFrame(frame)) result.timings.push_back(std::move(timing));
     start = Clock::now();
-    result.image = frameRenderer_->readImage();
+    result.image = frameRenderer_.readImage();
     result.timings.push_back({"read-back", millisecondsSince(start)});
     return result;
   }
+
+  std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) {
+    check_(scene, frame);
+    upload(scene);
+    return frameRenderer_.drawTriangleIds(frame);
+  }
+
+  gl::GlFrameRenderer& frameRenderer() { return frameRenderer_; }
+  const gl::GlFrameRenderer& frameRenderer() const { return frameRenderer_; }
 
  private:
   // Uploads the scene unless it is the one uploaded last (Scene::identity); true when it uploaded.
   bool upload(const Scene& scene) {
     if (scene.identity.is(uploaded_)) return false;
-    frameRenderer_->uploadScene(scene);
+    frameRenderer_.uploadScene(scene);
     uploaded_ = scene.identity.token();
     return true;
   }
 
   FrameCheck check_;
   std::weak_ptr<const char> uploaded_;
+  gl::GlFrameRenderer frameRenderer_;
+};
+
+class HeadlessGlRenderer final : public Renderer {
+ public:
+  explicit HeadlessGlRenderer(GlContextKind kind)
+      : context_(gl::makeHeadlessContext(kind)),
+        frames_(std::make_unique<GlFrames>([this](const char* name) { return context_->getProcAddress(name); })) {}
+
+  // GL objects go while their context is current, then the context.
+  ~HeadlessGlRenderer() override {
+    try {
+      context_->makeCurrent();
+      frames_.reset();
+    } catch (...) {  // a destructor must not throw; the process keeps running without the context
+    }
+  }
+
+  std::string description() const override {
+    return "gl: " + frames_->frameRenderer().rendererName() + " via " + std::string(context_->name());
+  }
+
+  RenderResult render(const Scene& scene, const FrameInputs& frame) override {
+    context_->makeCurrent();  // another renderer of this process may have made its own current
+    return frames_->render(scene, frame);
+  }
+
+  std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) override {
+    context_->makeCurrent();
+    return frames_->visibleTriangles(scene, frame);
+  }
+
+ private:
   std::unique_ptr<gl::HeadlessContext> context_;
-  std::unique_ptr<gl::GlFrameRenderer> frameRenderer_;
+  std::unique_ptr<GlFrames> frames_;
+};
+
+class CurrentContextGlRenderer final : public WindowGlRenderer {
+ public:
+  explicit CurrentContextGlRenderer(const gl::GetProcAddress& getProcAddress) : frames_(getProcAddress) {}
+
+  std::string description() const override { return "gl: " + frames_.frameRenderer().rendererName() + " in the window's context"; }
+  RenderResult render(const Scene& scene, const FrameInputs& frame) override { return frames_.render(scene, frame); }
+  std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) override {
+    return frames_.visibleTriangles(scene, frame);
+  }
+  unsigned framebuffer() const override { return frames_.frameRenderer().framebuffer(); }
+  const std::string& rendererName() const override { return frames_.frameRenderer().rendererName(); }
+
+ private:
+  GlFrames frames_;
 };
 
 }  // namespace
 
-std::unique_ptr<Renderer> makeGlRenderer(GlContextKind kind) { return std::make_unique<GlRenderer>(kind); }
+std::unique_ptr<Renderer> makeGlRenderer(GlContextKind kind) { return std::make_unique<HeadlessGlRenderer>(kind); }
+
+std::unique_ptr<WindowGlRenderer> makeWindowGlRenderer(const gl::GetProcAddress& getProcAddress) {
+  return std::make_unique<CurrentContextGlRenderer>(getProcAddress);
+}
 
 }  // namespace facet
