@@ -525,14 +525,68 @@ const std::set<std::string> kSupportedExtensions = {"KHR_lights_punctual", "KHR_
 // glTF's rule: a file whose extensionsRequired names an extension the reader
 // lacks is refused. Checked before tinygltf parses, which would otherwise
 // fail later on what the extension changes (e.g. Draco's missing bufferViews).
-void checkRequiredExtensions(const std::string& path, const char* json, std::size_t length) {
-  const nlohmann::json document = nlohmann::json::parse(json, json + length, nullptr, false);
-  if (document.is_discarded()) return;  // tinygltf reports the syntax error with its position
+void checkRequiredExtensions(const std::string& path, const nlohmann::json& document) {
   const auto required = document.find("extensionsRequired");
   if (required == document.end() || !required->is_array()) return;
   for (const nlohmann::json& name : *required)
     if (name.is_string() && !kSupportedExtensions.count(name.get<std::string>()))
       throw Error(path + ": requires extension " + name.get<std::string>() + ", which facet does not support");
+}
+
+// tinygltf 2.7 refuses a few valid files. What it requires that glTF 2.0
+// does not, and how facet reads such a file:
+// - animations[].channels[].target.node: optional ("when undefined, the
+//   animated object MAY be defined by an extension", e.g.
+//   KHR_animation_pointer). facet does not animate; such a channel is taken
+//   out of the document before tinygltf parses it, with a warning.
+// - skins[].inverseBindMatrices: optional (identity matrices). tinygltf
+//   parses the skin and then reports the property missing; that report is
+//   dropped (kTolerated below). facet draws no skinning either way.
+const char* const kTolerated[] = {"'inverseBindMatrices' property is missing in Skin."};
+
+// Removes the animation channels with no target node; true when it removed any.
+bool removeChannelsWithoutNode(nlohmann::json& document, Warnings& warnings) {
+  bool removed = false;
+  const auto animations = document.find("animations");
+  if (animations == document.end() || !animations->is_array()) return false;
+  for (std::size_t a = 0; a < animations->size(); ++a) {
+    nlohmann::json& animation = (*animations)[a];
+    if (!animation.is_object() || !animation.contains("channels") || !animation["channels"].is_array()) continue;
+    nlohmann::json& channels = animation["channels"];
+    nlohmann::json kept = nlohmann::json::array();
+    for (std::size_t c = 0; c < channels.size(); ++c) {
+      const nlohmann::json& channel = channels[c];
+      const bool hasNode = channel.is_object() && channel.contains("target") && channel["target"].is_object() && channel["target"].contains("node");
+      if (hasNode || !channel.is_object() || !channel.contains("target")) {
+        kept.push_back(channel);  // a channel without target at all is tinygltf's to refuse: glTF requires target
+        continue;
+      }
+      warnings.push_back(at("animations", a) + ".channels[" + std::to_string(c) +
+                         "]: no target node (an extension names what it animates); ignored, facet does not animate");
+      removed = true;
+    }
+    channels = std::move(kept);
+  }
+  return removed;
+}
+
+// The file's bytes with a new JSON document: the text itself for .gltf, a
+// GLB with the new JSON chunk (padded with spaces) and the old BIN chunk.
+std::string withDocument(const std::string& bytes, bool binary, std::size_t jsonOffset, std::size_t jsonLength, const nlohmann::json& document) {
+  std::string json = document.dump();
+  if (!binary) return json;
+  while (json.size() % 4 != 0) json.push_back(' ');
+  const std::size_t binStart = jsonOffset + ((jsonLength + 3) & ~std::size_t{3});
+  const std::string bin = binStart < bytes.size() ? bytes.substr(binStart) : std::string();
+  std::string out = bytes.substr(0, 12);
+  const auto put32 = [&](std::uint32_t v) { out.append(reinterpret_cast<const char*>(&v), 4); };
+  put32(static_cast<std::uint32_t>(json.size()));
+  put32(0x4E4F534Au);  // JSON
+  out += json;
+  out += bin;
+  const auto total = static_cast<std::uint32_t>(out.size());
+  std::memcpy(out.data() + 8, &total, 4);
+  return out;
 }
 
 }  // namespace
@@ -555,7 +609,16 @@ Scene loadGltfFromMemory(const std::string& bytes, const std::string& path, cons
   const auto [jsonOffset, jsonLength] = binary ? glbJsonChunk(path, bytes) : std::pair<std::size_t, std::size_t>{0, bytes.size()};
   if (jsonDepth(bytes.data() + jsonOffset, jsonLength) > kMaxJsonDepth)
     throw Error(path + ": JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
-  checkRequiredExtensions(path, bytes.data() + jsonOffset, jsonLength);
+  Warnings warnings;
+  std::string repaired;  // the bytes tinygltf parses when the document had to change
+  {
+    nlohmann::json document = nlohmann::json::parse(bytes.data() + jsonOffset, bytes.data() + jsonOffset + jsonLength, nullptr, false);
+    if (!document.is_discarded()) {  // else tinygltf reports the syntax error with its position
+      checkRequiredExtensions(path, document);
+      if (removeChannelsWithoutNode(document, warnings)) repaired = withDocument(bytes, binary, jsonOffset, jsonLength, document);
+    }
+  }
+  const std::string& parsed = repaired.empty() ? bytes : repaired;
 
   AssetFolder folder;
   folder.root = assetFolder;
@@ -566,10 +629,10 @@ Scene loadGltfFromMemory(const std::string& bytes, const std::string& path, cons
   std::string err, warn;
   bool ok = false;
   try {
-    const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+    const auto* data = reinterpret_cast<const unsigned char*>(parsed.data());
     const std::string base = folder.root.string();
-    ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, data, static_cast<unsigned int>(bytes.size()), base)
-                : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), static_cast<unsigned int>(bytes.size()), base);
+    ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, data, static_cast<unsigned int>(parsed.size()), base)
+                : loader.LoadASCIIFromString(&model, &err, &warn, parsed.data(), static_cast<unsigned int>(parsed.size()), base);
   } catch (const std::exception& e) {
     throw Error(path + ": glTF parser failed (" + e.what() + ")");
   } catch (...) {
@@ -581,6 +644,12 @@ Scene loadGltfFromMemory(const std::string& bytes, const std::string& path, cons
     if (newline != std::string::npos) text = text.substr(0, newline) + " (and more)";
     return text;
   };
+  for (const char* tolerated : kTolerated)  // what tinygltf reports that glTF allows
+    for (auto at = err.find(tolerated); at != std::string::npos; at = err.find(tolerated)) {
+      std::size_t end = at + std::strlen(tolerated);
+      if (end < err.size() && err[end] == '\n') ++end;
+      err.erase(at, end - at);
+    }
   if (!ok || !err.empty()) throw Error(path + ": " + (err.empty() ? std::string("not a valid glTF file") : firstLine(err)));
   if (model.asset.version.empty() || model.asset.version[0] != '2')
     throw Error(path + ": asset.version '" + model.asset.version + "' is not glTF 2.x (UNKNOWN_ASSET_MAJOR_VERSION)");
@@ -590,7 +659,6 @@ Scene loadGltfFromMemory(const std::string& bytes, const std::string& path, cons
 
   Scene scene;
   scene.source = path;
-  Warnings warnings;
   for (std::string line; !warn.empty();) {  // tinygltf's own warnings, one per line
     const auto newline = warn.find('\n');
     line = warn.substr(0, newline);

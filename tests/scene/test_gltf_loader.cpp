@@ -1,7 +1,10 @@
 // The glTF loader on Debian's assimp-testmodels files.
+#include <cstdint>
+#include <functional>
 #include <string>
 
 #include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
 
 #include "common/error.h"
 #include "scene/gltf_loader.h"
@@ -106,4 +109,97 @@ TEST_CASE("an empty path is the default scene and builtin: names a primitive") {
     CHECK(scene.cameras.empty());
   }
   CHECK_THROWS_WITH_AS(loadScene("builtin:teapot"), doctest::Contains("no such built-in scene"), Error);
+}
+
+namespace {
+
+// One triangle (positions in buffer bytes 0-35), two key times (36-43) and two translations (44-67).
+constexpr const char* kTriangleAsset = R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]},
+                {"bufferView": 1, "componentType": 5126, "count": 2, "type": "SCALAR", "min": [0], "max": [1]},
+                {"bufferView": 2, "componentType": 5126, "count": 2, "type": "VEC3"}],
+  "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 8},
+                  {"buffer": 0, "byteOffset": 44, "byteLength": 24}],
+  "buffers": [{"byteLength": 68}]})";
+
+std::string triangleBuffer() {
+  const float values[17] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0, 0, 1, 0};
+  return std::string(reinterpret_cast<const char*>(values), sizeof values);
+}
+
+// The asset with `change` applied, as a .gltf (buffer as a data URI) or a .glb (buffer in the BIN chunk).
+std::string asset(const std::function<void(nlohmann::json&)>& change, bool binary) {
+  nlohmann::json j = nlohmann::json::parse(kTriangleAsset);
+  change(j);
+  const std::string bin = triangleBuffer();
+  if (!binary) {
+    static constexpr char kBase64[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string encoded;
+    for (std::size_t i = 0; i < bin.size(); i += 3) {
+      const std::size_t n = std::min<std::size_t>(3, bin.size() - i);
+      unsigned v = 0;
+      for (std::size_t k = 0; k < 3; ++k) v = v << 8 | (k < n ? static_cast<unsigned char>(bin[i + k]) : 0u);
+      for (std::size_t k = 0; k < 4; ++k) encoded += k <= n ? kBase64[(v >> (18 - 6 * k)) & 63u] : '=';
+    }
+    j["buffers"][0]["uri"] = "data:application/octet-stream;base64," + encoded;
+    return j.dump();
+  }
+  std::string json = j.dump();
+  while (json.size() % 4) json += ' ';
+  std::string out = "glTF";
+  const auto put32 = [&](std::uint32_t v) { out.append(reinterpret_cast<const char*>(&v), 4); };
+  put32(2);
+  put32(static_cast<std::uint32_t>(12 + 8 + json.size() + 8 + bin.size()));
+  put32(static_cast<std::uint32_t>(json.size()));
+  put32(0x4E4F534Au);
+  out += json;
+  put32(static_cast<std::uint32_t>(bin.size()));
+  put32(0x004E4942u);
+  out += bin;
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("valid files that tinygltf alone refuses are loaded: an animation channel without a target node") {
+  for (const bool binary : {false, true}) {
+    CAPTURE(binary);
+    const std::string bytes = asset(
+        [](nlohmann::json& j) {
+          j["animations"] = nlohmann::json::parse(R"([{"channels": [{"sampler": 0, "target": {"path": "translation"}},
+                                                                   {"sampler": 0, "target": {"node": 0, "path": "translation"}}],
+                                                      "samplers": [{"input": 1, "output": 2}]}])");
+        },
+        binary);
+    const Scene scene = loadGltfFromMemory(bytes, binary ? "animated.glb" : "animated.gltf", "");
+    CHECK(scene.triangleCount() == 1);
+    CHECK(scene.worldBounds().max.x == doctest::Approx(1.0f));  // drawn in its rest pose, from the BIN chunk of the rebuilt GLB too
+    CHECK(hasWarning(scene, "animations[0].channels[0]: no target node"));
+    CHECK_FALSE(hasWarning(scene, "channels[1]"));
+  }
+}
+
+TEST_CASE("valid files that tinygltf alone refuses are loaded: a skin without inverseBindMatrices") {
+  const std::string bytes = asset(
+      [](nlohmann::json& j) {
+        j["nodes"][0]["skin"] = 0;
+        j["nodes"].push_back(nlohmann::json::object());
+        j["skins"] = nlohmann::json::parse(R"([{"joints": [1]}])");
+      },
+      false);
+  const Scene scene = loadGltfFromMemory(bytes, "skinned.gltf", "");
+  CHECK(scene.triangleCount() == 1);
+  CHECK(hasWarning(scene, "skinning is not supported"));
+}
+
+TEST_CASE("what glTF requires stays required: a spot light without its spot object (KHR_lights_punctual)") {
+  CHECK_THROWS_AS(loadGltfFromMemory(asset(
+                                         [](nlohmann::json& j) {
+                                           j["extensions"] = nlohmann::json::parse(R"({"KHR_lights_punctual": {"lights": [{"type": "spot"}]}})");
+                                           j["nodes"][0]["extensions"] = nlohmann::json::parse(R"({"KHR_lights_punctual": {"light": 0}})");
+                                         },
+                                         false),
+                                     "spot.gltf", ""),
+                  Error);
 }
