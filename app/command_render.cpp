@@ -1,4 +1,5 @@
-// facet render: one frame of a scene with either backend, to a PNG.
+// facet render: one frame of a scene with the OpenGL backend, the CPU
+// backend or the CPU backend's readable reference, to a PNG.
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -7,6 +8,7 @@
 #include "commands.h"
 #include "common/error.h"
 #include "cpu/cpu_renderer.h"
+#include "cpu/reference/reference_renderer.h"
 #include "image/png.h"
 #include "pipeline/frame_inputs.h"
 #include "scene/load_scene.h"
@@ -26,6 +28,7 @@ struct RenderOptions {
 
 std::unique_ptr<Renderer> makeRenderer(const RenderOptions& options) {
   if (options.backend == "cpu") return makeCpuRenderer(options.threads);
+  if (options.backend == "reference") return makeReferenceRenderer();
 #if FACET_HAVE_GL
   GlContextKind kind = GlContextKind::OsMesa;
   if (options.context == "egl") kind = GlContextKind::Egl;
@@ -42,8 +45,10 @@ Command addRenderCommand(CLI::App& app) {
   auto options = std::make_shared<RenderOptions>();
   CLI::App* command = app.add_subcommand("render", "Render one frame of a scene to a PNG, headless, with the OpenGL or the CPU backend");
   addCommonOptions(*command, options->common, "the PNG to write (default: facet.png)");
-  command->add_option("--backend", options->backend, "gl (OpenGL, headless on llvmpipe) or cpu (the reference rasterizer)")
-      ->check(CLI::IsMember({"gl", "cpu"}));
+  command->add_option("--backend", options->backend,
+                      "gl (OpenGL, headless on llvmpipe), cpu (the CPU rasterizer) or reference (the CPU rasterizer's one-triangle-at-a-time "
+                      "reference: the same image, slowly)")
+      ->check(CLI::IsMember({"gl", "cpu", "reference"}));
   command->add_option("--context", options->context, "headless OpenGL context for --backend gl: osmesa or egl")
       ->check(CLI::IsMember({"osmesa", "egl"}));
   command->add_option("--threads", options->threads, "CPU backend threads (0: one per core)")->check(CLI::Range(0, 256));

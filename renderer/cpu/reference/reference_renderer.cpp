@@ -1,0 +1,212 @@
+// The course's pipeline for one triangle, start to finish, in the order
+// renderer/PIPELINE.md (sections 6 and 7) gives it:
+//
+//   vertex stage    clip = PM·EM·TM·p, and what the shading mode interpolates
+//   clipping        against the view volume, in homogeneous coordinates   (clipper.h)
+//   window          x_w, y_w, z_w and 1/w                                  (window_transform.h)
+//   set-up          the 1/256 grid, the orientation, back-face culling     (triangle_setup.h)
+//   coverage        the pixel centres inside all three edges               (rasterize.h)
+//   interpolation   window z and perspective-correct varyings by planes    (interpolation.h)
+//   z-buffer        a fragment is kept where z < the stored z
+//   shading         flat, Gouraud or Phong: the illumination equation      (lighting.h)
+//
+// Pass 1 draws every triangle into each light's depth maps; pass 2 draws
+// them into the image. No tiles, threads or batches: the fast renderer
+// (cpu_renderer.cpp) gets the same pixels by the same rules.
+#include "cpu/reference/reference_renderer.h"
+
+#include <chrono>
+#include <functional>
+#include <vector>
+
+#include "cpu/clipper.h"
+#include "cpu/interpolation.h"
+#include "cpu/lighting.h"
+#include "cpu/rasterize.h"
+#include "cpu/shadow_maps.h"
+#include "cpu/texture_sampling.h"
+#include "cpu/triangle_setup.h"
+#include "cpu/vertex_math.h"
+#include "image/srgb.h"
+#include "pipeline/frame_checks.h"
+
+namespace facet {
+namespace {
+
+using namespace cpu;
+
+// A z-buffer, and in the lit pass the image (or the triangle ids) it guards.
+struct Target {
+  int width = 0, height = 0;
+  std::vector<float> depth;                   // window z, cleared to 1
+  Image* image = nullptr;                     // pass 2: the colour of each kept fragment
+  std::vector<std::uint32_t>* ids = nullptr;  // or which triangle it came from
+};
+
+// The fragment stage: the pixel's interpolated varyings and the side seen -> linear colour.
+using FragmentShader = std::function<glm::vec3(const float* varyings, bool frontFacing)>;
+
+// One triangle, its three vertices after the vertex stage, to the z-buffer.
+void drawTriangle(const ClipVertex (&vertex)[3], int varyingCount, bool cullBackFaces, std::uint32_t id, Target& target,
+                  const FragmentShader& shade) {
+  const float halfWidth = 0.5f * static_cast<float>(target.width), halfHeight = 0.5f * static_cast<float>(target.height);
+  // Clipping: the triangle itself when it lies inside the view volume, else the clipped polygon as a fan.
+  WindowVertex window[3];
+  for (int k = 0; k < 3; ++k) window[k] = toWindow(vertex[k], halfWidth, halfHeight, varyingCount);
+  std::vector<WindowVertex> fan;
+  clipTriangle(vertex[0], vertex[1], vertex[2], window[0], window[1], window[2], halfWidth, halfHeight, varyingCount, fan);
+  for (std::size_t f = 0; f + 2 < fan.size(); f += 3) {
+    // Set-up: snapped to the grid, zero area dropped, back faces culled; the vertices in set-up order.
+    const WindowVertex* v[3] = {&fan[f], &fan[f + 1], &fan[f + 2]};
+    SnappedTriangle snapped;
+    PixelBox box;
+    if (!snapTriangle({v[0]->x, v[1]->x, v[2]->x}, {v[0]->y, v[1]->y, v[2]->y}, snapped)) continue;
+    if (!pixelBox(snapped, 0, 0, target.width - 1, target.height - 1, box)) continue;
+    if (cullBackFaces && !snapped.frontFacing) continue;
+    toSetUpOrder(snapped, v);
+    InterpolationVertex corners[3];
+    for (int k = 0; k < 3; ++k) corners[k] = {v[k]->x, v[k]->y, v[k]->z, v[k]->invW, v[k]->varyings.data()};
+    Interpolation planes(corners[0], corners[1], corners[2]);
+    planes.setUpVaryings(varyingCount);
+    // Coverage, then per pixel: depth, the z-buffer test, the varyings, the fragment's colour.
+    rasterize(snapped, box, [&](int px, int py) {
+      const std::size_t pixel = static_cast<std::size_t>(py) * static_cast<std::size_t>(target.width) + static_cast<std::size_t>(px);
+      const float z = planes.depthAt(px, py);
+      if (!(z < target.depth[pixel])) return;
+      target.depth[pixel] = z;
+      if (target.ids) (*target.ids)[pixel] = id;
+      if (!target.image) return;
+      float varyings[kMaxVaryings];
+      planes.varyingsAt(px, py, varyings);
+      target.image->at(px, py) = encodePixel(shade(varyings, snapped.frontFacing));
+    });
+  }
+}
+
+// Pass 1: every triangle, unculled, into each face of each shadow-casting light.
+ShadowMaps shadowPass(const Scene& scene, const FrameInputs& frame) {
+  ShadowMaps maps;
+  maps.reset(frame.shadows.mapSize, frame.shadowLayerCount);
+  for (const FrameLight& light : frame.lights) {
+    if (!light.hasShadowMap) continue;
+    for (int face = 0; face < light.frustum.faceCount; ++face) {
+      Target target{maps.size, maps.size, std::vector<float>(static_cast<std::size_t>(maps.size) * static_cast<std::size_t>(maps.size), 1.0f)};
+      for (const FrameInstance& instance : frame.instances) {
+        const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
+        for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+          ClipVertex v[3];
+          for (std::size_t k = 0; k < 3; ++k) {
+            const glm::vec3 world = glm::vec3(transformPoint(instance.worldFromModel, mesh.positions[mesh.indices[t + k]]));
+            v[k].clip = transformPoint(light.frustum.clipFromWorld[static_cast<std::size_t>(face)], world);
+          }
+          drawTriangle(v, 0, false, 0, target, nullptr);
+        }
+      }
+      std::copy(target.depth.begin(), target.depth.end(), maps.layer(light.shadowLayer + face));
+    }
+  }
+  return maps;
+}
+
+// Pass 2: every triangle into the image, shaded by its mode. Varyings:
+//   Phong    world position 0-2, normal 3-5, texture coordinates 6-7
+//   Gouraud  front diffuse 0-2, front specular 3-5, back diffuse 6-8, back specular 9-11, texture coordinates 12-13
+//   flat     texture coordinates 0-1 (the triangle's illumination comes from its corners)
+void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, Target& target) {
+  const int count = frame.shading == ShadingMode::Phong ? 8 : frame.shading == ShadingMode::Gouraud ? 14 : 2;
+  const int uv = count - 2;
+  std::uint32_t id = 0;
+  for (const FrameInstance& instance : frame.instances) {
+    const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
+    const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
+    const bool textured = material.baseColorTexture >= 0 && !mesh.texcoords.empty();
+    const auto baseColor = [&](const float* v) {
+      return textured ? material.baseColor * sampleBaseColor(scene.textures[static_cast<std::size_t>(material.baseColorTexture)].image, {v[uv], v[uv + 1]})
+                      : material.baseColor;
+    };
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+      // Vertex stage.
+      ClipVertex v[3];
+      glm::vec3 world[3];
+      for (std::size_t k = 0; k < 3; ++k) {
+        const std::uint32_t i = mesh.indices[t + k];
+        v[k].clip = transformPoint(instance.clipFromModel, mesh.positions[i]);
+        world[k] = glm::vec3(transformPoint(instance.worldFromModel, mesh.positions[i]));
+        const glm::vec3 N = normalize3(transformDirection(instance.normalMatrix, mesh.normals[i]));
+        float* out = v[k].varyings.data();
+        const glm::vec2 st = mesh.texcoords.empty() ? glm::vec2(0.0f) : mesh.texcoords[i];
+        out[uv] = st.x, out[uv + 1] = st.y;
+        if (frame.shading == ShadingMode::Phong) {
+          for (int c = 0; c < 3; ++c) out[c] = world[k][c], out[3 + c] = N[c];
+        } else if (frame.shading == ShadingMode::Gouraud) {  // the illumination equation at the vertex, both sides
+          const glm::vec3 V = viewVector<float>(frame, world[k]);
+          const Illumination front = illuminate(frame, maps, laneMaterial(material), world[k], N, V);
+          const Illumination back = frame.cullBackFaces ? Illumination{} : illuminate(frame, maps, laneMaterial(material), world[k], -N, V);
+          for (int c = 0; c < 3; ++c)
+            out[c] = front.diffuse[c], out[3 + c] = front.specular[c], out[6 + c] = back.diffuse[c], out[9 + c] = back.specular[c];
+        }
+      }
+      // Flat: one illumination per side, from the geometric normal at the centroid.
+      Illumination flat[2];
+      if (frame.shading == ShadingMode::Flat) {
+        const glm::vec3 N = normalize3(cross3(world[1] - world[0], world[2] - world[0]));
+        const glm::vec3 centroid = (world[0] + world[1] + world[2]) / 3.0f;
+        const glm::vec3 V = viewVector<float>(frame, centroid);
+        flat[0] = illuminate(frame, maps, laneMaterial(material), centroid, N, V);
+        if (!frame.cullBackFaces) flat[1] = illuminate(frame, maps, laneMaterial(material), centroid, -N, V);
+      }
+      // Fragment stage.
+      const FragmentShader fragment = [&](const float* f, bool front) -> glm::vec3 {
+        if (frame.shading == ShadingMode::Phong) {
+          const glm::vec3 P{f[0], f[1], f[2]};
+          const glm::vec3 unit = normalize3(glm::vec3{f[3], f[4], f[5]});
+          const glm::vec3 N = front ? unit : -unit;  // two-sided lighting
+          return shade(illuminate(frame, maps, laneMaterial(material), P, N, viewVector<float>(frame, P)), baseColor(f));
+        }
+        if (frame.shading == ShadingMode::Gouraud) {
+          const int side = front ? 0 : 6;
+          return shade(Illumination{{f[side], f[side + 1], f[side + 2]}, {f[side + 3], f[side + 4], f[side + 5]}}, baseColor(f));
+        }
+        return shade(front ? flat[0] : flat[1], baseColor(f));
+      };
+      drawTriangle(v, count, frame.cullBackFaces, ++id, target, fragment);
+    }
+  }
+}
+
+class ReferenceRenderer final : public Renderer {
+ public:
+  std::string description() const override { return "cpu reference, one triangle at a time (renderer/cpu/reference)"; }
+
+  RenderResult render(const Scene& scene, const FrameInputs& frame) override {
+    check_(scene, frame);
+    const auto start = std::chrono::steady_clock::now();
+    const ShadowMaps maps = shadowPass(scene, frame);
+    RenderResult result;
+    result.image = Image(frame.width, frame.height, encodePixel(frame.background));
+    Target target{frame.width, frame.height, std::vector<float>(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 1.0f)};
+    target.image = &result.image;
+    litPass(scene, frame, maps, target);
+    result.timings.push_back({"both passes", std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count()});
+    return result;
+  }
+
+  std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) override {
+    check_(scene, frame);
+    const ShadowMaps maps = shadowPass(scene, frame);  // Gouraud lights its vertices with them
+    std::vector<std::uint32_t> ids(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 0u);
+    Target target{frame.width, frame.height, std::vector<float>(ids.size(), 1.0f)};
+    target.ids = &ids;
+    litPass(scene, frame, maps, target);
+    return ids;
+  }
+
+ private:
+  FrameCheck check_;
+};
+
+}  // namespace
+
+std::unique_ptr<Renderer> makeReferenceRenderer() { return std::make_unique<ReferenceRenderer>(); }
+
+}  // namespace facet

@@ -1,0 +1,18 @@
+#pragma once
+// The course's pipeline one triangle at a time, written to be read: the
+// readable reference of the CPU backend (renderer/cpu/reference/
+// reference_renderer.cpp). It calls the same rules as the fast, tiled,
+// threaded renderer (clipper, window transform, snapping and edge
+// functions, plane equations, lighting) in their plainest order, shades
+// every fragment that passes the z-buffer, and is held equal to the fast
+// renderer pixel for pixel (tests/cpu/test_reference.cpp).
+#include <memory>
+
+#include "render/renderer.h"
+
+namespace facet {
+
+// One thread, no tiles, no batching; much slower than makeCpuRenderer.
+std::unique_ptr<Renderer> makeReferenceRenderer();
+
+}  // namespace facet
