@@ -2,10 +2,10 @@
 # words joined by '|'), with `cmake -E env ENV` when ENV is given (words
 # joined by '|', e.g. K=V or --unset=K), and require
 #  - the exit code EXIT (default 1; 64 for a command line that does not
-#    parse). A signal (crash, abort) is never a pass: execute_process then
-#    reports a text such as "Segmentation fault" instead of a number;
+#    parse), never a signal (run_command.cmake);
 #  - exactly one line on stderr, matching PATTERN;
 #  - when OUTPUT is given, no file left at OUTPUT (it is removed first).
+include(${CMAKE_CURRENT_LIST_DIR}/run_command.cmake)
 string(REPLACE "|" ";" command "${COMMAND}")
 if(ENV)
   string(REPLACE "|" ";" env "${ENV}")
@@ -17,16 +17,10 @@ endif()
 if(OUTPUT)
   file(REMOVE "${OUTPUT}")
 endif()
-execute_process(COMMAND ${command} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT rc MATCHES "^[0-9]+$")
-  message(FATAL_ERROR "the command did not exit, it ended with: ${rc}\nstdout: ${out}\nstderr: ${err}")
-endif()
-if(NOT rc EQUAL EXIT)
-  message(FATAL_ERROR "expected exit code ${EXIT}, got ${rc}\nstdout: ${out}\nstderr: ${err}")
-endif()
+facet_run_command(COMMAND ${command} EXPECT ${EXIT})
 string(STRIP "${err}" err_stripped)
 if(err_stripped STREQUAL "")
-  message(FATAL_ERROR "expected one line on stderr, got none\nstdout: ${out}")
+  message(FATAL_ERROR "expected one line on stderr, got none${report}")
 endif()
 string(FIND "${err_stripped}" "\n" newline)
 if(NOT newline EQUAL -1)

@@ -90,7 +90,7 @@ class GlFrameRenderer {
   SceneBuffers scene_;
   ShadowMapArray shadowMaps_;
   RenderTarget target_;
-  TriangleIdTarget idTarget_;
+  RenderTarget idTarget_{GL_R32UI};
 };
 
 }  // namespace facet::gl

@@ -40,23 +40,6 @@ void checkSizeLimit(const GlFunctions& gl, const std::string& what, int size, GL
     throw Error(what + ": larger than this OpenGL allows (" + limitName + " " + std::to_string(maximum) + ")");
 }
 
-void TriangleIdTarget::resize(const GlFunctions& gl, int width, int height) {
-  if (framebuffer_ && width == width_ && height == height_) return;
-  *this = TriangleIdTarget();
-  ids_ = createRenderbuffer(gl);
-  gl.glNamedRenderbufferStorage(ids_.id(), GL_R32UI, width, height);
-  depth_ = createRenderbuffer(gl);
-  gl.glNamedRenderbufferStorage(depth_.id(), GL_DEPTH_COMPONENT32F, width, height);
-  framebuffer_ = createFramebuffer(gl);
-  gl.glNamedFramebufferRenderbuffer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, ids_.id());
-  gl.glNamedFramebufferRenderbuffer(framebuffer_.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
-  gl.glNamedFramebufferDrawBuffer(framebuffer_.id(), GL_COLOR_ATTACHMENT0);
-  gl.glNamedFramebufferReadBuffer(framebuffer_.id(), GL_COLOR_ATTACHMENT0);
-  checkFramebufferComplete(gl, framebuffer_.id(), "triangle id (R32UI + DEPTH_COMPONENT32F)");
-  width_ = width;
-  height_ = height;
-}
-
 void RenderTarget::resize(const GlFunctions& gl, int width, int height) {
   if (framebuffer_ && width == width_ && height == height_) return;
   const std::string what = "image size " + std::to_string(width) + "x" + std::to_string(height);
@@ -64,9 +47,10 @@ void RenderTarget::resize(const GlFunctions& gl, int width, int height) {
     checkSizeLimit(gl, what, side, GL_MAX_RENDERBUFFER_SIZE, "GL_MAX_RENDERBUFFER_SIZE");
     checkSizeLimit(gl, what, side, GL_MAX_VIEWPORT_DIMS, "GL_MAX_VIEWPORT_DIMS");
   }
-  *this = RenderTarget();
+  const GLenum format = colorFormat_;
+  *this = RenderTarget(format);
   color_ = createRenderbuffer(gl);
-  gl.glNamedRenderbufferStorage(color_.id(), GL_RGBA8, width, height);
+  gl.glNamedRenderbufferStorage(color_.id(), format, width, height);
   depth_ = createRenderbuffer(gl);
   gl.glNamedRenderbufferStorage(depth_.id(), GL_DEPTH_COMPONENT32F, width, height);
   framebuffer_ = createFramebuffer(gl);
@@ -74,7 +58,7 @@ void RenderTarget::resize(const GlFunctions& gl, int width, int height) {
   gl.glNamedFramebufferRenderbuffer(framebuffer_.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
   gl.glNamedFramebufferDrawBuffer(framebuffer_.id(), GL_COLOR_ATTACHMENT0);
   gl.glNamedFramebufferReadBuffer(framebuffer_.id(), GL_COLOR_ATTACHMENT0);
-  checkFramebufferComplete(gl, framebuffer_.id(), "lit pass (RGBA8 + DEPTH_COMPONENT32F)");
+  checkFramebufferComplete(gl, framebuffer_.id(), format == GL_RGBA8 ? "lit pass (RGBA8 + DEPTH_COMPONENT32F)" : "triangle id (R32UI + DEPTH_COMPONENT32F)");
   width_ = width;
   height_ = height;
 }

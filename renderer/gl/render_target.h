@@ -13,9 +13,11 @@ void checkFramebufferComplete(const GlFunctions& gl, GLuint framebuffer, const s
 // Throws facet::Error when `size` exceeds the GL limit `limitName` (e.g. GL_MAX_TEXTURE_SIZE).
 void checkSizeLimit(const GlFunctions& gl, const std::string& what, int size, GLenum limit, const char* limitName);
 
-// The lit pass's target: RGBA8 colour and GL_DEPTH_COMPONENT32F depth, W×H.
+// A W×H framebuffer of one colour attachment and GL_DEPTH_COMPONENT32F
+// depth: the lit pass's (GL_RGBA8) and the triangle ids' (GL_R32UI).
 class RenderTarget {
  public:
+  explicit RenderTarget(GLenum colorFormat = GL_RGBA8) : colorFormat_(colorFormat) {}
   // Reallocates when the size changes. Throws facet::Error beyond the
   // driver's limits or when the framebuffer is incomplete.
   void resize(const GlFunctions& gl, int width, int height);
@@ -25,19 +27,8 @@ class RenderTarget {
   int height() const { return height_; }
 
  private:
+  GLenum colorFormat_;
   GlObject color_, depth_, framebuffer_;
-  int width_ = 0, height_ = 0;
-};
-
-// The target of triangle ids (Renderer::visibleTriangles): GL_R32UI and
-// GL_DEPTH_COMPONENT32F, W×H.
-class TriangleIdTarget {
- public:
-  void resize(const GlFunctions& gl, int width, int height);
-  GLuint framebuffer() const { return framebuffer_.id(); }
-
- private:
-  GlObject ids_, depth_, framebuffer_;
   int width_ = 0, height_ = 0;
 };
 

@@ -5,14 +5,10 @@
 #   PNG               a file that must exist and start with the PNG signature
 #   HTML + ORDER      a page whose cases (data-name="...") appear in ORDER (|-separated)
 #   ABSENT            a path that must not exist afterwards
+include(${CMAKE_CURRENT_LIST_DIR}/../run_command.cmake)
 string(REPLACE "|" ";" ARGS "${ARGS}")
 string(REPLACE "|" ";" ORDER "${ORDER}")
-execute_process(COMMAND ${FACET} ${ARGS} WORKING_DIRECTORY ${WORKDIR}
-  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-set(report "\nexit ${rc}\nstdout:\n${out}\nstderr:\n${err}")
-if(NOT rc STREQUAL EXIT)
-  message(FATAL_ERROR "expected exit code ${EXIT}${report}")
-endif()
+facet_run_command(COMMAND ${FACET} ${ARGS} EXPECT ${EXIT} WORKING_DIRECTORY ${WORKDIR})
 if(DEFINED STDOUT AND NOT out MATCHES "${STDOUT}")
   message(FATAL_ERROR "stdout does not match '${STDOUT}'${report}")
 endif()
