@@ -1,10 +1,6 @@
 // Pass 2: the camera's z-buffer pass with flat, Gouraud or Phong shading.
-//
-// Varyings per mode (packed after x, y, z, 1/w in PassVertices::window):
-//   Phong:   world position 0-2, normal 3-5, texture coordinates 6-7
-//   Gouraud: front diffuse 0-2, front specular 3-5, back diffuse 6-8,
-//            back specular 9-11, texture coordinates 12-13
-//   Flat:    texture coordinates 0-1 (illumination is per triangle)
+// The varyings of each mode (packed after x, y, z, 1/w in
+// PassVertices::window) are varyings.h's.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -20,23 +16,12 @@
 #include "cpu/srgb_table.h"
 #include "cpu/texture_sampling.h"
 #include "cpu/tile_raster.h"
+#include "cpu/varyings.h"
 #include "cpu/vertex_math.h"
 
 namespace facet::cpu {
 namespace {
 
-struct Layout {
-  int count = 0;  // varyings in use
-  int uv = 0;     // first texture coordinate
-};
-
-constexpr Layout layoutFor(ShadingMode mode) {
-  switch (mode) {
-    case ShadingMode::Phong: return {8, 6};
-    case ShadingMode::Gouraud: return {14, 12};
-    default: return {2, 0};
-  }
-}
 
 void put(float* v, int at, glm::vec3 value) {
   for (int k = 0; k < 3; ++k) v[at + k] = value[k];
@@ -49,7 +34,7 @@ constexpr std::uint32_t kNoTriangle = std::numeric_limits<std::uint32_t>::max();
 template <ShadingMode kMode>
 void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, WorkerBins::TileScratch& scratch, int tx0, int ty0, int tx1,
                int ty1, Image& image) {
-  constexpr Layout layout = layoutFor(kMode);
+  constexpr VaryingLayout layout = varyingLayout(kMode);
   std::uint32_t current = kNoTriangle;
   Interpolation* in = nullptr;
   const CourseMaterial* material = nullptr;
@@ -118,7 +103,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
 
 void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, Image& image,
              std::vector<std::uint32_t>* triangleIds) {
-  const Layout layout = layoutFor(frame.shading);
+  const VaryingLayout layout = varyingLayout(frame.shading);
   const bool twoSided = !frame.cullBackFaces;
   const float halfWidth = 0.5f * static_cast<float>(frame.width), halfHeight = 0.5f * static_cast<float>(frame.height);
   PassVertices& v = buffers.vertices;

@@ -26,6 +26,7 @@
 #include "cpu/shadow_maps.h"
 #include "cpu/texture_sampling.h"
 #include "cpu/triangle_setup.h"
+#include "cpu/varyings.h"
 #include "cpu/vertex_math.h"
 #include "image/srgb.h"
 #include "pipeline/frame_checks.h"
@@ -108,13 +109,11 @@ ShadowMaps shadowPass(const Scene& scene, const FrameInputs& frame) {
   return maps;
 }
 
-// Pass 2: every triangle into the image, shaded by its mode. Varyings:
-//   Phong    world position 0-2, normal 3-5, texture coordinates 6-7
-//   Gouraud  front diffuse 0-2, front specular 3-5, back diffuse 6-8, back specular 9-11, texture coordinates 12-13
-//   flat     texture coordinates 0-1 (the triangle's illumination comes from its corners)
+// Pass 2: every triangle into the image, shaded by its mode, with the
+// varyings of varyings.h (Phong: position, normal; Gouraud: the
+// illumination of both sides; all: texture coordinates).
 void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, Target& target) {
-  const int count = frame.shading == ShadingMode::Phong ? 8 : frame.shading == ShadingMode::Gouraud ? 14 : 2;
-  const int uv = count - 2;
+  const int count = varyingLayout(frame.shading).count, uv = varyingLayout(frame.shading).uv;
   std::uint32_t id = 0;
   for (const FrameInstance& instance : frame.instances) {
     const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
