@@ -5,8 +5,9 @@
 # ${FACET_MUTATE_DIR:-build-mutate}/src with its own build, so the working
 # tree is never touched.
 #   scripts/mutate.sh [REGEX]     only the mutations whose name matches REGEX
-# Prints a Markdown table; exits 1 when a mutation does not apply or when no
-# test named for its feature fails.
+# Prints a Markdown table (and writes every failing entry of each mutation to
+# failing.txt beside the copy); exits 1 when a mutation does not apply or
+# when no test named for its feature fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
@@ -36,6 +37,7 @@ restore() {
 }
 
 status=0
+: >"$work/failing.txt"
 echo "| mutation | failing ctest entries | named for it | verdict |"
 echo "| --- | --- | --- | --- |"
 run() {
@@ -50,7 +52,9 @@ run() {
   local log="$work/last.log" failing=0 named=0 names=""
   if cmake --build "$build" --parallel "$(nproc)" >"$log" 2>&1; then
     ctest --test-dir "$build" --parallel "$(nproc)" >"$log" 2>&1 || true
+    echo "## $name" >>"$work/failing.txt"
     while IFS= read -r test; do
+      echo "$test" >>"$work/failing.txt"
       failing=$((failing + 1))
       if [[ "$test" =~ $expect ]]; then
         named=$((named + 1))

@@ -8,14 +8,16 @@
 
 #include <doctest/doctest.h>
 
+#include "gl/frame_block.h"
 #include "gl/gl_object.h"
 #include "gl/shader_program.h"
 #include "gl_test_support.h"
+#include "image/srgb.h"
 #include "scene/load_scene.h"
 
 using namespace facet;
 
-TEST_CASE("a base colour texel reaches the shader as c/255 exactly, the value the CPU backend decodes") {
+TEST_CASE("a base colour texel reaches the shader as its byte and decodes to the shared table's value, for every byte") {
   test::GlHarness harness;
   const gl::GlFunctions& gl = harness.gl;
   // Every byte value in red, its complement in green, uploaded as scene_buffers.cpp uploads textures.
@@ -27,6 +29,9 @@ TEST_CASE("a base colour texel reaches the shader as c/255 exactly, the value th
   gl.glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   gl.glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   gl.glTextureSubImage2D(texture.id(), 0, 0, 0, kWidth, 1, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, texels.data());
+  const gl::SrgbBlock srgb = gl::makeSrgbBlock();
+  const gl::GlObject tables = gl::createBuffer(gl);
+  gl.glNamedBufferStorage(tables.id(), sizeof srgb, &srgb, 0);
 
   const gl::GlObject color = gl::createRenderbuffer(gl);
   gl.glNamedRenderbufferStorage(color.id(), GL_RGBA32F, kWidth, 1);
@@ -34,9 +39,9 @@ TEST_CASE("a base colour texel reaches the shader as c/255 exactly, the value th
   gl.glNamedFramebufferRenderbuffer(framebuffer.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color.id());
   const gl::GlObject vertexArray = gl::createVertexArray(gl);
 
-  // The expression of texel() in shaders/texture.glsl, before its sRGB decode.
-  const std::string probe = "#version 450 core\nlayout(binding = 1) uniform usampler2D image;\nout vec4 value;\n"
-                            "void main() { value = vec4(vec3(texelFetch(image, ivec2(gl_FragCoord.xy), 0).rgb) / 255.0, 1.0); }\n";
+  // texel() of shaders/texture.glsl: the bytes, decoded by the SrgbTables block.
+  const std::string probe = "#version 450 core\n#include \"srgb.glsl\"\n#include \"texture.glsl\"\nlayout(binding = 1) uniform usampler2D image;\n"
+                            "out vec4 value;\nvoid main() { value = vec4(texel(image, int(gl_FragCoord.x), 0), 1.0); }\n";
   const gl::ShaderProgram program = gl::buildProgram(gl, {"background.vert", "probe.frag"}, "", [&](std::string_view name) {
     return name == "probe.frag" ? std::optional<std::string_view>(probe) : gl::findEmbeddedShaderFile(name);
   });
@@ -44,23 +49,27 @@ TEST_CASE("a base colour texel reaches the shader as c/255 exactly, the value th
   gl.glViewport(0, 0, kWidth, 1);
   gl.glUseProgram(program.id());
   gl.glBindTextureUnit(1, texture.id());
+  gl.glBindBufferBase(GL_UNIFORM_BUFFER, 1, tables.id());
   gl.glBindVertexArray(vertexArray.id());
   gl.glDrawArrays(GL_TRIANGLES, 0, 3);
   std::vector<float> values(4 * kWidth);
   gl.glReadPixels(0, 0, kWidth, 1, GL_RGBA, GL_FLOAT, values.data());
   REQUIRE(gl.glGetError() == GL_NO_ERROR);
 
-  // renderer/cpu/texture_sampling.cpp: glm::vec3(c.r, c.g, c.b) / 255.0f, compared bit for bit.
+  // renderer/cpu/texture_sampling.cpp reads the same table: compared bit for bit.
+  const SrgbTables& expected = srgbTables();
   int mismatches = 0, firstMismatch = -1;
   for (int c = 0; c < kWidth; ++c) {
     const float red = values[static_cast<std::size_t>(4 * c)], green = values[static_cast<std::size_t>(4 * c + 1)];
-    const float expectedRed = static_cast<float>(c) / 255.0f, expectedGreen = static_cast<float>(255 - c) / 255.0f;
+    const float expectedRed = expected.decoded[static_cast<std::size_t>(c)], expectedGreen = expected.decoded[static_cast<std::size_t>(255 - c)];
     if (std::memcmp(&red, &expectedRed, sizeof red) == 0 && std::memcmp(&green, &expectedGreen, sizeof green) == 0) continue;
     if (firstMismatch < 0) firstMismatch = c;
     ++mismatches;
   }
   CAPTURE(firstMismatch);
   CHECK(mismatches == 0);
+  CHECK(values[4 * 200] > values[4 * 100]);  // decoded, increasing: not the bytes themselves, not zeros
+  CHECK(values[4 * 255] == 1.0f);
 }
 
 TEST_CASE("a textured glTF box shows its texture: many colours, a blue and a green part of the logo") {
