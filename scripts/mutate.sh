@@ -5,9 +5,12 @@
 # ${FACET_MUTATE_DIR:-build-mutate}/src with its own build, so the working
 # tree is never touched.
 #   scripts/mutate.sh [REGEX]     only the mutations whose name matches REGEX
-# Prints a Markdown table (and writes every failing entry of each mutation to
-# failing.txt beside the copy); exits 1 when a mutation does not apply or
-# when no test named for its feature fails.
+# The agreement suite is one ctest entry; the cases it fails count as
+# "agreement:CASE" for the expectations, so that a mutation can be held to
+# the cases of its feature. Prints a Markdown table (and writes every failing
+# entry and agreement case of each mutation to failing.txt beside the copy);
+# exits 1 when a mutation does not apply or when no test named for its
+# feature fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
@@ -38,36 +41,37 @@ restore() {
 
 status=0
 : >"$work/failing.txt"
-echo "| mutation | failing ctest entries | named for it | verdict |"
-echo "| --- | --- | --- | --- |"
+echo "| mutation | failing ctest entries | failing agreement cases | named for it | verdict |"
+echo "| --- | --- | --- | --- | --- |"
 run() {
   [ -z "$name" ] && return 0
   if [ -n "$filter" ] && ! [[ "$name" =~ $filter ]]; then return 0; fi
   if ! apply; then
     restore
-    echo "| $name | - | - | DID NOT APPLY |"
+    echo "| $name | - | - | - | DID NOT APPLY |"
     status=1
     return 0
   fi
-  local log="$work/last.log" failing=0 named=0 names=""
+  local log="$work/last.log" failing=0 cases=0 named=0 names=""
   if cmake --build "$build" --parallel "$(nproc)" >"$log" 2>&1; then
-    ctest --test-dir "$build" --parallel "$(nproc)" >"$log" 2>&1 || true
+    ctest --test-dir "$build" --parallel "$(nproc)" --output-on-failure >"$log" 2>&1 || true
     echo "## $name" >>"$work/failing.txt"
     while IFS= read -r test; do
       echo "$test" >>"$work/failing.txt"
-      failing=$((failing + 1))
+      if [[ "$test" == agreement:* ]]; then cases=$((cases + 1)); else failing=$((failing + 1)); fi
       if [[ "$test" =~ $expect ]]; then
         named=$((named + 1))
         [ ${#names} -lt 160 ] && names="$names${names:+; }$test"
       fi
-    done < <(sed -n 's/^[[:space:]]*[0-9]* - \(.*\) (\(Failed\|SEGFAULT\|Subprocess aborted\|Timeout\|Exception\|Child aborted\|Not Run\|\*\*\*.*\))$/\1/p' "$log")
+    done < <(sed -n 's/^[[:space:]]*[0-9]* - \(.*\) (\(Failed\|SEGFAULT\|Subprocess aborted\|Timeout\|Exception\|Child aborted\|Not Run\|\*\*\*.*\))$/\1/p' "$log"
+             sed -n 's/^\([a-z0-9+-]*\)  *[0-9]*x[0-9]*  *[0-9]*  *[0-9]*  *[0-9]*  *[A-Za-z-]*  *[0-9]*\/[0-9]*  *FAIL.*$/agreement:\1/p' "$log")
   else
-    failing="build" named=1 names="the build fails"
+    failing="build" cases="-" named=1 names="the build fails"
   fi
   restore
   local verdict=caught
   [ "$named" -eq 0 ] && { verdict=MISSED; status=1; }
-  echo "| $name | $failing | $named: ${names:-none} | $verdict |"
+  echo "| $name | $failing | $cases | $named: ${names:-none} | $verdict |"
 }
 
 name="" expect=""
