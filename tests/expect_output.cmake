@@ -1,7 +1,7 @@
 # A command that must succeed, checked for any command: run COMMAND (its
 # words joined by '|') and require
 #  - the exit code EXIT (default 0; never a signal: run_command.cmake);
-#  - when STDOUT is given, stdout matching that regular expression;
+#  - when STDOUT (STDERR) is given, stdout (stderr) matching that regular expression;
 #  - when OUTPUT is given, that file written by the run (it is removed first);
 #  - when GOLDEN is given, OUTPUT equal to GOLDEN byte for byte in every
 #    pixel (`FACET diff --agreement`, which reads both PNGs);
@@ -18,6 +18,9 @@ endif()
 facet_run_command(COMMAND ${command} EXPECT ${EXIT})
 if(DEFINED STDOUT AND NOT out MATCHES "${STDOUT}")
   message(FATAL_ERROR "stdout does not match '${STDOUT}'${report}")
+endif()
+if(DEFINED STDERR AND NOT err MATCHES "${STDERR}")
+  message(FATAL_ERROR "stderr does not match '${STDERR}'${report}")
 endif()
 if(OUTPUT AND NOT EXISTS "${OUTPUT}")
   message(FATAL_ERROR "the run did not write ${OUTPUT}${report}")

@@ -217,7 +217,7 @@ int main(int argc, char** argv) {
       report.push_back(writeReportImages((fs::path(outDir) / "report").string(), static_cast<int>(report.size()), pair, thresholds));
     }
     ReportContext reportContext;
-    reportContext.expectedSource = "CPU reference (" + cpu->description() + ")";
+    reportContext.expectedSource = "CPU (" + cpu->description() + ")";
     reportContext.actualSource = "OpenGL (" + gl->description() + ")";
     reportContext.thresholds = backendAgreement();
     const std::string page = writeReportPage((fs::path(outDir) / "report").string(), report, reportContext);
