@@ -1,10 +1,14 @@
 // The course's 2-pass shadows on the CPU: in shadow behind an occluder, lit in
 // front of it, and acne without bias.
+#include <algorithm>
+#include <cmath>
 #include <set>
 
 #include <doctest/doctest.h>
 #include <glm/geometric.hpp>
 
+#include "cpu/lighting.h"
+#include "cpu/shadow_maps.h"
 #include "cpu_test_scenes.h"
 #include "math/transforms.h"
 #include "scene/primitives.h"
@@ -114,4 +118,33 @@ TEST_CASE("PCF softens the shadow edge: intermediate values appear that hard sha
     return reds.size();
   };
   CHECK(distinctReds(2) > distinctReds(0) + 5);
+}
+
+TEST_CASE("the shadow bias is max(b_slope·(1 - N·L), b_min): a point just beyond it is in shadow, one just within it is lit") {
+  // One directional light whose shadow-map coordinates are the world's own (u, v, z) = (x, y, z), and a
+  // 16x16 map holding depth 0.5 everywhere: a point at z = 0.5 + d is in shadow exactly when d > bias.
+  FrameLight light;
+  light.light.kind = LightKind::Directional;
+  light.hasShadowMap = true;
+  light.shadowLayer = 0;
+  light.shadowFromWorld[0] = glm::mat4(1.0f);
+  cpu::ShadowMaps maps;
+  maps.reset(16, 1);
+  std::fill(maps.depth.begin(), maps.depth.end(), 0.5f);
+  ShadowSettings shadows;
+  shadows.pcfRadius = 0;
+  shadows.biasMin = 0.01f;
+  const glm::vec3 L{0.0f, 0.0f, 1.0f};
+  const auto S = [&](float d, glm::vec3 N, float slope) {
+    shadows.biasSlope = slope;
+    return cpu::shadowFactor(maps, light, shadows, {0.5f, 0.5f, 0.5f + d}, N, L);
+  };
+  const glm::vec3 facing{0.0f, 0.0f, 1.0f};  // N·L = 1: the slope term is 0, b_min decides
+  CHECK(S(0.0099f, facing, 0.04f) == 1.0f);
+  CHECK(S(0.0101f, facing, 0.04f) == 0.0f);
+  const glm::vec3 grazing = glm::normalize(glm::vec3(0.0f, 1.0f, 1.0f / std::sqrt(3.0f)));  // N·L = 0.5: b_slope·0.5 = 0.02 > b_min
+  CHECK(S(0.0195f, grazing, 0.04f) == 1.0f);
+  CHECK(S(0.0205f, grazing, 0.04f) == 0.0f);
+  CHECK(S(0.0205f, grazing, 0.0f) == 0.0f);  // without the slope term, b_min = 0.01 again
+  CHECK(S(-0.1f, grazing, 0.04f) == 1.0f);   // nearer the light than the map: lit
 }
