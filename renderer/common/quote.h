@@ -1,0 +1,18 @@
+#pragma once
+// How an error line shows a value taken from the input: quoted, at most a
+// short prefix, control and non-UTF-8 bytes escaped, so that one line stays
+// one short line whatever the input holds (a 15 MB value, a NUL, raw bytes).
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace facet {
+
+// The longest prefix of a value an error line quotes, in bytes of input.
+inline constexpr std::size_t kMaxQuotedBytes = 48;
+
+// "'text'", or "'prefix…' (N bytes)" when longer than kMaxQuotedBytes;
+// bytes below 0x20, 0x7f and bytes that are not UTF-8 appear as \xNN.
+std::string quoted(std::string_view text);
+
+}  // namespace facet
