@@ -286,9 +286,9 @@ Command addBenchCommand(CLI::App& app) {
       ->delimiter(',')
       ->check(CLI::IsMember(allSceneNames()));
   command->add_option("--backends", o->backends, "cpu,gl (default both)")->delimiter(',')->check(CLI::IsMember({"cpu", "gl"}));
-  command->add_option("--frames", o->frames, "timed frames per backend and scene")->check(CLI::Range(1, 1000));
-  command->add_option("--warmup", o->warmup, "untimed frames first")->check(CLI::Range(0, 100));
-  command->add_option("--threads", o->threads, "threads of both backends (LP_NUM_THREADS for llvmpipe)")->check(CLI::Range(1, 256));
+  command->add_option("--frames", o->frames, "timed frames per backend and scene")->check(wholeNumberIn(1, 1000));
+  command->add_option("--warmup", o->warmup, "untimed frames first")->check(wholeNumberIn(0, 100));
+  command->add_option("--threads", o->threads, "threads of both backends (LP_NUM_THREADS for llvmpipe)")->check(wholeNumberIn(1, 256));
   command->add_option("--size", o->size, "image size WxH");
   command->add_option("--startup-runs", o->startupRuns, "runs of `facet render` per backend for the time to the first PNG (0: skip)")
       ->check(CLI::Range(0, 100));

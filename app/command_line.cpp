@@ -1,10 +1,31 @@
 #include "command_line.h"
 
 #include "common/error.h"
+#include "common/quote.h"
 #include "pipeline/view_setup.h"
 #include "settings/settings_json.h"
 
 namespace facet {
+
+namespace {
+
+// What is wrong with a --size value, or "" with width and height set.
+std::string sizeProblem(const std::string& text, int& width, int& height) {
+  const auto x = text.find('x');
+  if (x == std::string::npos) return "expected WxH, e.g. 800x600";
+  int* sides[2] = {&width, &height};
+  const std::string parts[2] = {text.substr(0, x), text.substr(x + 1)};
+  for (int i = 0; i < 2; ++i) {
+    const std::string& part = parts[i];
+    if (part.empty() || part.size() > 5 || part.find_first_not_of("0123456789") != std::string::npos)
+      return "expected WxH with whole numbers, e.g. 800x600";
+    *sides[i] = std::stoi(part);
+    if (*sides[i] < 1 || *sides[i] > kMaxImageSide) return "each side must be in [1, " + std::to_string(kMaxImageSide) + "]";
+  }
+  return {};
+}
+
+}  // namespace
 
 void addCommonOptions(CLI::App& command, CommonOptions& options, const std::string& outputHelp) {
   command.add_option("scene", options.scenePath,
@@ -14,23 +35,40 @@ void addCommonOptions(CLI::App& command, CommonOptions& options, const std::stri
                      "override one settings key, repeatable: --set shading=gouraud --set lights.0.position=[1,4,2]")
       ->take_all()
       ->allow_extra_args(false);
-  command.add_option("--size", options.size, "image size WxH, e.g. 1280x720 (overrides width and height)");
+  // Checked while the command line is parsed, before any file is read.
+  command.add_option("--size", options.size, "image size WxH, e.g. 1280x720 (overrides width and height)")
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            int width = 0, height = 0;
+            const std::string problem = sizeProblem(text, width, height);
+            return problem.empty() ? problem : quoteInput(text) + ": " + problem;
+          },
+          "WxH"));
   command.add_option("-o,--output", options.output, outputHelp);
 }
 
+
 void parseSize(const std::string& text, int& width, int& height) {
-  const auto x = text.find('x');
-  const auto parse = [&](const std::string& part) {
-    if (part.empty() || part.size() > 5 || part.find_first_not_of("0123456789") != std::string::npos)
-      throw UsageError("--size '" + text + "': expected WxH with whole numbers, e.g. 800x600");
-    const int v = std::stoi(part);
-    if (v < 1 || v > kMaxImageSide)
-      throw UsageError("--size '" + text + "': each side must be in [1, " + std::to_string(kMaxImageSide) + "]");
-    return v;
-  };
-  if (x == std::string::npos) throw UsageError("--size '" + text + "': expected WxH, e.g. 800x600");
-  width = parse(text.substr(0, x));
-  height = parse(text.substr(x + 1));
+  if (const std::string problem = sizeProblem(text, width, height); !problem.empty())
+    throw UsageError("--size " + quoteInput(text) + ": " + problem);
+}
+
+CLI::Validator wholeNumberIn(int min, int max) {
+  return CLI::Validator(
+      [min, max](std::string& text) -> std::string {
+        long value = 0;
+        std::size_t used = 0;
+        try {
+          value = std::stol(text, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (used == 0 || used != text.size()) return quoteInput(text) + " is not a whole number";
+        if (value < min || value > max)
+          return text + " is out of range [" + std::to_string(min) + ", " + std::to_string(max) + "]";
+        return {};
+      },
+      "INT in [" + std::to_string(min) + ", " + std::to_string(max) + "]");
 }
 
 RenderSettings settingsFor(const CommonOptions& options, const Scene& scene) {

@@ -31,4 +31,9 @@ RenderSettings settingsFor(const CommonOptions& options, const Scene& scene);
 // Parses "WxH" (1..kMaxImageSide each) or throws facet::UsageError.
 void parseSize(const std::string& text, int& width, int& height);
 
+// An option's check that its value is a whole number in [min, max], with a
+// message that says which of the two it is not (CLI::Range says "not in
+// range" for "abc" too).
+CLI::Validator wholeNumberIn(int min, int max);
+
 }  // namespace facet

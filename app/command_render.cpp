@@ -51,7 +51,7 @@ Command addRenderCommand(CLI::App& app) {
       ->check(CLI::IsMember({"gl", "cpu", "reference"}));
   command->add_option("--context", options->context, "headless OpenGL context for --backend gl: osmesa or egl")
       ->check(CLI::IsMember({"osmesa", "egl"}));
-  command->add_option("--threads", options->threads, "CPU backend threads (0: one per core)")->check(CLI::Range(0, 256));
+  command->add_option("--threads", options->threads, "CPU backend threads (0: one per core)")->check(wholeNumberIn(0, 256));
   return [options]() {
     const auto start = std::chrono::steady_clock::now();
     const std::string output = options->common.output.empty() ? "facet.png" : options->common.output;

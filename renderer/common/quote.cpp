@@ -30,7 +30,7 @@ std::size_t utf8Length(std::string_view text, std::size_t i) {
 
 }  // namespace
 
-std::string quoted(std::string_view text) {
+std::string quoteInput(std::string_view text) {
   std::string out = "'";
   std::size_t i = 0;
   while (i < text.size() && i < kMaxQuotedBytes) {

@@ -11,8 +11,9 @@ namespace facet {
 // The longest prefix of a value an error line quotes, in bytes of input.
 inline constexpr std::size_t kMaxQuotedBytes = 48;
 
+// (Not "quoted": std::quoted would win by argument-dependent lookup.)
 // "'text'", or "'prefix…' (N bytes)" when longer than kMaxQuotedBytes;
 // bytes below 0x20, 0x7f and bytes that are not UTF-8 appear as \xNN.
-std::string quoted(std::string_view text);
+std::string quoteInput(std::string_view text);
 
 }  // namespace facet

@@ -9,6 +9,8 @@
 
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "common/json_text.h"
+#include "common/quote.h"
 #include "settings/settings_fields.h"
 
 namespace facet {
@@ -19,6 +21,13 @@ using nlohmann::json;
 std::string join(const std::string& prefix, std::string_view key) {
   return prefix.empty() ? std::string(key) : prefix + "." + std::string(key);
 }
+
+// How every message names a key: "settings key 'lights.0.intensity'".
+std::string settingsKey(const std::string& dotted) { return "settings key " + quoteInput(dotted); }
+
+// The deepest valid settings nest 4 levels (lights, a light, its position);
+// a few more leave room for a helpful "expected ..." message.
+constexpr std::size_t kMaxSettingsDepth = 8;
 
 // The shortest decimal that reads back as the same float, as a double: 0.15f
 // is written 0.15, not 0.15000000596046448.
@@ -72,14 +81,14 @@ struct JsonReader {
     const auto it = in->find(std::string(f.key));
     return it == in->end() ? nullptr : &*it;
   }
-  [[noreturn]] void fail(const FieldInfo& f, const std::string& why) const { throw Error("settings key '" + join(prefix, f.key) + "': " + why); }
+  [[noreturn]] void fail(const FieldInfo& f, const std::string& why) const { throw Error(settingsKey(join(prefix, f.key)) + ": " + why); }
 
   double number(const FieldInfo& f, const json& j) const {
-    if (!j.is_number()) fail(f, "expected a number, got " + j.dump());
+    if (!j.is_number()) fail(f, "expected a number, got " + describeJson(j));
     const double v = j.get<double>();
     if (!std::isfinite(v)) fail(f, "must be finite");
     if (f.min != f.max && (v < f.min || v > f.max))
-      fail(f, std::to_string(v) + " is out of range [" + json(f.min).dump() + ", " + json(f.max).dump() + "]");
+      fail(f, exactNumber(v) + " is out of range [" + exactNumber(f.min) + ", " + exactNumber(f.max) + "]");
     return v;
   }
 
@@ -88,19 +97,19 @@ struct JsonReader {
   }
   void field(const FieldInfo& f, int& v) {
     if (const json* j = find(f)) {
-      if (!j->is_number_integer()) fail(f, "expected an integer, got " + j->dump());
+      if (!j->is_number_integer()) fail(f, "expected an integer, got " + describeJson(*j));
       v = static_cast<int>(number(f, *j));
     }
   }
   void field(const FieldInfo& f, bool& v) {
     if (const json* j = find(f)) {
-      if (!j->is_boolean()) fail(f, "expected true or false, got " + j->dump());
+      if (!j->is_boolean()) fail(f, "expected true or false, got " + describeJson(*j));
       v = j->get<bool>();
     }
   }
   void field(const FieldInfo& f, glm::vec3& v) {
     if (const json* j = find(f)) {
-      if (!j->is_array() || j->size() != 3) fail(f, "expected [x, y, z], got " + j->dump());
+      if (!j->is_array() || j->size() != 3) fail(f, "expected [x, y, z], got " + describeJson(*j));
       for (int i = 0; i < 3; ++i) v[i] = static_cast<float>(number(f, (*j)[static_cast<std::size_t>(i)]));
     }
   }
@@ -122,13 +131,13 @@ struct JsonReader {
       }
       allowed += (i ? ", " : "") + std::string(names[i]);
     }
-    fail(f, "expected one of " + allowed + ", got " + j->dump());
+    fail(f, "expected one of " + allowed + ", got " + describeJson(*j));
   }
   template <class Fn>
   void group(std::string_view key, Fn fn) {
     const json* j = find({key, ""});
     if (!j) return;
-    if (!j->is_object()) fail({key, ""}, "expected an object, got " + j->dump());
+    if (!j->is_object()) fail({key, ""}, "expected an object, got " + describeJson(*j));
     JsonReader nested{j, join(prefix, key), {}};
     std::swap(*this, nested);
     fn();
@@ -138,12 +147,12 @@ struct JsonReader {
   void lights(std::string_view key, std::vector<Light>& list) {
     const json* j = find({key, ""});
     if (!j) return;
-    if (!j->is_array()) fail({key, ""}, "expected an array of lights, got " + j->dump());
-    if (j->size() > 8) fail({key, ""}, "more than 8 lights (the GL backend's uniform block holds 8)");
+    if (!j->is_array()) fail({key, ""}, "expected an array of lights, got " + describeJson(*j));
+    if (j->size() > kMaxLights) fail({key, ""}, std::to_string(j->size()) + " lights, a frame shades at most " + std::to_string(kMaxLights));
     list.assign(j->size(), Light{});
     for (std::size_t i = 0; i < j->size(); ++i) {
       const std::string path = join(prefix, key) + "." + std::to_string(i);
-      if (!(*j)[i].is_object()) throw Error("settings key '" + path + "': expected an object, got " + (*j)[i].dump());
+      if (!(*j)[i].is_object()) throw Error(settingsKey(path) + ": expected an object, got " + describeJson((*j)[i]));
       JsonReader item{&(*j)[i], path, {}};
       visitLight(item, list[i]);
       item.checkNoUnknownKeys();
@@ -151,7 +160,7 @@ struct JsonReader {
   }
   void checkNoUnknownKeys() const {
     for (const auto& [key, value] : in->items())
-      if (!seen.count(key)) throw Error("settings key '" + join(prefix, key) + "': unknown key");
+      if (!seen.count(key)) throw Error(settingsKey(join(prefix, key)) + ": unknown key");
   }
 };
 
@@ -178,7 +187,7 @@ json settingsToJson(const RenderSettings& settings) {
 }
 
 RenderSettings settingsFromJson(const json& j) {
-  if (!j.is_object()) throw Error("settings: expected a JSON object, got " + j.dump());
+  if (!j.is_object()) throw Error("settings: expected a JSON object, got " + describeJson(j));
   RenderSettings settings;
   JsonReader reader{&j, "", {}};
   visitSettings(reader, settings);
@@ -189,14 +198,8 @@ RenderSettings settingsFromJson(const json& j) {
 
 RenderSettings loadSettingsFile(const std::string& path) {
   const std::string text = readFile(path, 16u << 20);
-  json j;
   try {
-    j = json::parse(text);
-  } catch (const json::exception& e) {
-    throw Error(path + ": not valid JSON (" + e.what() + ")");
-  }
-  try {
-    return settingsFromJson(j);
+    return settingsFromJson(parseStrictJson(text, kMaxSettingsDepth));
   } catch (const Error& e) {
     throw Error(path + ": " + e.what());
   }
@@ -205,14 +208,16 @@ RenderSettings loadSettingsFile(const std::string& path) {
 void applySetting(RenderSettings& settings, const std::string& assignment) {
   const auto equals = assignment.find('=');
   if (equals == std::string::npos || equals == 0)
-    throw Error("--set '" + assignment + "': expected key=value, e.g. shading=gouraud or lights.0.position=[1,4,2]");
+    throw Error("--set " + quoteInput(assignment) + ": expected key=value, e.g. shading=gouraud or lights.0.position=[1,4,2]");
   const std::string key = assignment.substr(0, equals);
   const std::string text = assignment.substr(equals + 1);
   json value;
   try {
-    value = json::parse(text);
-  } catch (const json::exception&) {
+    value = parseStrictJson(text, kMaxSettingsDepth);
+  } catch (const JsonSyntaxError&) {
     value = text;  // a bare word such as gouraud
+  } catch (const Error& e) {
+    throw Error(settingsKey(key) + ": " + e.what());
   }
 
   json root = settingsToJson(settings);
@@ -229,7 +234,7 @@ void applySetting(RenderSettings& settings, const std::string& assignment) {
         index = std::stoul(part, &used);
         if (used != part.size()) throw std::invalid_argument(part);
       } catch (const std::exception&) {
-        throw Error("settings key '" + walked + "': expected an index into the list");
+        throw Error(settingsKey(walked) + ": expected an index into the list");
       }
       if (index == node->size()) {
         json fresh = json::object();  // one past the end appends a default element
@@ -238,13 +243,13 @@ void applySetting(RenderSettings& settings, const std::string& assignment) {
         visitLight(writer, light);
         node->push_back(std::move(fresh));
       }
-      if (index >= node->size()) throw Error("settings key '" + walked + "': index past the end of the list (" + std::to_string(node->size()) + " elements)");
+      if (index >= node->size()) throw Error(settingsKey(walked) + ": index past the end of the list (" + std::to_string(node->size()) + " elements)");
       node = &(*node)[index];
     } else if (node->is_object()) {
-      if (!node->contains(part)) throw Error("settings key '" + walked + "': unknown key");
+      if (!node->contains(part)) throw Error(settingsKey(walked) + ": unknown key");
       node = &(*node)[part];
     } else {
-      throw Error("settings key '" + walked + "': unknown key");
+      throw Error(settingsKey(walked) + ": unknown key");
     }
     if (dot == std::string::npos) break;
     start = dot + 1;

@@ -1,4 +1,7 @@
 // RenderSettings <-> JSON: round trip, strictness, --set.
+#include <filesystem>
+#include <fstream>
+
 #include <doctest/doctest.h>
 #include <nlohmann/json.hpp>
 
@@ -67,4 +70,65 @@ TEST_CASE("a settings file with an error names the file and the key") {
   CHECK(s.shading == ShadingMode::Gouraud);
   REQUIRE(s.lights.size() == 1);
   CHECK(s.lights[0].kind == LightKind::Spot);
+}
+
+namespace {
+
+// Writes `text` to a fresh file under the build's temporary folder.
+std::string settingsFileWith(const std::string& name, const std::string& text) {
+  const std::string path = std::string(std::filesystem::temp_directory_path() / ("facet_settings_" + name));
+  std::ofstream(path, std::ios::binary) << text;
+  return path;
+}
+
+std::string nested(std::size_t depth) { return std::string(depth, '[') + std::string(depth, ']'); }
+
+}  // namespace
+
+TEST_CASE("settings text is read strictly: UTF-8, no NUL, no key twice, numbers that fit a double") {
+  const auto load = [](const std::string& name, const std::string& text) { return loadSettingsFile(settingsFileWith(name, text)); };
+  CHECK_THROWS_WITH_AS(load("utf16.json", std::string("\xff\xfe{\0}\0", 6)),
+                       doctest::Contains("utf16.json: not UTF-8 text (byte 0xff at offset 0; this looks like UTF-16)"), Error);
+  CHECK_THROWS_WITH_AS(load("latin1.json", "{\"shading\": \"caf\xe9\"}"), doctest::Contains("not UTF-8 text (byte 0xe9 at offset 16)"), Error);
+  CHECK_THROWS_WITH_AS(load("nul.json", std::string("{\"ambient\": 0.2}\0{\"ambient\": 0.9}", 33)),
+                       doctest::Contains("nul.json: a NUL byte at offset 16"), Error);
+  CHECK_THROWS_WITH_AS(load("twice.json", R"({"ambient": 0.2, "ambient": 0.3})"), doctest::Contains("twice.json: the key 'ambient' appears twice"), Error);
+  CHECK_THROWS_WITH_AS(load("twice_nested.json", R"({"lights": [{"kind": "point"}, {"kind": "spot", "kind": "point"}]})"),
+                       doctest::Contains("the key 'lights.1.kind' appears twice"), Error);
+  CHECK_THROWS_WITH_AS(load("huge.json", R"({"ambient": 1e400})"), doctest::Contains("huge.json: the number '1e400' is too large for a double"), Error);
+  // The same key in two different objects is not a duplicate.
+  CHECK(load("two_lights.json", R"({"lightSource": "manual", "lights": [{"kind": "point"}, {"kind": "spot"}]})").lights.size() == 2);
+
+  RenderSettings s;
+  CHECK_THROWS_WITH_AS(applySetting(s, "ambient=1e400"), "settings key 'ambient': the number '1e400' is too large for a double", Error);
+  CHECK_THROWS_WITH_AS(applySetting(s, "ambient=1.0000001"), "settings key 'ambient': 1.0000001 is out of range [0, 1]", Error);
+}
+
+TEST_CASE("settings nested without bound are refused before anything walks them") {
+  // nlohmann::json copies and dumps recursively: 60,000 levels overflowed the
+  // stack in --set (a copy) and in the error message of a file (a dump).
+  RenderSettings s;
+  CHECK_THROWS_WITH_AS(applySetting(s, "camera.eye=" + nested(60000)), doctest::Contains("settings key 'camera.eye': nested deeper than 8 levels"), Error);
+  CHECK_THROWS_WITH_AS(loadSettingsFile(settingsFileWith("deep.json", nested(100000))), doctest::Contains("deep.json: nested deeper than 8 levels"), Error);
+  CHECK_THROWS_WITH_AS(loadSettingsFile(settingsFileWith("deep_key.json", "{\"camera\": " + nested(100000) + "}")),
+                       doctest::Contains("nested deeper than 8 levels at 'camera.0.0"), Error);
+  // The deepest real settings still read (lights -> a light -> its position).
+  CHECK_NOTHROW(applySetting(s, "lights=[{\"kind\": \"point\", \"position\": [1, 2, 3]}]"));
+}
+
+TEST_CASE("error lines quote at most a short prefix of a value or key, with control bytes escaped") {
+  RenderSettings s;
+  const std::string huge(15u << 20, 'x');
+  try {
+    applySetting(s, "ambient=" + huge);
+    FAIL("a 15 MB string was taken as the ambient intensity");
+  } catch (const Error& e) {
+    const std::string line = e.what();
+    CHECK(line.size() < 200);
+    CHECK(line == "settings key 'ambient': expected a number, got '" + std::string(48, 'x') + "...' (15728640 bytes)");
+  }
+  CHECK_THROWS_WITH_AS(applySetting(s, std::string("amb\0ient=1", 10)), "settings key 'amb\\x00ient': unknown key", Error);
+  CHECK_THROWS_WITH_AS(applySetting(s, "shading=" + std::string("\x1b[2J", 4)), doctest::Contains("got '\\x1b[2J'"), Error);
+  CHECK_THROWS_WITH_AS(applySetting(s, "background=[0, 0]"), "settings key 'background': expected [x, y, z], got an array of 2 elements", Error);
+  CHECK_THROWS_WITH_AS(applySetting(s, huge), doctest::Contains("...' (15728640 bytes): expected key=value"), Error);
 }
