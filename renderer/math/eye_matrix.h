@@ -14,8 +14,10 @@ glm::mat4 mirrorX();
 // The caller ensures P_ref != P_eye and v_up not parallel to k.
 glm::mat4 eyeMatrix(glm::vec3 eye, glm::vec3 reference, glm::vec3 up);
 
-// True when eyeMatrix(eye, reference, up) is defined: distinct points, up not
-// (nearly) parallel to the line of sight.
-bool eyeFrameIsValid(glm::vec3 eye, glm::vec3 reference, glm::vec3 up);
+// Why eyeMatrix(eye, reference, up) is not defined, or nullptr when it is:
+// distinct points whose distance a float holds, up not zero and not (nearly)
+// parallel to the line of sight.
+const char* eyeFrameProblem(glm::vec3 eye, glm::vec3 reference, glm::vec3 up);
+inline bool eyeFrameIsValid(glm::vec3 eye, glm::vec3 reference, glm::vec3 up) { return eyeFrameProblem(eye, reference, up) == nullptr; }
 
 }  // namespace facet

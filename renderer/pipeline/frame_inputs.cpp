@@ -28,8 +28,8 @@ FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings)
   f.height = settings.height;
   f.camera = resolveCamera(scene, settings);
   const CameraSettings& c = f.camera;
-  if (!eyeFrameIsValid(c.eye, c.reference, c.up))
-    throw Error("settings key 'camera': eye, reference and up do not define a view (eye on the reference point, or up along the line of sight)");
+  if (const char* problem = eyeFrameProblem(c.eye, c.reference, c.up))
+    throw Error(std::string("settings key 'camera': eye, reference and up do not define a view (") + problem + ")");
   if (!(c.near > 0.0f) || !(c.far > c.near)) throw Error("settings key 'camera.far': must be greater than camera.near > 0");
 
   const float aspect = static_cast<float>(f.width) / static_cast<float>(f.height);

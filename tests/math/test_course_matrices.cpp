@@ -2,6 +2,7 @@
 #include <cmath>
 #include <initializer_list>
 #include <numbers>
+#include <string>
 
 #include <doctest/doctest.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -109,6 +110,20 @@ TEST_CASE("eye matrix: P_eye to the origin, P_ref onto +z, +x to the right, +y u
   CHECK(eyeFrameIsValid(eye, ref, up));
   CHECK_FALSE(eyeFrameIsValid(eye, eye, up));
   CHECK_FALSE(eyeFrameIsValid({0, 5, 0}, {0, 0, 0}, {0, 1, 0}));
+}
+
+TEST_CASE("an eye frame that is not defined says why") {
+  const glm::vec3 up{0, 1, 0};
+  CHECK(eyeFrameProblem({0, 0, 10}, {0, 0, 0}, up) == nullptr);
+  CHECK(std::string(eyeFrameProblem({1, 2, 3}, {1, 2, 3}, up)) == "the eye is on the reference point");
+  CHECK(std::string(eyeFrameProblem({0, 5, 0}, {0, 0, 0}, up)) == "up is along the line of sight");
+  CHECK(std::string(eyeFrameProblem({0, 0, 10}, {0, 0, 0}, {0, 0, 0})) == "up is zero");
+  // 1e30 is a float, but its square is not: k cannot be normalized. This was
+  // reported as "eye on the reference point".
+  CHECK(std::string(eyeFrameProblem({1e30f, 0, 0}, {0, 0, 0}, up)) == "the eye is too far from the reference point for float arithmetic, more than about 1.8e19");
+  CHECK(eyeFrameProblem({1e18f, 0, 0}, {0, 0, 0}, up) == nullptr);
+  CHECK(std::string(eyeFrameProblem({0, 0, 10}, {0, 0, 0}, {0, 1e30f, 0})).find("up is too long") == 0);
+  CHECK(std::string(eyeFrameProblem({0, 0, INFINITY}, {0, 0, 0}, up)) == "eye, reference or up is not finite");
 }
 
 TEST_CASE("perspective: x' = x/(z tanθ), y' = A_R·y/(z tanθ), z' = A + B/z") {
