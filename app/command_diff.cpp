@@ -6,10 +6,12 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "commands.h"
+#include "common/atomic_file.h"
 #include "common/error.h"
 #include "compare/backend_agreement.h"
 #include "compare/compare_files.h"
@@ -18,6 +20,7 @@
 #include "compare/folder_pairs.h"
 #include "compare/heat_map.h"
 #include "image/png.h"
+#include "output_option.h"
 
 namespace facet {
 namespace {
@@ -96,20 +99,19 @@ bool isPngName(const std::string& path) {
 // Prints one case, remembers it, and (with a report folder) writes its images.
 struct DiffRun {
   const DiffOptions& options;
-  std::string reportFolder;  // empty: no report
+  std::optional<ReportFolder> report;  // empty: no report
   std::vector<DiffCase> cases;
   std::vector<ReportCase> reportCases;
 
   void add(const ComparedFiles& compared) {
     std::fputs(caseText(compared.diffCase, options.thresholds).c_str(), stdout);
-    if (!reportFolder.empty())
-      reportCases.push_back(writeReportImages(reportFolder, static_cast<int>(cases.size()) + 1, compared, options.thresholds));
+    if (report) reportCases.push_back(report->writeImages(static_cast<int>(cases.size()) + 1, compared, options.thresholds));
     cases.push_back(compared.diffCase);
   }
 
   int finish() {
-    if (!reportFolder.empty()) {
-      const std::string page = writeReportPage(reportFolder, reportCases, {options.expected, options.actual, options.thresholds});
+    if (report) {
+      const std::string page = report->finish(reportCases, {options.expected, options.actual, options.thresholds});
       std::printf("report written to %s\n", page.c_str());
     }
     std::printf("%s\n", summaryLine(cases).c_str());
@@ -118,6 +120,10 @@ struct DiffRun {
 };
 
 int compareTwoFiles(const DiffOptions& options) {
+  const bool heatMapOnly = !options.output.empty() && isPngName(options.output);
+  // The output checked before any image is read: a run never ends unable to write what it made.
+  if (heatMapOnly) checkOutputFile(options.output, {options.expected, options.actual}, MissingFolders::Created);
+  else if (!options.output.empty()) checkReportFolder(options.output, {options.expected, options.actual});
   const std::string name = fs::path(options.expected).filename().string();
   const ComparedFiles compared = compareFiles(name, options.expected, options.actual, options.thresholds);
   const DiffCase& c = compared.diffCase;
@@ -125,9 +131,8 @@ int compareTwoFiles(const DiffOptions& options) {
     std::fprintf(stderr, "facet: %s\n", c.problem.c_str());
     return static_cast<int>(c.verdict);
   }
-  const bool heatMapOnly = !options.output.empty() && isPngName(options.output);
-  DiffRun run{options, heatMapOnly ? std::string() : options.output, {}, {}};
-  if (!run.reportFolder.empty()) createReportFolder(run.reportFolder);
+  DiffRun run{options, {}, {}, {}};
+  if (!heatMapOnly && !options.output.empty()) run.report.emplace(options.output);
   run.add(compared);
   if (heatMapOnly) {
     const fs::path folder = fs::path(options.output).parent_path();
@@ -142,10 +147,11 @@ int compareTwoFiles(const DiffOptions& options) {
 int compareTwoFolders(const DiffOptions& options) {
   if (isPngName(options.output))
     throw Error("-o " + options.output + ": two folders make a report folder (index.html and images), not one PNG");
+  if (!options.output.empty()) checkReportFolder(options.output, {options.expected, options.actual});
   const std::vector<FilePair> pairs = pairFolderFiles(options.expected, options.actual);
   if (pairs.empty()) throw Error(options.expected + " and " + options.actual + ": no PNG files in either folder");
-  DiffRun run{options, options.output, {}, {}};
-  if (!run.reportFolder.empty()) createReportFolder(run.reportFolder);
+  DiffRun run{options, {}, {}, {}};
+  if (!options.output.empty()) run.report.emplace(options.output);
   for (const FilePair& pair : pairs) run.add(compareFiles(pair.name, pair.expectedPath, pair.actualPath, options.thresholds));
   return run.finish();
 }
@@ -182,7 +188,7 @@ Command addDiffCommand(CLI::App& app) {
   threshold("--hardwarn", t.hardWarn, "any channel difference above this warns (default: off)");
   command->add_flag("--agreement", options->agreement,
                     "hold the images to what the OpenGL and CPU backends are held to: every byte equal (overrides the thresholds)");
-  command->add_option("-o,--output", options->output, "FILE.png: heat map (two PNGs only); FOLDER: HTML report with images");
+  refuseEmptyName(command->add_option("-o,--output", options->output, "FILE.png: heat map (two PNGs only); FOLDER: HTML report with images"));
   command->footer(kFooter);
   return [options]() {
     // Every problem here is about a file (or the output): idiff's exit code 4,

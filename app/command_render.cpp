@@ -6,10 +6,12 @@
 
 #include "command_line.h"
 #include "commands.h"
+#include "common/atomic_file.h"
 #include "common/error.h"
 #include "cpu/cpu_renderer.h"
 #include "cpu/reference/reference_renderer.h"
 #include "image/png.h"
+#include "output_option.h"
 #include "pipeline/frame_inputs.h"
 #include "scene/load_scene.h"
 #if FACET_HAVE_GL
@@ -45,6 +47,7 @@ Command addRenderCommand(CLI::App& app) {
   auto options = std::make_shared<RenderOptions>();
   CLI::App* command = app.add_subcommand("render", "Render one frame of a scene to a PNG, headless, with the OpenGL or the CPU backend");
   addCommonOptions(*command, options->common, "the PNG to write (default: facet.png)");
+  refuseEmptyName(command->get_option("--output"));
   command->add_option("--backend", options->backend,
                       "gl (OpenGL, headless on llvmpipe), cpu (the CPU rasterizer) or reference (the CPU rasterizer's one-triangle-at-a-time "
                       "reference: the same image, slowly)")
@@ -54,7 +57,9 @@ Command addRenderCommand(CLI::App& app) {
   command->add_option("--threads", options->threads, "CPU backend threads (0: one per core)")->check(wholeNumberIn(0, 256));
   return [options]() {
     const auto start = std::chrono::steady_clock::now();
-    const std::string output = options->common.output.empty() ? "facet.png" : options->common.output;
+    const std::string output = options->common.output.empty() ? "facet.png" : options->common.output;  // -o "" never parses
+    // Before loading and rendering (minutes at large sizes): a frame nobody can write is not drawn.
+    checkOutputFile(output, {options->common.scenePath, options->common.settingsPath});
     const Scene scene = loadScene(options->common.scenePath);
     for (const std::string& warning : scene.warnings) std::fprintf(stderr, "warning: %s: %s\n", scene.source.c_str(), warning.c_str());
     const RenderSettings settings = settingsFor(options->common, scene);

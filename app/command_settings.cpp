@@ -7,6 +7,7 @@
 #include "command_line.h"
 #include "commands.h"
 #include "common/atomic_file.h"
+#include "output_option.h"
 #include "scene/load_scene.h"
 #include "settings/settings_json.h"
 
@@ -17,13 +18,15 @@ Command addSettingsCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "settings", "Print the RenderSettings as JSON: the defaults, or with --settings/--set/--size applied for the scene");
   addCommonOptions(*command, *options, "write the JSON to this file instead of standard output");
+  refuseEmptyName(command->get_option("--output"));
   return [options]() {
+    if (!options->output.empty()) checkOutputFile(options->output, {options->scenePath, options->settingsPath});
     const Scene scene = loadScene(options->scenePath);
     const std::string text = settingsToJson(settingsFor(*options, scene)).dump(2) + "\n";
     if (options->output.empty()) {
       std::fputs(text.c_str(), stdout);
     } else {
-      writeFileAtomically(options->output, {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
+      writeFileAtomically(options->output, text);
       std::printf("settings written to %s\n", options->output.c_str());
     }
     return 0;

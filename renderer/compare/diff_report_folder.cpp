@@ -23,37 +23,90 @@ std::string safeName(const std::string& name) {
   return out;
 }
 
-ReportImage writeImage(const std::string& folder, const std::string& relative, const Image& image) {
-  if (image.empty()) return {};
-  writePng((fs::path(folder) / relative).string(), image);
-  return {relative, image.width(), image.height()};
+bool isPngName(const fs::path& name) {
+  std::string ext = name.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".png";
+}
+
+// What a report folder holds: index.html, images/ and PNG files in it. A
+// folder with anything else is someone's work, and never replaced.
+std::string foreignEntry(const fs::path& folder) {
+  std::error_code ec;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name == "index.html" && entry.is_regular_file(ec) && !entry.is_symlink(ec)) continue;
+    if (name == "images" && entry.is_directory(ec) && !entry.is_symlink(ec)) {
+      for (const fs::directory_entry& image : fs::directory_iterator(entry.path(), ec))
+        if (!isPngName(image.path()) || !image.is_regular_file(ec) || image.is_symlink(ec)) return "images/" + image.path().filename().string();
+      if (ec) return "images";
+      continue;
+    }
+    return name;
+  }
+  return ec ? std::string(".") : std::string();
+}
+
+// Runs one write into the staged folder; an error names the file where the
+// user will look for it (FOLDER/images/...), not under the temporary name.
+template <typename Write>
+void writeStaged(const std::string& staged, const std::string& folder, Write&& write) {
+  try {
+    write();
+  } catch (const Error& e) {
+    std::string message = e.what();
+    std::string name = folder;
+    while (name.size() > 1 && name.back() == '/') name.pop_back();
+    if (const auto at = message.find(staged); at != std::string::npos) message.replace(at, staged.size(), name);
+    throw Error(message);
+  }
 }
 
 }  // namespace
 
-void createReportFolder(const std::string& folder) {
-  std::error_code ec;
-  fs::create_directories(fs::path(folder) / "images", ec);
-  if (ec) throw Error(folder + ": cannot create the report folder (" + ec.message() + ")");
+ReportWriters defaultReportWriters() {
+  return {[](const std::string& path, const Image& image) { writePng(path, image); },
+          [](const std::string& path, std::string_view text) { writeFileAtomically(path, text); }};
 }
 
-ReportCase writeReportImages(const std::string& folder, int index, const ComparedFiles& compared, const DiffThresholds& thresholds) {
+void checkReportFolder(const std::string& folder, const std::vector<std::string>& inputs) {
+  checkOutputFolder(folder, inputs);
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec)) return;
+  if (const std::string entry = foreignEntry(folder); !entry.empty())
+    throw Error(shownPath(folder) + ": is a folder that is not a facet report (it holds " + shownPath(entry) +
+                "); give a new folder or remove this one");
+}
+
+ReportFolder::ReportFolder(const std::string& folder, ReportWriters writers)
+    : folder_((checkReportFolder(folder, {}), folder)), writers_(std::move(writers)), staged_(folder) {
+  std::error_code ec;
+  fs::create_directory(fs::path(staged_.path()) / "images", ec);
+  if (ec) throw Error(shownPath(folder) + ": cannot create the report folder (" + ec.message() + ")");
+}
+
+ReportCase ReportFolder::writeImages(int index, const ComparedFiles& compared, const DiffThresholds& thresholds) {
   char prefix[16];
   std::snprintf(prefix, sizeof prefix, "images/%03d-", index);
   const std::string stem = prefix + safeName(fs::path(compared.diffCase.name).stem().string());
+  const auto write = [&](const std::string& relative, const Image& image) -> ReportImage {
+    if (image.empty()) return {};
+    writeStaged(staged_.path(), folder_, [&] { writers_.png((fs::path(staged_.path()) / relative).string(), image); });
+    return {relative, image.width(), image.height()};
+  };
   ReportCase out;
   out.diffCase = compared.diffCase;
-  out.expected = writeImage(folder, stem + ".expected.png", compared.expected);
-  out.actual = writeImage(folder, stem + ".actual.png", compared.actual);
-  if (compared.diffCase.result) out.heatMap = writeImage(folder, stem + ".diff.png", heatMap(compared.expected, compared.actual, thresholds));
+  out.expected = write(stem + ".expected.png", compared.expected);
+  out.actual = write(stem + ".actual.png", compared.actual);
+  if (compared.diffCase.result) out.heatMap = write(stem + ".diff.png", heatMap(compared.expected, compared.actual, thresholds));
   return out;
 }
 
-std::string writeReportPage(const std::string& folder, std::vector<ReportCase> cases, const ReportContext& context) {
+std::string ReportFolder::finish(std::vector<ReportCase> cases, const ReportContext& context) {
   const std::string html = reportHtml(std::move(cases), context);
-  const std::string path = (fs::path(folder) / "index.html").string();
-  writeFileAtomically(path, {reinterpret_cast<const std::uint8_t*>(html.data()), html.size()});
-  return path;
+  writeStaged(staged_.path(), folder_, [&] { writers_.text((fs::path(staged_.path()) / "index.html").string(), html); });
+  staged_.commit();
+  return (fs::path(folder_) / "index.html").string();
 }
 
 }  // namespace facet

@@ -166,7 +166,7 @@ int main(int argc, char** argv) {
     std::string worstName = "-";
     DiffResult worst;
     std::vector<ReportCase> report;
-    createReportFolder((fs::path(outDir) / "report").string());
+    ReportFolder reportFolder((fs::path(outDir) / "report").string());
     for (const Case& c : cases) {
       const Scene scene = sceneOf(c, assetsDir);
       const FrameInputs frame = buildFrameInputs(scene, c.settings);
@@ -214,13 +214,13 @@ int main(int argc, char** argv) {
                   covered == 0 ? " (nothing drawn)" : (c.allow ? " (allowed: " + c.allow->reason + ")" : std::string()).c_str());
 
       const ComparedFiles pair = compareFiles(c.name, cpuPath, glPath, thresholds);
-      report.push_back(writeReportImages((fs::path(outDir) / "report").string(), static_cast<int>(report.size()), pair, thresholds));
+      report.push_back(reportFolder.writeImages(static_cast<int>(report.size()), pair, thresholds));
     }
     ReportContext reportContext;
     reportContext.expectedSource = "CPU (" + cpu->description() + ")";
     reportContext.actualSource = "OpenGL (" + gl->description() + ")";
     reportContext.thresholds = backendAgreement();
-    const std::string page = writeReportPage((fs::path(outDir) / "report").string(), report, reportContext);
+    const std::string page = reportFolder.finish(report, reportContext);
 
     std::printf("\ncases: %zu; bit-identical: %d of %zu; same triangle at every pixel: %d of %zu\n", cases.size(), identical, cases.size(),
                 coverageIdentical, cases.size());

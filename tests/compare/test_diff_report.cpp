@@ -108,18 +108,20 @@ TEST_CASE("the report folder holds every image and a page that lists the cases w
        base, withPixel(base, 1, 1, {20, 20, 40, 255})},
       {DiffCase{"only.png", "e/only.png", "", Verdict::Fail, "e/only.png: no actual image to compare it with", std::nullopt}, base, {}},
   };
-  createReportFolder(dir.string());
+  const fs::path folder = dir / "report";
+  ReportFolder report(folder.string());
   std::vector<ReportCase> cases;
-  for (std::size_t i = 0; i < compared.size(); ++i) cases.push_back(writeReportImages(dir.string(), static_cast<int>(i) + 1, compared[i], t));
+  for (std::size_t i = 0; i < compared.size(); ++i) cases.push_back(report.writeImages(static_cast<int>(i) + 1, compared[i], t));
   CHECK(cases[0].expected.path == "images/001-a_b_.expected.png");
   CHECK(cases[1].heatMap.path == "images/002-edge.diff.png");
   CHECK(cases[4].actual.path.empty());
   CHECK(cases[4].heatMap.path.empty());
+  const std::string page = report.finish(cases, {"e", "a", t});
+  CHECK(page == (folder / "index.html").string());
   for (const ReportCase& c : cases)
     for (const ReportImage* image : {&c.expected, &c.actual, &c.heatMap})
-      if (!image->path.empty()) CHECK(readPng((dir / image->path).string()).width() == 10);
+      if (!image->path.empty()) CHECK(readPng((folder / image->path).string()).width() == 10);
 
-  const std::string page = writeReportPage(dir.string(), cases, {"e", "a", t});
   std::ifstream in(page);
   const std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   // Worst first: the file without a partner (100%), the edge (10%), the pixel (1%), the warning, the pass.
