@@ -74,6 +74,7 @@ Command addInfoCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("info", "Print a scene's meshes, triangle count, materials, lights, cameras and bounds");
   addCommonOptions(*command, *options, "also write the report to this file");
   return [options]() {
+    if (!options->output.empty()) checkOutputFile(options->output, {options->scenePath, options->settingsPath});
     const Scene scene = loadScene(options->scenePath);
     const RenderSettings settings = settingsFor(*options, scene);
     const std::string report = describe(scene, settings);

@@ -3,6 +3,7 @@
 #include "common/error.h"
 #include "common/quote.h"
 #include "pipeline/view_setup.h"
+#include "output_option.h"
 #include "settings/settings_json.h"
 
 namespace facet {
@@ -44,7 +45,7 @@ void addCommonOptions(CLI::App& command, CommonOptions& options, const std::stri
             return problem.empty() ? problem : quoteInput(text) + ": " + problem;
           },
           "WxH"));
-  command.add_option("-o,--output", options.output, outputHelp);
+  refuseEmptyName(command.add_option("-o,--output", options.output, outputHelp));
 }
 
 

@@ -11,7 +11,6 @@
 #include "cpu/cpu_renderer.h"
 #include "cpu/reference/reference_renderer.h"
 #include "image/png.h"
-#include "output_option.h"
 #include "pipeline/frame_inputs.h"
 #include "scene/load_scene.h"
 #if FACET_HAVE_GL
@@ -47,7 +46,6 @@ Command addRenderCommand(CLI::App& app) {
   auto options = std::make_shared<RenderOptions>();
   CLI::App* command = app.add_subcommand("render", "Render one frame of a scene to a PNG, headless, with the OpenGL or the CPU backend");
   addCommonOptions(*command, options->common, "the PNG to write (default: facet.png)");
-  refuseEmptyName(command->get_option("--output"));
   command->add_option("--backend", options->backend,
                       "gl (OpenGL, headless on llvmpipe), cpu (the CPU rasterizer) or reference (the CPU rasterizer's one-triangle-at-a-time "
                       "reference: the same image, slowly)")

@@ -7,7 +7,6 @@
 #include "command_line.h"
 #include "commands.h"
 #include "common/atomic_file.h"
-#include "output_option.h"
 #include "scene/load_scene.h"
 #include "settings/settings_json.h"
 
@@ -18,7 +17,6 @@ Command addSettingsCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "settings", "Print the RenderSettings as JSON: the defaults, or with --settings/--set/--size applied for the scene");
   addCommonOptions(*command, *options, "write the JSON to this file instead of standard output");
-  refuseEmptyName(command->get_option("--output"));
   return [options]() {
     if (!options->output.empty()) checkOutputFile(options->output, {options->scenePath, options->settingsPath});
     const Scene scene = loadScene(options->scenePath);
