@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <new>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "commands.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "common/quote.h"
 #include "compare/backend_agreement.h"
 #include "compare/compare_files.h"
 #include "compare/diff_report_folder.h"
@@ -63,11 +65,14 @@ Exit codes (idiff's; with folders, the worst over all cases):
   1  WARNING: over the warn thresholds, within the fail thresholds
   2  FAILURE: over the fail thresholds, or a file with no partner
   3  the images have different sizes and cannot be compared
-  4  file error: missing, unreadable or not a PNG, or -o cannot be written)";
+  4  file error: missing, unreadable or not a PNG, or -o cannot be written
+as every facet command, and never a verdict on the images:
+  64 the command line is wrong (an unknown option, a value that does not parse)
+  70 internal error, or out of memory)";
 
-// Accepts "0.004", "inf" and "N/255" (any "A/B"; never negative), rewritten
-// as one decimal number for CLI11 to parse, with every digit kept so that
-// 2/255 stays exactly two steps.
+// Accepts "0.004", "inf" and "N/255" (any "A/B"; never negative, never NaN:
+// "inf/inf" is refused too), rewritten as one decimal number for CLI11 to
+// parse, with every digit kept so that 2/255 stays exactly two steps.
 CLI::Validator fractionOfFullScale() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
@@ -80,14 +85,31 @@ CLI::Validator fractionOfFullScale() {
         double a = 0.0, b = 1.0;
         const bool ok = slash == std::string::npos ? parse(text, a)
                                                    : parse(text.substr(0, slash), a) && parse(text.substr(slash + 1), b) && b > 0.0;
-        if (!ok) return "'" + text + "': expected a number such as 0.004, or a fraction such as 1/255";
-        if (a / b < 0.0) return "'" + text + "': a threshold cannot be negative";
+        if (!ok || std::isnan(a / b)) return quoteInput(text) + ": expected a number such as 0.004, or a fraction such as 1/255";
+        if (a / b < 0.0) return quoteInput(text) + ": a threshold cannot be negative";
         char exact[40];
         std::snprintf(exact, sizeof exact, "%.17g", a / b);
         text = exact;
         return {};
       },
       "FRACTION");
+}
+
+// A percent of pixels, 0 to 100. Not CLI::Range: every comparison with NaN
+// is false, so Range(0.0, 100.0) lets "nan" through.
+CLI::Validator percentOfPixels() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        if (text.empty() || *end != '\0' || !(value >= 0.0 && value <= 100.0))
+          return quoteInput(text) + ": expected a percent of pixels from 0 to 100";
+        char exact[40];
+        std::snprintf(exact, sizeof exact, "%.17g", value);
+        text = exact;
+        return {};
+      },
+      "PERCENT");
 }
 
 bool isPngName(const std::string& path) {
@@ -181,10 +203,10 @@ Command addDiffCommand(CLI::App& app) {
     command->add_option(flag, value, help)->transform(fractionOfFullScale())->capture_default_str();
   };
   threshold("--fail", t.failThreshold, "a channel difference above this fails its pixel (fraction of full scale)");
-  command->add_option("--failpercent", t.failPercent, "percent of pixels allowed to fail")->check(CLI::Range(0.0, 100.0))->capture_default_str();
+  command->add_option("--failpercent", t.failPercent, "percent of pixels allowed to fail")->transform(percentOfPixels())->capture_default_str();
   threshold("--hardfail", t.hardFail, "any channel difference above this fails the comparison (default: off)");
   threshold("--warn", t.warnThreshold, "a channel difference above this warns for its pixel (fraction of full scale)");
-  command->add_option("--warnpercent", t.warnPercent, "percent of pixels allowed to warn")->check(CLI::Range(0.0, 100.0))->capture_default_str();
+  command->add_option("--warnpercent", t.warnPercent, "percent of pixels allowed to warn")->transform(percentOfPixels())->capture_default_str();
   threshold("--hardwarn", t.hardWarn, "any channel difference above this warns (default: off)");
   command->add_flag("--agreement", options->agreement,
                     "hold the images to what the OpenGL and CPU backends are held to: every byte equal (overrides the thresholds)");
@@ -193,8 +215,16 @@ Command addDiffCommand(CLI::App& app) {
   return [options]() {
     // Every problem here is about a file (or the output): idiff's exit code 4,
     // not the 1 that main gives other facet errors (1 means WARNING here).
+    // The command line (64) and internal errors (70) go on to main, whose
+    // codes no verdict uses.
     try {
       return runDiff(*options);
+    } catch (const UsageError&) {
+      throw;
+    } catch (const OutOfMemory&) {
+      throw;
+    } catch (const std::bad_alloc&) {
+      throw OutOfMemory("comparing " + options->expected + " with " + options->actual);
     } catch (const Error& e) {
       std::fprintf(stderr, "facet: %s\n", e.what());
     } catch (const fs::filesystem_error& e) {

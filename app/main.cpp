@@ -3,13 +3,31 @@
 #include <cstdio>
 #include <exception>
 #include <map>
+#include <stdexcept>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
 #include "commands.h"
 #include "common/error.h"
+#include "common/quote.h"
+#include "exit_status.h"
 
-int main(int argc, char** argv) {
+namespace {
+
+// CLI11 reads a word that names no subcommand as a stray argument and then
+// says "A subcommand is required"; the word itself is the problem.
+void checkCommandName(CLI::App& app, int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-') return;
+  std::string names;
+  for (const CLI::App* sub : app.get_subcommands({})) {
+    if (sub->check_name(argv[1])) return;
+    names += (names.empty() ? "" : ", ") + sub->get_name();
+  }
+  throw facet::UsageError("unknown command " + facet::quoteInput(argv[1]) + " (commands: " + names + "; see facet --help)");
+}
+
+int run(int argc, char** argv) {
   CLI::App app{"facet: a course rendering pipeline with an OpenGL backend and a CPU reference"};
   app.require_subcommand(1);
   std::map<CLI::App*, facet::Command> commands;
@@ -22,7 +40,11 @@ int main(int argc, char** argv) {
 #if FACET_HAVE_VIEWER
   add(facet::addViewCommand(app));
 #endif
+  app.footer(
+      "Exit codes: 0 success (facet diff: idiff's 0-4, see facet diff --help), 1 bad input (a file, a frame), 64 a wrong "
+      "command line, 70 an internal error or out of memory.");
 
+  checkCommandName(app, argc, argv);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -33,24 +55,22 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     // 64 (EX_USAGE): distinct from `facet diff`'s 1 (warning) and 2 (failure).
-    std::fprintf(stderr, "facet: %s (see facet --help)\n", e.what());
-    return 64;
+    facet::printErrorLine(stderr, "", e.what(), " (see facet --help)");
+    return facet::kExitUsage;
   }
+  for (auto& [subcommand, command] : commands)
+    if (subcommand->parsed()) return command();
+  throw std::logic_error("the command line parsed, but no command ran");  // require_subcommand(1) rules it out
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // Every exception a command lets through ends here, as one line and an
+  // exit code (app/exit_status.h): bad input 1 or 64, anything else 70.
   try {
-    for (auto& [subcommand, run] : commands)
-      if (subcommand->parsed()) return run();
-  } catch (const facet::UsageError& e) {
-    std::fprintf(stderr, "facet: %s\n", e.what());
-    return 64;
-  } catch (const facet::Error& e) {
-    std::fprintf(stderr, "facet: %s\n", e.what());
-    return 1;
-  } catch (const std::bad_alloc&) {
-    std::fprintf(stderr, "facet: out of memory\n");
-    return 1;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "facet: internal error: %s\n", e.what());
-    return 3;
+    return run(argc, argv);
+  } catch (...) {
+    return facet::reportError(std::current_exception(), stderr);
   }
-  return 2;
 }
