@@ -74,6 +74,8 @@ void saveScreenshot(ViewerState& state, const Image& image) {
     report(state, "screenshot written to " + path, false);
   } catch (const Error& e) {
     report(state, e.what(), true);
+  } catch (const OutOfMemory& e) {  // shown, as any failed screenshot: the window stays
+    report(state, std::string("out of memory while ") + e.what(), true);
   }
 }
 

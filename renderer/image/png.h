@@ -1,16 +1,36 @@
 #pragma once
+#include <cstdint>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "image/image.h"
+#include "settings/render_settings.h"
 
 namespace facet {
 
-// Writes `image` as an 8-bit RGBA PNG, top row first, atomically (no partial
-// file on failure). Throws facet::Error naming the path.
+// The largest PNG facet reads, checked from the header before anything is
+// decoded: the largest image facet renders. Each side at most kMaxImageSide,
+// and at most kMaxPngDecodedBytes for the RGBA samples at the file's bit
+// depth (4 bytes a pixel, 8 for 16-bit files), the largest buffer the
+// decoder builds: a 16384x16384 8-bit PNG fits, a 16-bit one up to 2^27 pixels.
+inline constexpr std::uint64_t kMaxPngDecodedBytes = 4ull * kMaxImageSide * kMaxImageSide;  // 1 GiB
+inline constexpr std::uint64_t kMaxPngFileBytes = 512ull << 20;
+
+// An 8-bit RGBA PNG of `image`, top row first. Throws facet::OutOfMemory.
+std::vector<std::uint8_t> encodePng(const Image& image, const std::string& name);
+
+// Writes encodePng(image) to `path` atomically (no partial file on failure).
+// Throws facet::Error naming the path, facet::OutOfMemory.
 void writePng(const std::string& path, const Image& image);
 
-// Reads a PNG (any bit depth and channel count stb_image accepts) into RGBA8.
-// Throws facet::Error naming the path and the problem.
+// Decodes a PNG (any bit depth and colour type of the PNG standard) into
+// RGBA8. Strict: every chunk's CRC must match, the file must end with IEND,
+// nothing may follow it, and an unknown critical chunk is refused. Throws
+// facet::Error naming `name` and the problem, facet::OutOfMemory.
+Image decodePng(std::string_view bytes, const std::string& name);
+
+// readFile (at most kMaxPngFileBytes) and decodePng.
 Image readPng(const std::string& path);
 
 }  // namespace facet
