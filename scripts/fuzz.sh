@@ -9,9 +9,10 @@ seconds="${1:-60}"
 ./scripts/install-deps.sh
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFACET_BUILD_FUZZERS=ON \
   -DFACET_BUILD_GL=OFF -DFACET_BUILD_TESTS=OFF >/dev/null
-cmake --build build-fuzz --parallel "$(nproc)" --target fuzz_gltf_loader fuzz_cpu_rasterizer
+targets=(gltf_loader cpu_rasterizer png_reader settings_json)
+cmake --build build-fuzz --parallel "$(nproc)" --target "${targets[@]/#/fuzz_}"
 mkdir -p build-fuzz/findings
-for target in gltf_loader cpu_rasterizer; do
+for target in "${targets[@]}"; do
   corpus="build-fuzz/corpus/$target"
   mkdir -p "$corpus"
   cp -n tests/fuzz/corpus/"$target"/* tests/fuzz/regressions/"$target"/* "$corpus"/ 2>/dev/null || true
