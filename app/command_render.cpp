@@ -3,6 +3,8 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <new>
+#include <string>
 
 #include "command_line.h"
 #include "commands.h"
@@ -64,7 +66,14 @@ Command addRenderCommand(CLI::App& app) {
     const FrameInputs frame = buildFrameInputs(scene, settings);
     for (const std::string& warning : frame.warnings) std::fprintf(stderr, "warning: %s: %s\n", scene.source.c_str(), warning.c_str());
     std::unique_ptr<Renderer> renderer = makeRenderer(*options);
-    const RenderResult result = renderer->render(scene, frame);
+    RenderResult result;
+    try {
+      result = renderer->render(scene, frame);
+    } catch (const OutOfMemory&) {
+      throw;
+    } catch (const std::bad_alloc&) {
+      throw OutOfMemory("rendering " + scene.source + " (" + std::to_string(frame.width) + "x" + std::to_string(frame.height) + ")");
+    }
     writePng(output, result.image);
     const double total = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
