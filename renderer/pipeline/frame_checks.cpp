@@ -56,9 +56,9 @@ void checkFrameMemory(const Scene& scene, const FrameInputs& frame) {
                   source + "the shadow maps of " + std::to_string(lights) + " lights (" + std::to_string(frame.shadowLayerCount) + " faces of " +
                       std::to_string(frame.shadows.mapSize) + "x" + std::to_string(frame.shadows.mapSize) + " depth texels)");
   } catch (const Error& e) {
-    throw Error(std::string(e.what()) + "; settings key 'shadows.mapSize' " +
-                (fits >= static_cast<std::uint64_t>(kMinShadowMapSize) ? std::to_string(fits) + " or less fits" : "cannot make it fit") +
-                ", or shadows.enabled=false");
+    throw Error(std::string(e.what()) + " (settings key 'shadows.mapSize': " +
+                (fits >= static_cast<std::uint64_t>(kMinShadowMapSize) ? std::to_string(fits) + " or less fits" : "no size fits") +
+                ", or shadows.enabled=false)");
   }
 }
 

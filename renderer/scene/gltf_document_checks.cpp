@@ -78,15 +78,15 @@ void checkImageBufferViews(const json& document) {
     const std::string image = named("images", i, images[i]);
     std::uint64_t v = 0;
     if (!nonNegativeInteger(*bufferView, v) || v >= views.size() || !views[static_cast<std::size_t>(v)].is_object())
-      throw Error(image + ": bufferView " + show(bufferView->dump()) + " does not exist (the file has " + std::to_string(views.size()) +
-                  " bufferViews; UNRESOLVED_REFERENCE)");
+      throw Error(image + ": bufferView " + show(bufferView->dump()) + " does not exist (UNRESOLVED_REFERENCE: the file has " +
+                  std::to_string(views.size()) + " bufferViews)");
     const json& view = views[static_cast<std::size_t>(v)];
     const std::string name = image + ": " + named("bufferViews", static_cast<std::size_t>(v), view);
     const auto buffer = view.find("buffer");
     std::uint64_t b = 0;
     if (buffer == view.end() || !nonNegativeInteger(*buffer, b) || b >= buffers.size() || !buffers[static_cast<std::size_t>(b)].is_object())
       throw Error(name + ": buffer " + (buffer == view.end() ? std::string("is missing") : show(buffer->dump()) + " does not exist") +
-                  " (the file has " + std::to_string(buffers.size()) + " buffers; UNRESOLVED_REFERENCE)");
+                  " (UNRESOLVED_REFERENCE: the file has " + std::to_string(buffers.size()) + " buffers)");
     const std::string bufferName = named("buffers", static_cast<std::size_t>(b), buffers[static_cast<std::size_t>(b)]);
     const std::uint64_t size = integerProperty(bufferName, buffers[static_cast<std::size_t>(b)], "byteLength", 0);
     const std::uint64_t offset = integerProperty(name, view, "byteOffset", 0);
@@ -169,7 +169,7 @@ void checkNodeHierarchy(const json& document) {
       std::uint64_t c = 0;
       if (!nonNegativeInteger(child, c) || c >= nodes.size()) continue;  // the walker warns of it (UNRESOLVED_REFERENCE)
       const auto k = static_cast<std::size_t>(c);
-      if (k == n) throw Error(node(k) + ": is its own child (NODE_LOOP; glTF node hierarchies are trees)");
+      if (k == n) throw Error(node(k) + ": is its own child (NODE_LOOP: glTF node hierarchies are trees)");
       if (parent[k] == n) throw Error(node(k) + ": is listed twice among the children of " + at("nodes", n) + " (ARRAY_DUPLICATE_ELEMENTS)");
       if (parent[k] != kNone)
         throw Error(node(k) + ": is a child of both " + at("nodes", parent[k]) + " and " + at("nodes", n) +
@@ -189,7 +189,7 @@ void checkNodeHierarchy(const json& document) {
       chain.push_back(k);
       k = parent[k];
     }
-    if (k != kNone && state[k] == 1) throw Error(node(k) + ": is its own ancestor (NODE_LOOP; glTF node hierarchies are trees)");
+    if (k != kNone && state[k] == 1) throw Error(node(k) + ": is its own ancestor (NODE_LOOP: glTF node hierarchies are trees)");
     for (std::size_t c : chain) state[c] = 2;
   }
   const json& scenes = arrayOf(document, "scenes");
@@ -221,8 +221,8 @@ void checkTextureSamplers(const json& document) {
     if (sampler == textures[t].end()) continue;  // "When undefined, a sampler with repeat wrapping and auto filtering MUST be used"
     std::uint64_t s = 0;
     if (!nonNegativeInteger(*sampler, s) || s >= samplers)
-      throw Error(named("textures", t, textures[t]) + ": sampler " + show(sampler->dump()) + " does not exist (the file has " +
-                  std::to_string(samplers) + " samplers; UNRESOLVED_REFERENCE)");
+      throw Error(named("textures", t, textures[t]) + ": sampler " + show(sampler->dump()) + " does not exist (UNRESOLVED_REFERENCE: the file has " +
+                  std::to_string(samplers) + " samplers)");
   }
 }
 

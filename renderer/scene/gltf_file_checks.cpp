@@ -61,7 +61,7 @@ const char* wideEncoding(std::string_view b) {
 // of a .gltf or of a GLB's JSON chunk (`where` names which).
 void checkJsonText(const std::string& path, std::string_view text, const char* where) {
   if (const char* wide = wideEncoding(text))
-    throw Error(path + ": not a glTF file (" + where + " must be UTF-8 JSON; this is " + wide + " text)");
+    throw Error(path + ": not a glTF file (" + where + " must be UTF-8 JSON, and this is " + wide + " text)");
   if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos)
     throw Error(path + ": a NUL byte at byte " + std::to_string(nul) + " of the " + where +
                 ", where JSON text cannot hold one (glTF JSON is UTF-8 text)");
@@ -71,7 +71,7 @@ void checkJsonText(const std::string& path, std::string_view text, const char* w
   if (first == std::string_view::npos)
     throw Error(path + ": not a glTF file (" + where + (text.empty() ? " is empty)" : " holds only white space)"));
   if (rest[first] != '{')
-    throw Error(path + ": not a glTF file (" + where + " must be UTF-8 JSON holding an object; it starts with " +
+    throw Error(path + ": not a glTF file (" + where + " must be UTF-8 JSON holding an object, and it starts with " +
                 show(rest.substr(first, 16)) + ")");
 }
 
@@ -188,7 +188,7 @@ nlohmann::json parseGltfJson(const std::string& path, std::string_view text) {
     std::string expected;
     if (const std::size_t read = what.find("; last read: '"); read != std::string::npos) {
       const std::size_t expect = what.find("'; expected ", read);
-      if (expect != std::string::npos) expected = what.substr(expect + 1);
+      if (expect != std::string::npos) expected = "," + what.substr(expect + 2);  // ", expected ...": one clause, no ';' 
       what = what.substr(0, read);
     }
     const std::size_t byte = std::min<std::size_t>(e.byte > 0 ? e.byte - 1 : 0, text.size());

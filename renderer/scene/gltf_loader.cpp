@@ -508,11 +508,10 @@ glm::mat4 localMatrix(const tinygltf::Node& node) {
   return translation(t) * r * scaling(s);
 }
 
-// The world-space box of a mesh placed by `world`: the box of its
-// model-space box's eight corners.
-Bounds placedBounds(const Mesh& mesh, const glm::mat4& world) {
-  Bounds model, placed;
-  for (const glm::vec3& p : mesh.positions) model.include(p);
+// The world-space box of a mesh placed by `world`: the box of the eight
+// corners of its model-space box.
+Bounds placedBounds(const Bounds& model, const glm::mat4& world) {
+  Bounds placed;
   for (int corner = 0; corner < 8; ++corner) {
     const glm::vec3 p(corner & 1 ? model.max.x : model.min.x, corner & 2 ? model.max.y : model.min.y, corner & 4 ? model.max.z : model.min.z);
     placed.include(glm::vec3(world * glm::vec4(p, 1.0f)));
@@ -529,6 +528,7 @@ struct NodeWalker {
   Warnings& warnings;
   const std::vector<std::vector<int>>& meshTable;
   std::vector<char> visited;
+  std::map<int, Bounds> modelBounds;  // per scene mesh, once
   // What the instances will need of a frame (memory_budget.h), priced as
   // each is placed, so that many nodes naming one big mesh are refused here.
   MemoryBudget frameBudget{kFrameMemoryBudget, "frame budget"};
@@ -558,7 +558,12 @@ struct NodeWalker {
         for (int sceneMesh : meshTable[static_cast<std::size_t>(node.mesh)]) {
           if (sceneMesh < 0) continue;
           const Mesh& mesh = scene.meshes[static_cast<std::size_t>(sceneMesh)];
-          const Bounds placed = placedBounds(mesh, world);
+          auto bounds = modelBounds.find(sceneMesh);
+          if (bounds == modelBounds.end()) {
+            bounds = modelBounds.emplace(sceneMesh, Bounds{}).first;
+            for (const glm::vec3& p : mesh.positions) bounds->second.include(p);
+          }
+          const Bounds placed = placedBounds(bounds->second, world);
           if (!finite(placed.min) || !finite(placed.max) || !drawable(placed.min) || !drawable(placed.max)) {
             warnings.push_back(at("nodes", n) + ": places " + at("meshes", static_cast<std::size_t>(node.mesh)) + " beyond +-" + coordinateLimit() +
                                ", farther than facet draws; that instance is skipped");
@@ -698,6 +703,28 @@ bool removeChannelsWithoutNode(nlohmann::json& document, Warnings& warnings) {
   return removed;
 }
 
+// A line of tinygltf's, which may hold text from the file (a URI, a name):
+// its first line only, control and non-ASCII bytes escaped, at most 200 bytes.
+std::string tinygltfLine(std::string text) {
+  while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+  const auto newline = text.find('\n');
+  const bool more = newline != std::string::npos;
+  if (more) text.resize(newline);
+  std::string line;
+  for (std::size_t i = 0; i < text.size() && line.size() < 200; ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x20 && c < 0x7f) {
+      line += static_cast<char>(c);
+    } else {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\x%02x", c);
+      line += escaped;
+    }
+  }
+  if (line.size() >= 200) line += "...";
+  return more ? line + " (and more)" : line;
+}
+
 }  // namespace
 
 // [SECTION] loadGltf
@@ -754,34 +781,13 @@ Scene loadGltfFromMemory(const std::string& bytes, const std::string& path, cons
     throw Error(path + ": glTF parser failed");
   }
   if (images.failure) throw Error(path + ": " + images.failure->what());
-  // tinygltf's first line, which may hold text from the file (a URI, a
-  // name): control and non-ASCII bytes escaped, at most 200 bytes.
-  const auto firstLine = [](std::string text) {
-    while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
-    const auto newline = text.find('\n');
-    const bool more = newline != std::string::npos;
-    if (more) text.resize(newline);
-    std::string line;
-    for (std::size_t i = 0; i < text.size() && line.size() < 200; ++i) {
-      const auto c = static_cast<unsigned char>(text[i]);
-      if (c >= 0x20 && c < 0x7f) {
-        line += static_cast<char>(c);
-      } else {
-        char escaped[8];
-        std::snprintf(escaped, sizeof escaped, "\\x%02x", c);
-        line += escaped;
-      }
-    }
-    if (line.size() >= 200) line += "...";
-    return more ? line + " (and more)" : line;
-  };
   for (const char* tolerated : kTolerated)  // what tinygltf reports that glTF allows
     for (auto at = err.find(tolerated); at != std::string::npos; at = err.find(tolerated)) {
       std::size_t end = at + std::strlen(tolerated);
       if (end < err.size() && err[end] == '\n') ++end;
       err.erase(at, end - at);
     }
-  if (!ok || !err.empty()) throw Error(path + ": " + (err.empty() ? std::string("not a valid glTF file") : firstLine(err)));
+  if (!ok || !err.empty()) throw Error(path + ": " + (err.empty() ? std::string("not a valid glTF file") : tinygltfLine(err)));
   if (model.asset.version.empty() || model.asset.version[0] != '2')
     throw Error(path + ": asset.version " + quoteInput(model.asset.version) + " is not glTF 2.x (UNKNOWN_ASSET_MAJOR_VERSION)");
   for (const std::string& required : model.extensionsRequired)
@@ -794,7 +800,7 @@ Scene loadGltfFromMemory(const std::string& bytes, const std::string& path, cons
     const auto newline = warn.find('\n');
     line = warn.substr(0, newline);
     warn = newline == std::string::npos ? std::string() : warn.substr(newline + 1);
-    if (!line.empty()) warnings.push_back(line);
+    if (!line.empty()) warnings.push_back(tinygltfLine(line));
   }
   for (const std::string& used : model.extensionsUsed)
     if (!kSupportedExtensions.count(used)) warnings.push_back("extension " + quoteInput(used) + " is not supported; ignored");
@@ -824,7 +830,7 @@ Scene loadGltfFromMemory(const std::string& bytes, const std::string& path, cons
       if (!isChild[n]) roots.push_back(static_cast<int>(n));
     if (!model.nodes.empty()) warnings.push_back("the file has no scenes; drawing every root node");
   }
-  NodeWalker walker{model, scene, warnings, meshTable, std::vector<char>(model.nodes.size(), 0)};
+  NodeWalker walker{model, scene, warnings, meshTable, std::vector<char>(model.nodes.size(), 0), {}};
   try {
     for (int root : roots) walker.visit(root, glm::mat4(1.0f), 0);
   } catch (const Error& e) {

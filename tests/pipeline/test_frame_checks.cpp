@@ -135,7 +135,7 @@ TEST_CASE("frame budget: shadow maps and instance buffers are priced before a ba
   settings.shadows.mapSize = 2048;
   CHECK_THROWS_WITH_AS(buildFrameInputs(scene, settings),
                        "lamps.gltf: the shadow maps of 8 lights (48 faces of 2048x2048 depth texels) need 768 MiB, more than the frame budget of "
-                       "512 MiB; settings key 'shadows.mapSize' 1672 or less fits, or shadows.enabled=false",
+                       "512 MiB (settings key 'shadows.mapSize': 1672 or less fits, or shadows.enabled=false)",
                        Error);
   settings.shadows.mapSize = 1672;
   const FrameInputs fits = buildFrameInputs(scene, settings);

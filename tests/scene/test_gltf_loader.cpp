@@ -400,7 +400,7 @@ TEST_CASE("glTF bad input: the budgets' messages name what needs how much") {
 }
 
 TEST_CASE("glTF bad input: a file that is not glTF is named for what it is, its bytes never echoed raw") {
-  CHECK_THROWS_WITH_AS(loadGltf(kData + "/utf16.gltf"), doctest::Contains("utf16.gltf: not a glTF file (.gltf must be UTF-8 JSON; this is UTF-16LE text)"),
+  CHECK_THROWS_WITH_AS(loadGltf(kData + "/utf16.gltf"), doctest::Contains("utf16.gltf: not a glTF file (.gltf must be UTF-8 JSON, and this is UTF-16LE text)"),
                        Error);
   const std::string json = triangle().dump();
   std::string utf16be, utf32;
@@ -412,7 +412,7 @@ TEST_CASE("glTF bad input: a file that is not glTF is named for what it is, its 
   CHECK_THROWS_WITH_AS(loadGltfFromMemory("\xff\xd8\xff\xe0 JFIF", "photo.gltf", ""), "photo.gltf: is a JPEG image, not a glTF file", Error);
   CHECK_THROWS_WITH_AS(loadGltfFromMemory("", "empty.gltf", ""), "empty.gltf: not a glTF file (.gltf is empty)", Error);
   CHECK_THROWS_WITH_AS(loadGltfFromMemory("solid cube\x01\x02", "cube.gltf", ""),
-                       "cube.gltf: not a glTF file (.gltf must be UTF-8 JSON holding an object; it starts with 'solid cube\\x01\\x02')", Error);
+                       "cube.gltf: not a glTF file (.gltf must be UTF-8 JSON holding an object, and it starts with 'solid cube\\x01\\x02')", Error);
   CHECK_THROWS_WITH_AS(loadGltfFromMemory("[1, 2]", "array.gltf", ""), doctest::Contains("array.gltf: not a glTF file (.gltf must be UTF-8 JSON holding an object"),
                        Error);
   // A syntax error: nlohmann's words, the text around it quoted with its control bytes escaped.
@@ -526,7 +526,7 @@ TEST_CASE("glTF bad input: a texture whose sampler does not exist is refused") {
   j["images"] = {{{"uri", dataUri(pngHeader(4, 4))}}};
   j["samplers"] = {nlohmann::json::object()};
   j["textures"] = {{{"source", 0}, {"sampler", 5}}};
-  CHECK_THROWS_WITH_AS(loadJson(j), "bad.gltf: textures[0]: sampler '5' does not exist (the file has 1 samplers; UNRESOLVED_REFERENCE)", Error);
+  CHECK_THROWS_WITH_AS(loadJson(j), "bad.gltf: textures[0]: sampler '5' does not exist (UNRESOLVED_REFERENCE: the file has 1 samplers)", Error);
   j["textures"][0]["sampler"] = 0;
   CHECK_NOTHROW(loadJson(j));
   j["textures"][0].erase("sampler");  // no sampler: repeat wrapping, auto filtering
