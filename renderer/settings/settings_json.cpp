@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <set>
 
 #include <nlohmann/json.hpp>
@@ -91,9 +92,17 @@ struct JsonReader {
       fail(f, exactNumber(v) + " is out of range [" + exactNumber(f.min) + ", " + exactNumber(f.max) + "]");
     return v;
   }
+  // Every setting is kept as a float: a double beyond its range would turn
+  // into infinity there and could not be written back.
+  float floatNumber(const FieldInfo& f, const json& j) const {
+    const double v = number(f, j);
+    const float narrowed = static_cast<float>(v);
+    if (!std::isfinite(narrowed)) fail(f, exactNumber(v) + " is too large for a float (largest " + exactNumber(std::numeric_limits<float>::max()) + ")");
+    return narrowed;
+  }
 
   void field(const FieldInfo& f, float& v) {
-    if (const json* j = find(f)) v = static_cast<float>(number(f, *j));
+    if (const json* j = find(f)) v = floatNumber(f, *j);
   }
   void field(const FieldInfo& f, int& v) {
     if (const json* j = find(f)) {
@@ -110,13 +119,13 @@ struct JsonReader {
   void field(const FieldInfo& f, glm::vec3& v) {
     if (const json* j = find(f)) {
       if (!j->is_array() || j->size() != 3) fail(f, "expected [x, y, z], got " + describeJson(*j));
-      for (int i = 0; i < 3; ++i) v[i] = static_cast<float>(number(f, (*j)[static_cast<std::size_t>(i)]));
+      for (int i = 0; i < 3; ++i) v[i] = floatNumber(f, (*j)[static_cast<std::size_t>(i)]);
     }
   }
   void field(const FieldInfo& f, std::optional<float>& v) {
     if (const json* j = find(f)) {
       if (j->is_null()) v.reset();
-      else v = static_cast<float>(number(f, *j));
+      else v = floatNumber(f, *j);
     }
   }
   template <class E, std::size_t N>

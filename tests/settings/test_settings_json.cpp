@@ -1,6 +1,7 @@
 // RenderSettings <-> JSON: round trip, strictness, --set.
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 #include <doctest/doctest.h>
 #include <nlohmann/json.hpp>
@@ -102,6 +103,12 @@ TEST_CASE("settings text is read strictly: UTF-8, no NUL, no key twice, numbers 
   RenderSettings s;
   CHECK_THROWS_WITH_AS(applySetting(s, "ambient=1e400"), "settings key 'ambient': the number '1e400' is too large for a double", Error);
   CHECK_THROWS_WITH_AS(applySetting(s, "ambient=1.0000001"), "settings key 'ambient': 1.0000001 is out of range [0, 1]", Error);
+  // A key without a range still holds a float: past its largest value it would be infinite.
+  CHECK_THROWS_WITH_AS(applySetting(s, "camera.eye=[1e39,0,0]"), "settings key 'camera.eye': 1e+39 is too large for a float (largest 3.4028234663852886e+38)", Error);
+  CHECK_THROWS_WITH_AS(load("far_light.json", R"({"lights": [{"position": [0, -4e38, 0]}]})"), doctest::Contains("far_light.json: settings key 'lights.0.position': -4e+38 is too large for a float"), Error);
+  applySetting(s, "camera.eye=[3.4028234663852886e38,0,0]");
+  CHECK(s.camera.eye.x == std::numeric_limits<float>::max());
+  CHECK(settingsFromJson(settingsToJson(s)).camera.eye.x == std::numeric_limits<float>::max());
 }
 
 TEST_CASE("settings nested without bound are refused before anything walks them") {
