@@ -1,8 +1,10 @@
 #include "pipeline/frame_checks.h"
 
+#include <cmath>
 #include <string>
 
 #include "common/error.h"
+#include "scene/memory_budget.h"
 
 namespace facet {
 namespace {
@@ -27,6 +29,41 @@ void checkMesh(const Scene& scene, std::size_t m) {
                   std::to_string(n) + " positions");
   if (mesh.material < -1 || mesh.material >= static_cast<int>(scene.materials.size()))
     throw Error(meshName(scene, m) + ": material " + std::to_string(mesh.material) + " does not exist");
+}
+
+// What the frame will work in, priced before a backend allocates it
+// (scene/memory_budget.h): every instance's vertex and triangle buffers,
+// then the shadow maps, against kFrameMemoryBudget. Arithmetic only while
+// the frame fits: a settled frame allocates nothing here (the CPU
+// backend's allocation test counts it); the messages are built on refusal.
+void checkFrameMemory(const Scene& scene, const FrameInputs& frame) {
+  std::uint64_t geometry = 0, vertices = 0, triangles = 0;
+  for (const FrameInstance& instance : frame.instances) {
+    const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
+    vertices += mesh.positions.size();
+    triangles += mesh.triangleCount();
+    geometry += instanceFrameBytes(mesh.positions.size(), mesh.triangleCount());
+  }
+  const std::uint64_t shadows = shadowMapBytes(frame.shadows.mapSize, frame.shadowLayerCount);
+  if (geometry <= kFrameMemoryBudget && shadows <= kFrameMemoryBudget - geometry) return;
+
+  const std::string source = scene.source.empty() ? "" : scene.source + ": ";
+  MemoryBudget budget(kFrameMemoryBudget, "frame budget");
+  budget.charge(geometry, source + "the vertex and triangle buffers of " + std::to_string(frame.instances.size()) + " instances (" +
+                              std::to_string(vertices) + " vertices, " + std::to_string(triangles) + " triangles)");
+  int lights = 0;
+  for (const FrameLight& light : frame.lights) lights += light.hasShadowMap ? 1 : 0;
+  const std::uint64_t left = budget.limit() - budget.used();
+  const auto fits = static_cast<std::uint64_t>(std::sqrt(static_cast<double>(left / (sizeof(float) * static_cast<std::uint64_t>(frame.shadowLayerCount)))));
+  try {
+    budget.charge(shadows, source + "the shadow maps of " + std::to_string(lights) + (lights == 1 ? " light (" : " lights (") +
+                               std::to_string(frame.shadowLayerCount) + " faces of " + std::to_string(frame.shadows.mapSize) + "x" +
+                               std::to_string(frame.shadows.mapSize) + " depth texels)");
+  } catch (const Error& e) {
+    throw Error(std::string(e.what()) + " (settings key 'shadows.mapSize': " +
+                (fits >= static_cast<std::uint64_t>(kMinShadowMapSize) ? std::to_string(fits) + " or less fits" : "no size fits") +
+                ", or shadows.enabled=false)");
+  }
 }
 
 }  // namespace
@@ -82,6 +119,7 @@ void checkFrame(const Scene& scene, const FrameInputs& frame) {
   if (frame.shadows.pcfRadius < 0 || frame.shadows.pcfRadius > kMaxPcfRadius)
     throw Error("settings key 'shadows.pcfRadius': " + std::to_string(frame.shadows.pcfRadius) + " is not in [0, " + std::to_string(kMaxPcfRadius) +
                 "]");
+  checkFrameMemory(scene, frame);  // last: the sizes it prices are within their limits
 }
 
 void FrameCheck::operator()(const Scene& scene, const FrameInputs& frame) {

@@ -20,8 +20,11 @@ void checkScene(const Scene& scene);
 
 // The frame against its scene: an image size in [1, kMaxImageSide], the
 // instances' meshes and materials exist, at most kMaxLights lights, the
-// shadow-map size, PCF radius and layer count within their limits, and no
-// more than kMaxFrameVertices vertices over the instances.
+// shadow-map size, PCF radius and layer count within their limits, no
+// more than kMaxFrameVertices vertices over the instances, and the memory
+// the frame works in (the instances' vertex and triangle buffers, the
+// shadow maps) within kFrameMemoryBudget, priced before a backend
+// allocates any of it.
 void checkFrame(const Scene& scene, const FrameInputs& frame);
 
 // What a backend calls first with each frame: checkScene when the scene's

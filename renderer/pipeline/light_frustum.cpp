@@ -53,7 +53,7 @@ LightFrustum lightFrustum(const Light& light, const Sphere& scene) {
       f.near = std::max(along - margin, nearFloor);
       f.faceCount = 1;
       f.clipFromWorld[0] = perspective(glm::radians(light.spotCutoffDeg), 1.0f, f.near, f.far) *
-                           eyeMatrix(light.position, light.position + d, upFor(d));
+                           eyeMatrix(light.position, pointAlong(light.position, d), upFor(d));
       break;
     }
     case LightKind::Point:
@@ -67,7 +67,7 @@ LightFrustum lightFrustum(const Light& light, const Sphere& scene) {
       f.faceCount = kCubeFaceCount;
       for (int face = 0; face < kCubeFaceCount; ++face)
         f.clipFromWorld[static_cast<std::size_t>(face)] =
-            projection * eyeMatrix(light.position, light.position + kAxes[face], upFor(kAxes[face]));
+            projection * eyeMatrix(light.position, pointAlong(light.position, kAxes[face]), upFor(kAxes[face]));
       break;
     }
   }

@@ -1,7 +1,9 @@
 #include "scene/gltf_accessor.h"
 
 #include <cstring>
+#include <algorithm>
 #include <limits>
+#include <optional>
 
 #include <tiny_gltf.h>
 
@@ -39,6 +41,13 @@ int componentCount(int type) {
   }
 }
 
+template <class T>
+T load(const unsigned char* p) {
+  T value;
+  std::memcpy(&value, p, sizeof value);
+  return value;
+}
+
 // Where an accessor's elements are: element e starts at data + e * stride.
 // data is null for an accessor with no bufferView (all zeros, per glTF).
 struct ElementSpan {
@@ -48,6 +57,44 @@ struct ElementSpan {
   int componentType = 0;
   bool normalized = false;
 };
+
+// The bytes of bufferViews[v], checked against the buffer as read (the
+// document checks did it on the JSON already; this holds for a Model made
+// any other way too).
+struct ViewBytes {
+  const unsigned char* data = nullptr;
+  std::uint64_t length = 0;
+  std::uint64_t byteStride = 0;
+};
+
+ViewBytes viewBytes(const tinygltf::Model& model, int v, const std::string& user) {
+  if (v < 0 || static_cast<std::size_t>(v) >= model.bufferViews.size())
+    throw AccessorError{user + ": bufferView " + std::to_string(v) + " does not exist (UNRESOLVED_REFERENCE)"};
+  const tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(v)];
+  const std::string viewName = "bufferViews[" + std::to_string(v) + "]";
+  if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model.buffers.size())
+    throw AccessorError{viewName + ": buffer " + std::to_string(view.buffer) + " does not exist (UNRESOLVED_REFERENCE)"};
+  const std::vector<unsigned char>& buffer = model.buffers[static_cast<std::size_t>(view.buffer)].data;
+  const std::uint64_t viewStart = view.byteOffset, viewLength = view.byteLength;
+  if (viewStart > buffer.size() || viewLength > buffer.size() - viewStart)
+    throw AccessorError{viewName + ": byteOffset " + std::to_string(viewStart) + " + byteLength " + std::to_string(viewLength) +
+                        " runs past its buffer of " + std::to_string(buffer.size()) + " bytes (BUFFER_VIEW_TOO_LONG)"};
+  return {buffer.data() + viewStart, viewLength, view.byteStride};
+}
+
+// `count` tightly packed elements of `elementSize` bytes at `offset` in a view.
+const unsigned char* packedRun(const ViewBytes& view, std::int64_t offset, std::uint64_t count, std::uint64_t elementSize, int componentSize,
+                               const std::string& what) {
+  if (offset < 0) throw AccessorError{what + ": byteOffset " + std::to_string(offset) + " is negative"};
+  const auto start = static_cast<std::uint64_t>(offset);
+  if (start % static_cast<std::uint64_t>(componentSize) != 0)
+    throw AccessorError{what + ": byteOffset " + std::to_string(start) + " is not a multiple of the component size (ACCESSOR_OFFSET_ALIGNMENT)"};
+  const std::uint64_t needed = count * elementSize;  // count ≤ 2^28, elementSize ≤ 64: no overflow
+  if (start > view.length || needed > view.length - start)
+    throw AccessorError{what + ": needs " + std::to_string(start + needed) + " bytes but its bufferView has " + std::to_string(view.length) +
+                        " (ACCESSOR_TOO_LONG)"};
+  return view.data + start;
+}
 
 ElementSpan locate(const tinygltf::Model& model, int index, int wantedComponents) {
   if (index < 0 || static_cast<std::size_t>(index) >= model.accessors.size())
@@ -62,7 +109,6 @@ ElementSpan locate(const tinygltf::Model& model, int index, int wantedComponents
   if (a.count == 0) throw AccessorError{name(index) + ": count is 0"};
   if (a.count > kMaxAccessorCount)
     throw AccessorError{name(index) + ": count " + std::to_string(a.count) + " exceeds the limit of " + std::to_string(kMaxAccessorCount)};
-  if (a.sparse.isSparse) throw AccessorError{name(index) + ": sparse accessors are not supported"};
 
   ElementSpan span;
   span.count = a.count;
@@ -70,42 +116,67 @@ ElementSpan locate(const tinygltf::Model& model, int index, int wantedComponents
   span.normalized = a.normalized;
   const std::uint64_t elementSize = static_cast<std::uint64_t>(size) * static_cast<std::uint64_t>(components);
   span.stride = elementSize;
-  if (a.bufferView < 0) return span;  // zeros
+  if (a.bufferView < 0) return span;  // zeros (glTF: "When undefined, the accessor MUST be initialized with zeros")
 
-  if (static_cast<std::size_t>(a.bufferView) >= model.bufferViews.size())
-    throw AccessorError{name(index) + ": bufferView " + std::to_string(a.bufferView) + " does not exist (UNRESOLVED_REFERENCE)"};
-  const tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(a.bufferView)];
-  const std::string viewName = "bufferViews[" + std::to_string(a.bufferView) + "]";
-  if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model.buffers.size())
-    throw AccessorError{viewName + ": buffer " + std::to_string(view.buffer) + " does not exist (UNRESOLVED_REFERENCE)"};
-  const std::vector<unsigned char>& buffer = model.buffers[static_cast<std::size_t>(view.buffer)].data;
-  // All sizes fit in 64 bits: byteOffset/byteLength are size_t, count ≤ 2^28, stride ≤ 2^8.
-  const std::uint64_t viewStart = view.byteOffset, viewLength = view.byteLength;
-  if (viewStart > buffer.size() || viewLength > buffer.size() - viewStart)
-    throw AccessorError{viewName + ": byteOffset " + std::to_string(viewStart) + " + byteLength " + std::to_string(viewLength) +
-                        " runs past its buffer of " + std::to_string(buffer.size()) + " bytes (BUFFER_VIEW_TOO_LONG)"};
+  const ViewBytes view = viewBytes(model, a.bufferView, name(index));
   if (view.byteStride != 0) {
     if (view.byteStride < elementSize || view.byteStride > 252 || view.byteStride % static_cast<std::size_t>(size) != 0)
-      throw AccessorError{viewName + ": byteStride " + std::to_string(view.byteStride) + " is invalid for " + name(index) +
-                          " (BUFFER_VIEW_INVALID_BYTE_STRIDE)"};
+      throw AccessorError{"bufferViews[" + std::to_string(a.bufferView) + "]: byteStride " + std::to_string(view.byteStride) + " is invalid for " +
+                          name(index) + " (BUFFER_VIEW_INVALID_BYTE_STRIDE)"};
     span.stride = view.byteStride;
   }
   const std::uint64_t offset = a.byteOffset;
   if (offset % static_cast<std::uint64_t>(size) != 0)
     throw AccessorError{name(index) + ": byteOffset " + std::to_string(offset) + " is not a multiple of the component size (ACCESSOR_OFFSET_ALIGNMENT)"};
+  // All sizes fit in 64 bits: byteOffset/byteLength are size_t, count ≤ 2^28, stride ≤ 2^8.
   const std::uint64_t needed = offset + span.stride * (span.count - 1) + elementSize;
-  if (offset > viewLength || needed > viewLength)
-    throw AccessorError{name(index) + ": needs " + std::to_string(needed) + " bytes but " + viewName + " has " +
-                        std::to_string(viewLength) + " (ACCESSOR_TOO_LONG)"};
-  span.data = buffer.data() + viewStart + offset;
+  if (offset > view.length || needed > view.length)
+    throw AccessorError{name(index) + ": needs " + std::to_string(needed) + " bytes but bufferViews[" + std::to_string(a.bufferView) + "] has " +
+                        std::to_string(view.length) + " (ACCESSOR_TOO_LONG)"};
+  span.data = view.data + offset;
   return span;
 }
 
-template <class T>
-T load(const unsigned char* p) {
-  T value;
-  std::memcpy(&value, p, sizeof value);
-  return value;
+// glTF 2.0, 3.6.2.3 "Sparse Accessors": `count` element indices (strictly
+// increasing, below the accessor's count) and as many tightly packed values
+// that replace those elements of the base (its bufferView, or zeros).
+struct SparseSpan {
+  std::vector<std::uint32_t> indices;
+  ElementSpan values;
+};
+
+SparseSpan locateSparse(const tinygltf::Model& model, int index, const ElementSpan& base) {
+  const tinygltf::Accessor& a = model.accessors[static_cast<std::size_t>(index)];
+  SparseSpan sparse;
+  const std::string what = name(index) + ".sparse";
+  if (a.sparse.count < 1 || static_cast<std::uint64_t>(a.sparse.count) > base.count)
+    throw AccessorError{what + ": count " + std::to_string(a.sparse.count) + " is not in [1, " + std::to_string(base.count) + "]"};
+  const auto count = static_cast<std::uint64_t>(a.sparse.count);
+  const int indexSize = componentSize(a.sparse.indices.componentType);
+  if (a.sparse.indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && a.sparse.indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+      a.sparse.indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+    throw AccessorError{what + ".indices: componentType " + std::to_string(a.sparse.indices.componentType) + " is not UNSIGNED_BYTE/SHORT/INT"};
+  const unsigned char* p = packedRun(viewBytes(model, a.sparse.indices.bufferView, what + ".indices"), a.sparse.indices.byteOffset, count,
+                                     static_cast<std::uint64_t>(indexSize), indexSize, what + ".indices");
+  sparse.indices.resize(count);
+  for (std::uint64_t i = 0; i < count; ++i) {
+    std::uint32_t e = 0;
+    if (indexSize == 1) e = p[i];
+    else if (indexSize == 2) e = load<std::uint16_t>(p + 2 * i);
+    else e = load<std::uint32_t>(p + 4 * i);
+    if (e >= base.count || (i > 0 && e <= sparse.indices[i - 1]))
+      throw AccessorError{what + ".indices: element " + std::to_string(i) + " is " + std::to_string(e) +
+                          (e >= base.count ? ", past the accessor's " + std::to_string(base.count) + " elements (ACCESSOR_SPARSE_INDEX_OOB)"
+                                           : ", not above the one before (ACCESSOR_SPARSE_INDICES_NON_INCREASING)")};
+    sparse.indices[i] = e;
+  }
+  sparse.values = base;
+  sparse.values.count = count;
+  const int size = componentSize(a.componentType);
+  sparse.values.stride = static_cast<std::uint64_t>(size) * static_cast<std::uint64_t>(componentCount(a.type));  // tightly packed
+  sparse.values.data = packedRun(viewBytes(model, a.sparse.values.bufferView, what + ".values"), a.sparse.values.byteOffset, count,
+                                 sparse.values.stride, size, what + ".values");
+  return sparse;
 }
 
 // One component as float, honouring `normalized` (glTF's formulas for unorm).
@@ -126,15 +197,33 @@ float component(const ElementSpan& s, std::uint64_t element, int c) {
   }
 }
 
+// Every element of the accessor through `element(span, e)`, the base first,
+// then its sparse substitutions.
+template <class T, class Element>
+std::vector<T> readAll(const tinygltf::Model& model, int accessor, const ElementSpan& s, Element element) {
+  std::optional<SparseSpan> sparse;
+  if (model.accessors[static_cast<std::size_t>(accessor)].sparse.isSparse) sparse = locateSparse(model, accessor, s);
+  std::vector<T> out(s.count);
+  for (std::uint64_t e = 0; e < s.count; ++e) out[e] = element(s, e);
+  if (sparse)
+    for (std::uint64_t i = 0; i < sparse->values.count; ++i) out[sparse->indices[i]] = element(sparse->values, i);
+  return out;
+}
+
 }  // namespace
+
+std::uint64_t accessorCount(const tinygltf::Model& model, int accessor) {
+  if (accessor < 0 || static_cast<std::size_t>(accessor) >= model.accessors.size()) return 0;
+  return std::min<std::uint64_t>(model.accessors[static_cast<std::size_t>(accessor)].count, kMaxAccessorCount);
+}
 
 std::vector<glm::vec3> readVec3(const tinygltf::Model& model, int accessor) {
   const ElementSpan s = locate(model, accessor, 3);
   if (s.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
     throw AccessorError{name(accessor) + ": componentType " + std::to_string(s.componentType) + " is not FLOAT (MESH_PRIMITIVE_ATTRIBUTES_ACCESSOR_INVALID_FORMAT)"};
-  std::vector<glm::vec3> out(s.count);
-  for (std::uint64_t e = 0; e < s.count; ++e) out[e] = {component(s, e, 0), component(s, e, 1), component(s, e, 2)};
-  return out;
+  return readAll<glm::vec3>(model, accessor, s, [](const ElementSpan& span, std::uint64_t e) {
+    return glm::vec3(component(span, e, 0), component(span, e, 1), component(span, e, 2));
+  });
 }
 
 std::vector<glm::vec2> readVec2(const tinygltf::Model& model, int accessor) {
@@ -144,26 +233,25 @@ std::vector<glm::vec2> readVec2(const tinygltf::Model& model, int accessor) {
                                               s.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT));
   if (!floatOrUnorm)
     throw AccessorError{name(accessor) + ": texture coordinates must be FLOAT or normalized UNSIGNED_BYTE/SHORT (MESH_PRIMITIVE_ATTRIBUTES_ACCESSOR_INVALID_FORMAT)"};
-  std::vector<glm::vec2> out(s.count);
-  for (std::uint64_t e = 0; e < s.count; ++e) out[e] = {component(s, e, 0), component(s, e, 1)};
-  return out;
+  return readAll<glm::vec2>(model, accessor, s,
+                            [](const ElementSpan& span, std::uint64_t e) { return glm::vec2(component(span, e, 0), component(span, e, 1)); });
 }
 
 std::vector<std::uint32_t> readIndices(const tinygltf::Model& model, int accessor) {
   const ElementSpan s = locate(model, accessor, 1);
-  std::vector<std::uint32_t> out(s.count);
-  for (std::uint64_t e = 0; e < s.count; ++e) {
-    const unsigned char* p = s.data ? s.data + e * s.stride : nullptr;
-    switch (s.componentType) {
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: out[e] = p ? p[0] : 0u; break;
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: out[e] = p ? load<std::uint16_t>(p) : 0u; break;
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: out[e] = p ? load<std::uint32_t>(p) : 0u; break;
-      default:
-        throw AccessorError{name(accessor) + ": index componentType " + std::to_string(s.componentType) +
-                            " is not UNSIGNED_BYTE/SHORT/INT (MESH_PRIMITIVE_INDICES_ACCESSOR_INVALID_FORMAT)"};
+  if (s.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && s.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+      s.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+    throw AccessorError{name(accessor) + ": index componentType " + std::to_string(s.componentType) +
+                        " is not UNSIGNED_BYTE/SHORT/INT (MESH_PRIMITIVE_INDICES_ACCESSOR_INVALID_FORMAT)"};
+  return readAll<std::uint32_t>(model, accessor, s, [](const ElementSpan& span, std::uint64_t e) -> std::uint32_t {
+    if (!span.data) return 0u;
+    const unsigned char* p = span.data + e * span.stride;
+    switch (span.componentType) {
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return p[0];
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return load<std::uint16_t>(p);
+      default: return load<std::uint32_t>(p);
     }
-  }
-  return out;
+  });
 }
 
 }  // namespace facet

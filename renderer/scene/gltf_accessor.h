@@ -21,6 +21,14 @@ struct AccessorError {
   std::string message;
 };
 
+// Sparse accessors (glTF 2.0, 3.6.2.3) are read with their indices and
+// values held to their bufferViews as the base is.
+
+// An accessor's element count as the file states it (0 when the accessor
+// does not exist; at most the limit reading it allows), to price what
+// reading it allocates before it is read.
+std::uint64_t accessorCount(const tinygltf::Model& model, int accessor);
+
 // Float VEC3 (POSITION, NORMAL).
 std::vector<glm::vec3> readVec3(const tinygltf::Model& model, int accessor);
 // VEC2 of float, or normalized unsigned byte/short (TEXCOORD_n).

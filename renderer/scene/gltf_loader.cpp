@@ -1,6 +1,6 @@
 // Index of this file
 // [SECTION] Limits
-// [SECTION] File checks before tinygltf parses (size, GLB header, JSON nesting)
+// [SECTION] JSON nesting
 // [SECTION] Callbacks that keep tinygltf inside the asset's folder and check images
 // [SECTION] Materials and textures
 // [SECTION] Primitives to meshes
@@ -10,9 +10,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <set>
 
 #include <glm/geometric.hpp>
@@ -24,27 +26,32 @@
 
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "common/quote.h"
 #include "math/transforms.h"
 #include "scene/gltf_accessor.h"
+#include "scene/gltf_document_checks.h"
+#include "scene/gltf_file_checks.h"
+#include "scene/memory_budget.h"
 #include "scene/vertex_normals.h"
+#include "settings/render_settings.h"
 
 namespace facet {
 namespace {
 
 // [SECTION] Limits
 // Beyond these a file is refused with a message instead of a huge allocation
-// or a deep recursion.
+// or a deep recursion. Memory is priced against kSceneMemoryBudget and
+// kFrameMemoryBudget (settings/render_settings.h) before it is allocated.
 constexpr std::uint64_t kMaxFileBytes = 1ull << 30;     // .gltf/.glb and each external buffer
 constexpr int kMaxJsonDepth = 64;                       // glTF needs about 8
 constexpr int kMaxNodeDepth = 256;                      // node hierarchy
-constexpr int kMaxTextureSide = 16384;                    // texture width/height
-constexpr std::uint64_t kMaxSceneTriangles = 100'000'000;  // over all instances
+constexpr int kMaxTextureSide = 16384;                  // texture width/height
 
 using Warnings = std::vector<std::string>;
 
 std::string at(const char* array, std::size_t index) { return std::string(array) + "[" + std::to_string(index) + "]"; }
 
-// [SECTION] File checks before tinygltf parses
+// [SECTION] JSON nesting
 
 // Deepest nesting of objects and arrays in JSON text (strings skipped).
 // tinygltf's JSON parser recurses, so a deeply nested file would overflow the stack.
@@ -68,41 +75,18 @@ int jsonDepth(const char* text, std::size_t length) {
   return deepest;
 }
 
-std::uint32_t readU32(const std::string& bytes, std::size_t offset) {
-  std::uint32_t v;
-  std::memcpy(&v, bytes.data() + offset, 4);
-  return v;  // GLB is little-endian, as is every machine facet builds for
-}
-
-// The JSON text of a .glb, after checking its header and chunk lengths
-// (the glTF-Validator's GLB_* checks).
-std::pair<std::size_t, std::size_t> glbJsonChunk(const std::string& path, const std::string& bytes) {
-  if (bytes.size() < 20) throw Error(path + ": GLB file of " + std::to_string(bytes.size()) + " bytes is too short for its header (GLB_UNEXPECTED_END_OF_HEADER)");
-  if (std::memcmp(bytes.data(), "glTF", 4) != 0) throw Error(path + ": not a GLB file: magic is not 'glTF' (GLB_INVALID_MAGIC)");
-  if (readU32(bytes, 4) != 2) throw Error(path + ": GLB version " + std::to_string(readU32(bytes, 4)) + " is not 2 (GLB_INVALID_VERSION)");
-  const std::uint64_t length = readU32(bytes, 8);
-  if (length > bytes.size()) throw Error(path + ": GLB header says " + std::to_string(length) + " bytes, file has " + std::to_string(bytes.size()) + " (GLB_LENGTH_TOO_SMALL)");
-  const std::uint64_t jsonLength = readU32(bytes, 12);
-  if (readU32(bytes, 16) != 0x4E4F534Au) throw Error(path + ": first GLB chunk is not JSON (GLB_UNEXPECTED_FIRST_CHUNK)");
-  if (20 + jsonLength > length) throw Error(path + ": GLB JSON chunk of " + std::to_string(jsonLength) + " bytes runs past the end (GLB_CHUNK_TOO_BIG)");
-  const std::uint64_t next = 20 + ((jsonLength + 3) & ~3ull);
-  if (next + 8 <= length) {  // a BIN chunk follows
-    const std::uint64_t binLength = readU32(bytes, next);
-    if (next + 8 + binLength > length) throw Error(path + ": GLB BIN chunk of " + std::to_string(binLength) + " bytes runs past the end (GLB_CHUNK_TOO_BIG)");
-    if (binLength == 0) throw Error(path + ": GLB BIN chunk is empty (GLB_EMPTY_CHUNK)");
-  }
-  return {20, jsonLength};
-}
-
 // [SECTION] Callbacks that keep tinygltf inside the asset's folder and check images
 
 struct AssetFolder {
   std::filesystem::path root;  // canonical folder of the .gltf/.glb
 };
 
+// Whether a file is there at all: readWholeFile then says why it will not
+// read one that is not a regular file or lies outside the folder (with
+// is_regular_file here, tinygltf would report "File not found").
 bool fileExists(const std::string& path, void*) {
   std::error_code ec;
-  return std::filesystem::is_regular_file(path, ec);
+  return std::filesystem::exists(path, ec);
 }
 
 std::string expandFilePath(const std::string& path, void*) { return path; }  // no ~ or $VAR expansion
@@ -111,7 +95,7 @@ bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std:
   namespace fs = std::filesystem;
   const auto* folder = static_cast<const AssetFolder*>(user);
   if (folder->root.empty()) {
-    if (err) *err += "'" + path + "': external files are not read here\n";
+    if (err) *err += quoteInput(path) + ": external files are not read here\n";
     return false;
   }
   std::error_code ec;
@@ -119,7 +103,7 @@ bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std:
   const auto [rootEnd, unused] = std::mismatch(folder->root.begin(), folder->root.end(), canonical.begin(), canonical.end());
   (void)unused;
   if (ec || rootEnd != folder->root.end()) {
-    if (err) *err += "'" + path + "' is outside the asset's folder\n";
+    if (err) *err += quoteInput(path) + " is outside the asset's folder\n";
     return false;
   }
   try {
@@ -137,17 +121,50 @@ bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigne
   return false;
 }
 
-// Decodes PNG and JPEG only, after checking magic bytes and dimensions
-// (stbi_info_from_memory) so that stb_image never sees an absurd header.
-// An image that cannot be decoded is left empty with a warning: the model is
+// What the image callback works with. tinygltf calls it while it parses,
+// with the model's buffers and bufferViews already read.
+struct ImageLoading {
+  const tinygltf::Model* model = nullptr;
+  MemoryBudget* budget = nullptr;
+  // Per glTF image that passed its checks: its encoded bytes, decoded only
+  // once the whole scene (every image and mesh) has been priced.
+  std::map<int, std::string> encoded;
+  std::optional<Error> failure;  // what refuses the file; rethrown once tinygltf returns
+};
+
+// tinygltf hands an image stored in a bufferView over as
+// &buffer.data[view.byteOffset] and view.byteLength, unchecked; the
+// document checks (gltf_document_checks.h) refused a bufferView past its
+// buffer before tinygltf ran. Checked again here against the bytes read.
+bool imageBytesInBuffer(const tinygltf::Model& model, int bufferView, const unsigned char* bytes, int size) {
+  if (bufferView < 0) return true;  // from a URI: tinygltf's own vector
+  if (static_cast<std::size_t>(bufferView) >= model.bufferViews.size() || size < 0) return false;
+  const tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(bufferView)];
+  if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model.buffers.size()) return false;
+  const std::vector<unsigned char>& data = model.buffers[static_cast<std::size_t>(view.buffer)].data;
+  return view.byteOffset <= data.size() && view.byteLength <= data.size() - view.byteOffset &&
+         static_cast<std::size_t>(size) == view.byteLength && bytes == data.data() + view.byteOffset;
+}
+
+// Accepts PNG and JPEG only, after checking magic bytes and dimensions
+// (stbi_info_from_memory) so that stb_image never sees an absurd header,
+// and prices the decoded pixels against the scene budget from that header.
+// It keeps the encoded bytes; decodeImage decodes them later.
+// An image that cannot be read is left empty with a warning: the model is
 // still drawn, untextured.
-bool loadImage(tinygltf::Image* image, const int index, std::string*, std::string* warn, int, int,
-               const unsigned char* bytes, int size, void*) {
+bool loadImage(tinygltf::Image* image, const int index, std::string* err, std::string* warn, int, int,
+               const unsigned char* bytes, int size, void* user) {
+  auto& loading = *static_cast<ImageLoading*>(user);
   const std::string name = at("images", static_cast<std::size_t>(index));
+  image->image.clear();
+  image->width = image->height = 0;
+  if (!imageBytesInBuffer(*loading.model, image->bufferView, bytes, size)) {
+    loading.failure = Error(name + ": bufferView " + std::to_string(image->bufferView) + " lies outside its buffer (BUFFER_VIEW_TOO_LONG)");
+    if (err) *err += loading.failure->what();
+    return false;
+  }
   const auto skip = [&](const std::string& why) {
     if (warn) *warn += name + ": " + why + "; drawn without this texture\n";
-    image->image.clear();
-    image->width = image->height = 0;
     return true;
   };
   static constexpr unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
@@ -159,16 +176,39 @@ bool loadImage(tinygltf::Image* image, const int index, std::string*, std::strin
   if (!stbi_info_from_memory(bytes, size, &w, &h, &channels)) return skip("unreadable image header");
   if (w <= 0 || h <= 0 || w > kMaxTextureSide || h > kMaxTextureSide)
     return skip("image size " + std::to_string(w) + "x" + std::to_string(h) + " is out of range");
-  stbi_uc* pixels = stbi_load_from_memory(bytes, size, &w, &h, &channels, 4);
-  if (!pixels) return skip(std::string("cannot decode image (") + stbi_failure_reason() + ")");
+  try {  // from the header, before anything is decoded
+    loading.budget->charge(static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h) * 4,
+                           name + ": " + std::to_string(w) + "x" + std::to_string(h) + " RGBA pixels");
+  } catch (const Error& e) {
+    loading.failure = e;
+    if (err) *err += e.what();
+    return false;
+  }
   image->width = w;
   image->height = h;
   image->component = 4;
   image->bits = 8;
   image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
-  image->image.assign(pixels, pixels + static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4);
-  stbi_image_free(pixels);
+  loading.encoded[index].assign(reinterpret_cast<const char*>(bytes), static_cast<std::size_t>(size));
   return true;
+}
+
+// The pixels of an image loadImage kept, bottom row first as facet::Image
+// keeps them (glTF images are stored top row first); empty, with a warning,
+// when the data after its header does not decode.
+Image decodeImage(const std::string& encoded, int index, Warnings& warnings) {
+  int w = 0, h = 0, channels = 0;
+  stbi_uc* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(encoded.data()), static_cast<int>(encoded.size()), &w, &h, &channels, 4);
+  if (!pixels) {
+    warnings.push_back(at("images", static_cast<std::size_t>(index)) + ": cannot decode image (" + stbi_failure_reason() +
+                       "); drawn without this texture");
+    return {};
+  }
+  Image out(w, h);
+  const std::size_t stride = static_cast<std::size_t>(w) * 4;
+  for (int y = 0; y < h; ++y) std::memcpy(&out.at(0, h - 1 - y), pixels + static_cast<std::size_t>(y) * stride, stride);
+  stbi_image_free(pixels);
+  return out;
 }
 
 // [SECTION] Materials and textures
@@ -180,23 +220,36 @@ glm::vec3 vec3Of(const std::vector<double>& v, glm::vec3 fallback) {
 
 float clamp01(double v, float fallback) { return std::isfinite(v) ? std::clamp(static_cast<float>(v), 0.0f, 1.0f) : fallback; }
 
-void convertTextures(const tinygltf::Model& model, Scene& scene, Warnings& warnings) {
+// Each texture gets its image's pixels, decoded once: the last texture to
+// use an image takes them over, any other gets a copy, priced against the budget.
+void convertTextures(const tinygltf::Model& model, const std::map<int, std::string>& encoded, MemoryBudget& budget, Scene& scene,
+                     Warnings& warnings) {
+  std::map<int, std::size_t> lastUse;  // image -> the last texture naming it
+  for (std::size_t t = 0; t < model.textures.size(); ++t) lastUse[model.textures[t].source] = t;
+  for (std::size_t t = 0; t < model.textures.size(); ++t) {
+    const int source = model.textures[t].source;
+    if (source >= 0 && static_cast<std::size_t>(source) < model.images.size() && lastUse[source] != t && encoded.count(source)) {
+      const tinygltf::Image& image = model.images[static_cast<std::size_t>(source)];
+      budget.charge(static_cast<std::uint64_t>(image.width) * static_cast<std::uint64_t>(image.height) * 4,
+                    at("textures", t) + ": another copy of the " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                        " pixels of " + at("images", static_cast<std::size_t>(source)));
+    }
+  }
+  std::map<int, Image> decoded;  // images a later texture still needs
   for (std::size_t t = 0; t < model.textures.size(); ++t) {
     Texture texture;
     texture.name = model.textures[t].name;
     const int source = model.textures[t].source;
     if (source < 0 || static_cast<std::size_t>(source) >= model.images.size()) {
       warnings.push_back(at("textures", t) + ": source " + std::to_string(source) + " does not exist (UNRESOLVED_REFERENCE); ignored");
-    } else {
-      const tinygltf::Image& img = model.images[static_cast<std::size_t>(source)];
-      const bool decoded = img.width > 0 && img.height > 0 && img.component == 4 && img.bits == 8 &&
-                           img.image.size() == static_cast<std::size_t>(img.width) * static_cast<std::size_t>(img.height) * 4;
-      if (decoded) {
-        texture.image = Image(img.width, img.height);
-        // glTF images are stored top row first; facet::Image keeps the bottom row first.
-        const std::size_t stride = static_cast<std::size_t>(img.width) * 4;
-        for (int y = 0; y < img.height; ++y)
-          std::memcpy(&texture.image.at(0, img.height - 1 - y), img.image.data() + static_cast<std::size_t>(y) * stride, stride);
+    } else if (const auto bytes = encoded.find(source); bytes != encoded.end()) {
+      auto image = decoded.find(source);
+      if (image == decoded.end()) image = decoded.emplace(source, decodeImage(bytes->second, source, warnings)).first;
+      if (lastUse[source] == t) {
+        texture.image = std::move(image->second);
+        decoded.erase(image);
+      } else {
+        texture.image = image->second;
       }
     }
     scene.textures.push_back(std::move(texture));
@@ -240,12 +293,17 @@ void convertMaterials(const tinygltf::Model& model, Scene& scene, Warnings& warn
 
 // [SECTION] Primitives to meshes
 
-// Triangle list from a primitive's index list and mode (4 list, 5 strip, 6 fan).
-std::vector<std::uint32_t> triangleList(const std::vector<std::uint32_t>& idx, int mode) {
-  std::vector<std::uint32_t> out;
+// A primitive's index list turned into a triangle list in place (mode 4
+// list, 5 strip, 6 fan): a list keeps its whole triangles, a strip or a fan
+// becomes three indices per triangle.
+void toTriangleList(std::vector<std::uint32_t>& idx, int mode) {
   if (mode == TINYGLTF_MODE_TRIANGLES) {
-    out.assign(idx.begin(), idx.begin() + static_cast<std::ptrdiff_t>(idx.size() / 3 * 3));
-  } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+    idx.resize(idx.size() / 3 * 3);
+    return;
+  }
+  std::vector<std::uint32_t> out;
+  out.reserve(idx.size() > 2 ? 3 * (idx.size() - 2) : 0);
+  if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
     for (std::size_t i = 2; i < idx.size(); ++i) {  // every other triangle flips to keep the strip's winding
       if (i % 2 == 0) out.insert(out.end(), {idx[i - 2], idx[i - 1], idx[i]});
       else out.insert(out.end(), {idx[i - 1], idx[i - 2], idx[i]});
@@ -253,13 +311,40 @@ std::vector<std::uint32_t> triangleList(const std::vector<std::uint32_t>& idx, i
   } else {  // fan
     for (std::size_t i = 2; i < idx.size(); ++i) out.insert(out.end(), {idx[0], idx[i - 1], idx[i]});
   }
-  return out;
+  idx = std::move(out);
 }
 
 bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
+// "1e+18": the limit as messages show it.
+std::string coordinateLimit() {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", static_cast<double>(kMaxWorldCoordinate));
+  return text;
+}
+
+// Finite and inside ±kMaxWorldCoordinate (settings/render_settings.h).
+bool drawable(glm::vec3 v) {
+  return std::fabs(v.x) <= kMaxWorldCoordinate && std::fabs(v.y) <= kMaxWorldCoordinate && std::fabs(v.z) <= kMaxWorldCoordinate;
+}
+
+// What a primitive's mesh will hold, priced from its accessors' counts
+// before any is read: positions and normals (read or computed), texture
+// coordinates, and its indices (a strip or fan's triangle list besides).
+void pricePrimitive(const tinygltf::Model& model, const tinygltf::Primitive& prim, int mode, int positionAccessor, const std::string& name,
+                    MemoryBudget& budget) {
+  const std::uint64_t vertices = accessorCount(model, positionAccessor);
+  const std::uint64_t indices = prim.indices >= 0 ? accessorCount(model, prim.indices) : vertices;
+  std::uint64_t bytes = vertices * (sizeof(glm::vec3) + sizeof(glm::vec3)) + indices * sizeof(std::uint32_t);
+  if (prim.attributes.count("TEXCOORD_0")) bytes += vertices * sizeof(glm::vec2);
+  if (mode != TINYGLTF_MODE_TRIANGLES && indices > 2) bytes += 3 * (indices - 2) * sizeof(std::uint32_t);
+  budget.charge(bytes, name + ": " + std::to_string(vertices) + " vertices (" + at("accessors", static_cast<std::size_t>(positionAccessor)) +
+                           ") and " + std::to_string(indices) + " indices");
+}
+
 // Converts one primitive; returns false (with a warning) when it is skipped.
-bool convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& prim, const std::string& name, Mesh& mesh,
+// Throws facet::Error when it does not fit the scene budget.
+bool convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& prim, const std::string& name, MemoryBudget& budget, Mesh& mesh,
                       Warnings& warnings) {
   const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
   if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
@@ -272,39 +357,60 @@ bool convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& p
     warnings.push_back(name + ": no POSITION attribute; skipped");
     return false;
   }
+  pricePrimitive(model, prim, mode, position->second, name, budget);
+  const std::string positions = "POSITION " + at("accessors", static_cast<std::size_t>(std::max(position->second, 0)));
   try {
     mesh.positions = readVec3(model, position->second);
-    std::vector<std::uint32_t> indices;
+    std::vector<std::uint32_t> triangles;
     if (prim.indices >= 0) {
-      indices = readIndices(model, prim.indices);
+      triangles = readIndices(model, prim.indices);
     } else {
-      indices.resize(mesh.positions.size());
-      for (std::size_t i = 0; i < indices.size(); ++i) indices[i] = static_cast<std::uint32_t>(i);
+      triangles.resize(mesh.positions.size());
+      for (std::size_t i = 0; i < triangles.size(); ++i) triangles[i] = static_cast<std::uint32_t>(i);
     }
-    if (mode == TINYGLTF_MODE_TRIANGLES && indices.size() % 3 != 0)
-      warnings.push_back(name + ": " + std::to_string(indices.size()) + " indices is not a multiple of 3; the last " +
-                         std::to_string(indices.size() % 3) + " ignored");
-    const std::vector<std::uint32_t> triangles = triangleList(indices, mode);
+    if (mode == TINYGLTF_MODE_TRIANGLES && triangles.size() % 3 != 0)
+      warnings.push_back(name + ": " + std::to_string(triangles.size()) + " indices is not a multiple of 3; the last " +
+                         std::to_string(triangles.size() % 3) + " ignored");
+    toTriangleList(triangles, mode);
 
-    // Keep the triangles whose three indices are in range and whose corners are finite.
+    // Keep the triangles whose three indices are in range and whose corners
+    // are finite and inside the coordinates facet draws (compacted in place).
     const auto vertexCount = mesh.positions.size();
-    std::size_t outOfRange = 0, notFinite = 0;
-    mesh.indices.reserve(triangles.size());
+    std::vector<char> usable(vertexCount);
+    std::size_t notFinite = 0, tooFar = 0;
+    for (std::size_t v = 0; v < vertexCount; ++v) {
+      const glm::vec3 p = mesh.positions[v];
+      usable[v] = finite(p) && drawable(p);
+      if (!finite(p)) ++notFinite;
+      else if (!drawable(p)) ++tooFar;
+    }
+    std::size_t outOfRange = 0, kept = 0;
     for (std::size_t t = 0; t + 2 < triangles.size(); t += 3) {
       const std::uint32_t a = triangles[t], b = triangles[t + 1], c = triangles[t + 2];
       if (a >= vertexCount || b >= vertexCount || c >= vertexCount) { ++outOfRange; continue; }
-      if (!finite(mesh.positions[a]) || !finite(mesh.positions[b]) || !finite(mesh.positions[c])) { ++notFinite; continue; }
-      mesh.indices.insert(mesh.indices.end(), {a, b, c});
+      if (!usable[a] || !usable[b] || !usable[c]) continue;  // counted per vertex above
+      triangles[kept++] = a, triangles[kept++] = b, triangles[kept++] = c;
     }
+    triangles.resize(kept);
+    mesh.indices = std::move(triangles);
     if (outOfRange)
       warnings.push_back(name + ": " + std::to_string(outOfRange) + " triangles index past the " + std::to_string(vertexCount) +
                          " vertices (ACCESSOR_INDEX_OOB); dropped");
     if (notFinite)
-      warnings.push_back(name + ": " + std::to_string(notFinite) + " triangles have NaN or infinite positions (ACCESSOR_INVALID_FLOAT); dropped");
+      warnings.push_back(name + ": " + positions + " has " + std::to_string(notFinite) +
+                         " NaN or infinite positions (ACCESSOR_INVALID_FLOAT); their triangles dropped");
+    if (tooFar)
+      warnings.push_back(name + ": " + positions + " has " + std::to_string(tooFar) + " positions beyond +-" + coordinateLimit() +
+                         ", farther than facet draws; their triangles dropped");
     if (mesh.indices.empty()) {
       warnings.push_back(name + ": no drawable triangles; skipped");
       return false;
     }
+    // The vertices no kept triangle uses move onto one that is, so that the
+    // bounds (and the framing) see only what is drawn.
+    if (notFinite || tooFar)
+      for (std::size_t v = 0; v < vertexCount; ++v)
+        if (!usable[v]) mesh.positions[v] = mesh.positions[mesh.indices[0]];
 
     bool normalsOk = false;
     if (const auto normal = prim.attributes.find("NORMAL"); normal != prim.attributes.end()) {
@@ -355,7 +461,7 @@ bool convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& p
 }
 
 // scene mesh index per glTF mesh and primitive (-1: skipped)
-std::vector<std::vector<int>> convertMeshes(const tinygltf::Model& model, Scene& scene, Warnings& warnings) {
+std::vector<std::vector<int>> convertMeshes(const tinygltf::Model& model, MemoryBudget& budget, Scene& scene, Warnings& warnings) {
   std::vector<std::vector<int>> table(model.meshes.size());
   for (std::size_t m = 0; m < model.meshes.size(); ++m) {
     const tinygltf::Mesh& src = model.meshes[m];
@@ -363,7 +469,7 @@ std::vector<std::vector<int>> convertMeshes(const tinygltf::Model& model, Scene&
       const std::string name = at("meshes", m) + "." + at("primitives", p);
       Mesh mesh;
       mesh.name = src.name.empty() ? name : src.name;
-      if (convertPrimitive(model, src.primitives[p], name, mesh, warnings)) {
+      if (convertPrimitive(model, src.primitives[p], name, budget, mesh, warnings)) {
         scene.meshes.push_back(std::move(mesh));
         table[m].push_back(static_cast<int>(scene.meshes.size() - 1));
       } else {
@@ -402,13 +508,30 @@ glm::mat4 localMatrix(const tinygltf::Node& node) {
   return translation(t) * r * scaling(s);
 }
 
+// The world-space box of a mesh placed by `world`: the box of the eight
+// corners of its model-space box.
+Bounds placedBounds(const Bounds& model, const glm::mat4& world) {
+  Bounds placed;
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::vec3 p(corner & 1 ? model.max.x : model.min.x, corner & 2 ? model.max.y : model.min.y, corner & 4 ? model.max.z : model.min.z);
+    placed.include(glm::vec3(world * glm::vec4(p, 1.0f)));
+  }
+  return placed;
+}
+
+// Walks the node trees from the scene's roots. The document checks
+// (gltf_document_checks.h) refused a node with two parents and a loop, so
+// each node is met at most once and the walk is linear in the file.
 struct NodeWalker {
   const tinygltf::Model& model;
   Scene& scene;
   Warnings& warnings;
   const std::vector<std::vector<int>>& meshTable;
-  std::vector<char> onPath;  // nodes on the current root-to-node path (loop detection)
-  std::uint64_t triangles = 0;
+  std::vector<char> visited;
+  std::map<int, Bounds> modelBounds;  // per scene mesh, once
+  // What the instances will need of a frame (memory_budget.h), priced as
+  // each is placed, so that many nodes naming one big mesh are refused here.
+  MemoryBudget frameBudget{kFrameMemoryBudget, "frame budget"};
 
   void visit(int index, const glm::mat4& parent, int depth) {
     const auto n = static_cast<std::size_t>(index);
@@ -416,10 +539,8 @@ struct NodeWalker {
       warnings.push_back("node " + std::to_string(index) + " does not exist (UNRESOLVED_REFERENCE); ignored");
       return;
     }
-    if (onPath[n]) {
-      warnings.push_back(at("nodes", n) + ": is its own ancestor (NODE_LOOP); the loop is cut there");
-      return;
-    }
+    if (visited[n]) throw Error(at("nodes", n) + ": is reached twice in the node hierarchy (NODE_PARENT_OVERRIDE)");
+    visited[n] = 1;
     if (depth > kMaxNodeDepth) {
       warnings.push_back(at("nodes", n) + ": deeper than " + std::to_string(kMaxNodeDepth) + " levels; its subtree is skipped");
       return;
@@ -430,16 +551,29 @@ struct NodeWalker {
       warnings.push_back(at("nodes", n) + ": transform is not finite; its subtree is skipped");
       return;
     }
-    onPath[n] = 1;
     if (node.mesh >= 0) {
       if (static_cast<std::size_t>(node.mesh) >= meshTable.size()) {
         warnings.push_back(at("nodes", n) + ": mesh " + std::to_string(node.mesh) + " does not exist (UNRESOLVED_REFERENCE); ignored");
       } else {
         for (int sceneMesh : meshTable[static_cast<std::size_t>(node.mesh)]) {
           if (sceneMesh < 0) continue;
-          triangles += scene.meshes[static_cast<std::size_t>(sceneMesh)].triangleCount();
-          if (triangles > kMaxSceneTriangles)
-            throw Error(at("nodes", n) + ": the scene exceeds " + std::to_string(kMaxSceneTriangles) + " triangles");
+          const Mesh& mesh = scene.meshes[static_cast<std::size_t>(sceneMesh)];
+          auto bounds = modelBounds.find(sceneMesh);
+          if (bounds == modelBounds.end()) {
+            bounds = modelBounds.emplace(sceneMesh, Bounds{}).first;
+            for (const glm::vec3& p : mesh.positions) bounds->second.include(p);
+          }
+          const Bounds placed = placedBounds(bounds->second, world);
+          if (!finite(placed.min) || !finite(placed.max) || !drawable(placed.min) || !drawable(placed.max)) {
+            warnings.push_back(at("nodes", n) + ": places " + at("meshes", static_cast<std::size_t>(node.mesh)) + " beyond +-" + coordinateLimit() +
+                               ", farther than facet draws; that instance is skipped");
+            continue;
+          }
+          const std::uint64_t bytes = instanceFrameBytes(mesh.positions.size(), mesh.triangleCount());
+          frameBudget.charge(bytes, frameBudget.fits(bytes) ? std::string()
+                                                            : at("nodes", n) + ": the " + std::to_string(mesh.positions.size()) + " vertices and " +
+                                                                  std::to_string(mesh.triangleCount()) + " triangles of its instance of " +
+                                                                  at("meshes", static_cast<std::size_t>(node.mesh)));
           scene.instances.push_back({sceneMesh, world});
         }
       }
@@ -448,7 +582,6 @@ struct NodeWalker {
     if (node.camera >= 0) addCamera(node, n, world);
     addLight(node, n, world);
     for (int child : node.children) visit(child, world, depth + 1);
-    onPath[n] = 0;
   }
 
   void addCamera(const tinygltf::Node& node, std::size_t n, const glm::mat4& world) {
@@ -462,7 +595,7 @@ struct NodeWalker {
     // A glTF camera looks down its local -z with +y up.
     camera.eye = glm::vec3(world * glm::vec4(0, 0, 0, 1));
     const glm::vec3 forward = glm::normalize(glm::vec3(world * glm::vec4(0, 0, -1, 0)));
-    camera.reference = camera.eye + forward;
+    camera.reference = pointAlong(camera.eye, forward);
     camera.up = glm::normalize(glm::vec3(world * glm::vec4(0, 1, 0, 0)));
     if (src.type == "orthographic") {
       camera.projection = ProjectionKind::Parallel;
@@ -477,7 +610,7 @@ struct NodeWalker {
       camera.near = static_cast<float>(src.perspective.znear);
       if (src.perspective.zfar > 0) camera.far = static_cast<float>(src.perspective.zfar);
     }
-    const bool sane = finite(camera.eye) && finite(forward) && finite(camera.up) && std::isfinite(camera.near) &&
+    const bool sane = finite(camera.eye) && drawable(camera.eye) && finite(forward) && finite(camera.up) && std::isfinite(camera.near) &&
                       (camera.projection == ProjectionKind::Parallel
                            ? camera.xmag > 0 && camera.ymag > 0 && std::isfinite(camera.xmag + camera.ymag) && camera.far && *camera.far > camera.near
                            : camera.yfov > 0 && camera.yfov < 3.1f && camera.near > 0 && (!camera.far || *camera.far > camera.near));
@@ -512,8 +645,9 @@ struct NodeWalker {
       light.attenuation = {0, 0, 1};
       light.spotCutoffDeg = static_cast<float>(glm::degrees(src.spot.outerConeAngle));
     }
-    if (!finite(light.position) || !finite(light.direction) || !std::isfinite(light.intensity) || light.intensity < 0) {
-      warnings.push_back(at("nodes", n) + ": light has non-finite placement or intensity; ignored");
+    const bool placed = finite(light.position) && (light.kind == LightKind::Directional || drawable(light.position));
+    if (!placed || !finite(light.direction) || !std::isfinite(light.intensity) || light.intensity < 0) {
+      warnings.push_back(at("nodes", n) + ": light has a non-finite intensity, or a placement that is not finite or beyond +-" + coordinateLimit() + "; ignored");
       return;
     }
     scene.lights.push_back(light);
@@ -530,7 +664,7 @@ void checkRequiredExtensions(const std::string& path, const nlohmann::json& docu
   if (required == document.end() || !required->is_array()) return;
   for (const nlohmann::json& name : *required)
     if (name.is_string() && !kSupportedExtensions.count(name.get<std::string>()))
-      throw Error(path + ": requires extension " + name.get<std::string>() + ", which facet does not support");
+      throw Error(path + ": requires extension " + quoteInput(name.get<std::string>()) + ", which facet does not support");
 }
 
 // tinygltf 2.7 refuses a few valid files. What it requires that glTF 2.0
@@ -570,23 +704,26 @@ bool removeChannelsWithoutNode(nlohmann::json& document, Warnings& warnings) {
   return removed;
 }
 
-// The file's bytes with a new JSON document: the text itself for .gltf, a
-// GLB with the new JSON chunk (padded with spaces) and the old BIN chunk.
-std::string withDocument(const std::string& bytes, bool binary, std::size_t jsonOffset, std::size_t jsonLength, const nlohmann::json& document) {
-  std::string json = document.dump();
-  if (!binary) return json;
-  while (json.size() % 4 != 0) json.push_back(' ');
-  const std::size_t binStart = jsonOffset + ((jsonLength + 3) & ~std::size_t{3});
-  const std::string bin = binStart < bytes.size() ? bytes.substr(binStart) : std::string();
-  std::string out = bytes.substr(0, 12);
-  const auto put32 = [&](std::uint32_t v) { out.append(reinterpret_cast<const char*>(&v), 4); };
-  put32(static_cast<std::uint32_t>(json.size()));
-  put32(0x4E4F534Au);  // JSON
-  out += json;
-  out += bin;
-  const auto total = static_cast<std::uint32_t>(out.size());
-  std::memcpy(out.data() + 8, &total, 4);
-  return out;
+// A line of tinygltf's, which may hold text from the file (a URI, a name):
+// its first line only, control and non-ASCII bytes escaped, at most 200 bytes.
+std::string tinygltfLine(std::string text) {
+  while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+  const auto newline = text.find('\n');
+  const bool more = newline != std::string::npos;
+  if (more) text.resize(newline);
+  std::string line;
+  for (std::size_t i = 0; i < text.size() && line.size() < 200; ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x20 && c < 0x7f) {
+      line += static_cast<char>(c);
+    } else {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\x%02x", c);
+      line += escaped;
+    }
+  }
+  if (line.size() >= 200) line += "...";
+  return more ? line + " (and more)" : line;
 }
 
 }  // namespace
@@ -604,28 +741,34 @@ Scene loadGltf(const std::string& path) {
 Scene loadGltfFromMemory(const std::string& bytes, const std::string& path, const std::string& assetFolder) {
   namespace fs = std::filesystem;
   const std::string extension = fs::path(path).extension().string();
-  const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
-  if (!binary && (extension == ".glb" || extension == ".GLB")) glbJsonChunk(path, bytes);  // throws the right GLB_* error
-  const auto [jsonOffset, jsonLength] = binary ? glbJsonChunk(path, bytes) : std::pair<std::size_t, std::size_t>{0, bytes.size()};
-  if (jsonDepth(bytes.data() + jsonOffset, jsonLength) > kMaxJsonDepth)
+  const GltfLayout layout = gltfLayout(path, bytes, extension == ".glb" || extension == ".GLB");
+  const std::string_view json = std::string_view(bytes).substr(layout.jsonOffset, layout.jsonLength);
+  if (jsonDepth(json.data(), json.size()) > kMaxJsonDepth)
     throw Error(path + ": JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
   Warnings warnings;
-  std::string repaired;  // the bytes tinygltf parses when the document had to change
+  std::string repaired;  // the bytes tinygltf parses when the document or the GLB layout had to change
   {
-    nlohmann::json document = nlohmann::json::parse(bytes.data() + jsonOffset, bytes.data() + jsonOffset + jsonLength, nullptr, false);
-    if (!document.is_discarded()) {  // else tinygltf reports the syntax error with its position
-      checkRequiredExtensions(path, document);
-      if (removeChannelsWithoutNode(document, warnings)) repaired = withDocument(bytes, binary, jsonOffset, jsonLength, document);
-    }
+    nlohmann::json document = parseGltfJson(path, json);
+    checkRequiredExtensions(path, document);
+    checkGltfDocument(path, document, assetFolder, kMaxFileBytes);
+    const bool changed = removeChannelsWithoutNode(document, warnings);
+    const std::string_view bin = layout.hasBin ? std::string_view(bytes).substr(layout.binOffset, layout.binLength) : std::string_view();
+    if (changed) repaired = layout.binary ? glbBytes(document.dump(), bin) : document.dump();
+    else if (!layout.plain) repaired = glbBytes(std::string(json), bin);
   }
   const std::string& parsed = repaired.empty() ? bytes : repaired;
+  const bool binary = layout.binary;
 
   AssetFolder folder;
   folder.root = assetFolder;
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks({fileExists, expandFilePath, readWholeFile, refuseWrite, &folder});
-  loader.SetImageLoader(loadImage, nullptr);
   tinygltf::Model model;
+  MemoryBudget sceneBudget(kSceneMemoryBudget, "scene budget");
+  ImageLoading images;
+  images.model = &model;
+  images.budget = &sceneBudget;
+  loader.SetImageLoader(loadImage, &images);
   std::string err, warn;
   bool ok = false;
   try {
@@ -638,24 +781,19 @@ Scene loadGltfFromMemory(const std::string& bytes, const std::string& path, cons
   } catch (...) {
     throw Error(path + ": glTF parser failed");
   }
-  const auto firstLine = [](std::string text) {
-    while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
-    const auto newline = text.find('\n');
-    if (newline != std::string::npos) text = text.substr(0, newline) + " (and more)";
-    return text;
-  };
+  if (images.failure) throw Error(path + ": " + images.failure->what());
   for (const char* tolerated : kTolerated)  // what tinygltf reports that glTF allows
     for (auto at = err.find(tolerated); at != std::string::npos; at = err.find(tolerated)) {
       std::size_t end = at + std::strlen(tolerated);
       if (end < err.size() && err[end] == '\n') ++end;
       err.erase(at, end - at);
     }
-  if (!ok || !err.empty()) throw Error(path + ": " + (err.empty() ? std::string("not a valid glTF file") : firstLine(err)));
+  if (!ok || !err.empty()) throw Error(path + ": " + (err.empty() ? std::string("not a valid glTF file") : tinygltfLine(err)));
   if (model.asset.version.empty() || model.asset.version[0] != '2')
-    throw Error(path + ": asset.version '" + model.asset.version + "' is not glTF 2.x (UNKNOWN_ASSET_MAJOR_VERSION)");
+    throw Error(path + ": asset.version " + quoteInput(model.asset.version) + " is not glTF 2.x (UNKNOWN_ASSET_MAJOR_VERSION)");
   for (const std::string& required : model.extensionsRequired)
     if (!kSupportedExtensions.count(required))
-      throw Error(path + ": requires extension " + required + ", which facet does not support");
+      throw Error(path + ": requires extension " + quoteInput(required) + ", which facet does not support");
 
   Scene scene;
   scene.source = path;
@@ -663,14 +801,20 @@ Scene loadGltfFromMemory(const std::string& bytes, const std::string& path, cons
     const auto newline = warn.find('\n');
     line = warn.substr(0, newline);
     warn = newline == std::string::npos ? std::string() : warn.substr(newline + 1);
-    if (!line.empty()) warnings.push_back(line);
+    if (!line.empty()) warnings.push_back(tinygltfLine(line));
   }
   for (const std::string& used : model.extensionsUsed)
-    if (!kSupportedExtensions.count(used)) warnings.push_back("extension " + used + " is not supported; ignored");
+    if (!kSupportedExtensions.count(used)) warnings.push_back("extension " + quoteInput(used) + " is not supported; ignored");
 
-  convertTextures(model, scene, warnings);
-  convertMaterials(model, scene, warnings);
-  const auto meshTable = convertMeshes(model, scene, warnings);
+  // Meshes first: textures decode only once everything has been priced.
+  std::vector<std::vector<int>> meshTable;
+  try {
+    meshTable = convertMeshes(model, sceneBudget, scene, warnings);
+    convertTextures(model, images.encoded, sceneBudget, scene, warnings);
+    convertMaterials(model, scene, warnings);
+  } catch (const Error& e) {
+    throw Error(path + ": " + e.what());
+  }
 
   // Roots: the default scene's nodes, else the first scene's, else every node without a parent.
   std::vector<int> roots;
@@ -687,7 +831,7 @@ Scene loadGltfFromMemory(const std::string& bytes, const std::string& path, cons
       if (!isChild[n]) roots.push_back(static_cast<int>(n));
     if (!model.nodes.empty()) warnings.push_back("the file has no scenes; drawing every root node");
   }
-  NodeWalker walker{model, scene, warnings, meshTable, std::vector<char>(model.nodes.size(), 0)};
+  NodeWalker walker{model, scene, warnings, meshTable, std::vector<char>(model.nodes.size(), 0), {}};
   try {
     for (int root : roots) walker.visit(root, glm::mat4(1.0f), 0);
   } catch (const Error& e) {

@@ -1,5 +1,8 @@
 #include "scene/scene.h"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <utility>
 
 #include <glm/common.hpp>
@@ -17,7 +20,23 @@ void Bounds::include(glm::vec3 p) {
   }
 }
 
-float Bounds::radius() const { return empty ? 0.0f : 0.5f * glm::length(max - min); }
+glm::vec3 pointAlong(glm::vec3 eye, glm::vec3 direction) {
+  const float reach = std::max({std::fabs(eye.x), std::fabs(eye.y), std::fabs(eye.z)});
+  const float scale = reach < 8192.0f ? 1.0f : std::exp2(std::ceil(std::log2(reach)));
+  return eye + scale * direction;
+}
+
+// A box of float corners beyond ±1.8e19 overflows the float squares of its
+// diagonal: then the radius is computed again in double (and is infinite
+// only past float's range). Smaller boxes keep the float value, bit for bit.
+float Bounds::radius() const {
+  if (empty) return 0.0f;
+  const float r = 0.5f * glm::length(max - min);
+  if (std::isfinite(r)) return r;
+  const glm::dvec3 d = glm::dvec3(max) - glm::dvec3(min);
+  const double wide = 0.5 * std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+  return wide <= static_cast<double>(std::numeric_limits<float>::max()) ? static_cast<float>(wide) : std::numeric_limits<float>::infinity();
+}
 
 int Scene::addMaterial(std::string name, glm::vec3 color, float metallic, float roughness) {
   identity.renew();
@@ -47,7 +66,10 @@ Bounds Scene::worldBounds() const {
   Bounds bounds;
   for (const MeshInstance& instance : instances) {
     const Mesh& mesh = meshes[static_cast<std::size_t>(instance.mesh)];
-    for (const glm::vec3& p : mesh.positions) bounds.include(glm::vec3(instance.worldFromModel * glm::vec4(p, 1.0f)));
+    for (const glm::vec3& p : mesh.positions) {
+      const glm::vec3 world(instance.worldFromModel * glm::vec4(p, 1.0f));
+      if (std::isfinite(world.x) && std::isfinite(world.y) && std::isfinite(world.z)) bounds.include(world);  // what can be framed
+    }
   }
   return bounds;
 }

@@ -68,6 +68,13 @@ struct SceneCamera {
   std::optional<float> far;        // none: infinite (glTF), fitted to the scene later
 };
 
+// A point along `direction` from `eye`, for a view's reference point: one
+// unit along for an eye within 8192 of the origin (where eye + d turns d by
+// at most 5e-4 rad in rounding), and as far along as the eye is from the
+// origin (a power of two) beyond, because eye + d loses d to eye's rounding
+// (past 2^24 it is eye itself, and the view direction NaN).
+glm::vec3 pointAlong(glm::vec3 eye, glm::vec3 direction);
+
 struct Bounds {
   glm::vec3 min{0.0f}, max{0.0f};
   bool empty = true;
@@ -114,7 +121,7 @@ struct Scene {
   std::vector<std::string> warnings; // what a loader skipped or repaired
 
   std::size_t triangleCount() const;  // over all instances
-  Bounds worldBounds() const;         // over all instances
+  Bounds worldBounds() const;         // over all instances' finite world positions
 
   // For scenes built in code: an opaque material of base colour `color`
   // (linear RGB), metallic and roughness; returns its index.

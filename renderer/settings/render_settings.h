@@ -1,5 +1,6 @@
 #pragma once
 #include <cstddef>
+#include <cstdint>
 // Every knob of the pipeline, in one struct with one set of defaults (the
 // member initializers below: the only place a default is written). The
 // command line, the viewer, the tests and the benchmarks all go through it.
@@ -23,6 +24,22 @@ inline constexpr int kMinShadowMapSize = 16;      // S
 inline constexpr int kMaxShadowMapSize = 8192;    // S
 inline constexpr int kMaxPcfRadius = 8;           // r
 inline constexpr std::size_t kMaxLights = 8;      // lights a frame shades; a scene's others are dropped with a warning
+
+// Memory, priced before anything is allocated (scene/memory_budget.h), so
+// that a small file cannot take gigabytes. The scene budget holds what the
+// glTF loader keeps of a scene: vertices, normals, texture coordinates,
+// indices and decoded textures (from each image's header, before decoding).
+// The frame budget holds what a frame works in: the vertex and triangle
+// buffers of every instance (the CPU backend's, the larger) and the shadow
+// maps (S² floats per face, six faces per point light). A file or frame
+// that needs more is refused with a line naming what needs it.
+inline constexpr std::uint64_t kSceneMemoryBudget = std::uint64_t{1} << 30;   // bytes
+inline constexpr std::uint64_t kFrameMemoryBudget = std::uint64_t{512} << 20; // bytes
+// The largest world coordinate a scene may place a vertex, light or camera
+// at: the pipeline squares distances in float (the projection's N·F, the
+// attenuation's d²), which overflows past 1.8e19. Beyond it the loader
+// drops what it placed there, with a warning.
+inline constexpr float kMaxWorldCoordinate = 1e18f;
 
 enum class ShadingMode { Flat, Gouraud, Phong, Count };
 inline constexpr std::array<std::string_view, static_cast<int>(ShadingMode::Count)> kShadingModeNames = {"flat", "gouraud", "phong"};

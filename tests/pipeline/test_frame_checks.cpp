@@ -12,6 +12,7 @@
 #include "pipeline/frame_checks.h"
 #include "pipeline/frame_inputs.h"
 #include "scene/default_scene.h"
+#include "scene/memory_budget.h"
 #include "scene/primitives.h"
 
 using namespace facet;
@@ -119,4 +120,43 @@ TEST_CASE("the light limit: a scene's lights beyond it are dropped with a warnin
   manual.lightSource = Source::Manual;
   manual.lights = scene.lights;
   CHECK_THROWS_WITH_AS(buildFrameInputs(scene, manual), "settings key 'lights': 10 lights, a frame shades at most 8", Error);
+}
+
+TEST_CASE("frame budget: shadow maps and instance buffers are priced before a backend allocates them") {
+  // The issue's case: a scene of many point lights keeps eight, and 8 × 6 faces of 2048² depth took 800 MB of the CPU backend.
+  Scene scene = cubeScene();
+  scene.source = "lamps.gltf";
+  for (int i = 0; i < 8; ++i) {
+    Light light;
+    light.position = {static_cast<float>(i), 3.0f, 1.0f};
+    scene.lights.push_back(light);
+  }
+  RenderSettings settings = small();
+  settings.shadows.mapSize = 2048;
+  CHECK_THROWS_WITH_AS(buildFrameInputs(scene, settings),
+                       "lamps.gltf: the shadow maps of 8 lights (48 faces of 2048x2048 depth texels) need 768 MiB, more than the frame budget of "
+                       "512 MiB (settings key 'shadows.mapSize': 1672 or less fits, or shadows.enabled=false)",
+                       Error);
+  settings.shadows.mapSize = 1672;
+  const FrameInputs fits = buildFrameInputs(scene, settings);
+  CHECK(shadowMapBytes(fits.shadows.mapSize, fits.shadowLayerCount) <= kFrameMemoryBudget);
+  settings.shadows.mapSize = 2048;
+  settings.shadows.enabled = false;
+  CHECK_NOTHROW(buildFrameInputs(scene, settings));
+  // The shared check refuses a frame made by hand too, before the CPU backend sizes its maps.
+  FrameInputs bad = fits;
+  bad.shadows.mapSize = 1700;
+  CHECK_THROWS_WITH_AS(makeCpuRenderer(1)->render(scene, bad), doctest::Contains("more than the frame budget of 512 MiB"), Error);
+
+  // One mesh placed many times: the instances' vertex and triangle buffers.
+  Scene many = cubeScene();
+  many.source = "many.gltf";
+  const std::uint64_t perInstance = instanceFrameBytes(many.meshes[0].positions.size(), many.meshes[0].triangleCount());
+  const std::uint64_t fitting = kFrameMemoryBudget / perInstance;
+  many.instances.assign(fitting, many.instances[0]);
+  settings.shadows.enabled = false;
+  CHECK_NOTHROW(buildFrameInputs(many, settings));
+  many.instances.push_back(many.instances[0]);
+  CHECK_THROWS_WITH_AS(buildFrameInputs(many, settings),
+                       doctest::Contains(("many.gltf: the vertex and triangle buffers of " + std::to_string(fitting + 1) + " instances (").c_str()), Error);
 }

@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "common/error.h"
+#include "cpu/cpu_renderer.h"
 #include "pipeline/frame_inputs.h"
 #include "pipeline/view_setup.h"
 #include "scene/default_scene.h"
@@ -92,4 +93,42 @@ TEST_CASE("a camera with no view direction is a named error") {
   s.camera.source = Source::Manual;
   s.camera.eye = s.camera.reference = {1, 2, 3};
   CHECK_THROWS_WITH_AS(buildFrameInputs(sphereScene(), s), doctest::Contains("settings key 'camera'"), Error);
+}
+
+TEST_CASE("a scene as large as kMaxWorldCoordinate is framed and drawn as the same scene at unit size") {
+  // The loader drops what lies beyond kMaxWorldCoordinate; up to it the
+  // pipeline's float squares (N·F, d²) must stay finite, and the auto
+  // camera and light frame it as they frame the scene at unit size (a
+  // power of two scales every float exactly: the same bytes). Beyond 1.8e19
+  // the bounding radius overflowed and the image came out empty.
+  const auto render = [](float scale, bool shadows) {
+    Scene scene = sphereScene();
+    for (glm::vec3& p : scene.meshes[0].positions) p *= scale;
+    RenderSettings s;
+    s.width = 48;
+    s.height = 32;
+    s.shadows.mapSize = 64;
+    s.shadows.enabled = shadows;
+    const FrameInputs f = buildFrameInputs(scene, s);
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r) {
+        REQUIRE(std::isfinite(f.clipFromWorld[c][r]));
+        if (shadows) REQUIRE(std::isfinite(f.lights[0].shadowFromWorld[0][c][r]));
+      }
+    return makeCpuRenderer(1)->render(scene, f).image;
+  };
+  const auto covered = [](const Image& image) {
+    std::size_t n = 0;
+    for (int y = 0; y < image.height(); ++y)
+      for (int x = 0; x < image.width(); ++x) n += image.at(x, y) == image.at(0, 0) ? 0 : 1;
+    return n;
+  };
+  const float scale = std::exp2(std::floor(std::log2(kMaxWorldCoordinate)));
+  CHECK(scale * 2.0f > kMaxWorldCoordinate);
+  const Image unit = render(1.0f, false);
+  CHECK(covered(unit) > 150);  // the sphere is in the picture
+  CHECK(render(scale, false) == unit);
+  // With its shadow map too: a view one unit along the light's axis from a
+  // light 2^24 away was the light itself, and the maps NaN.
+  CHECK(render(scale, true) == render(1.0f, true));
 }

@@ -1,7 +1,14 @@
 // The glTF loader on Debian's assimp-testmodels files.
+#include <cmath>
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
 #include <functional>
+#include <limits>
 #include <string>
+#include <vector>
+
+#include <unistd.h>
 
 #include <doctest/doctest.h>
 #include <nlohmann/json.hpp>
@@ -9,6 +16,7 @@
 #include "common/error.h"
 #include "scene/gltf_loader.h"
 #include "scene/load_scene.h"
+#include "scene/memory_budget.h"
 
 using namespace facet;
 
@@ -75,10 +83,6 @@ TEST_CASE("broken files: repaired with warnings or refused with one line naming 
     const Scene scene = loadGltf(kModels + "/BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb");
     CHECK(hasWarning(scene, "ACCESSOR_INVALID_FLOAT"));
   }
-  SUBCASE("a node loop is cut") {
-    const Scene scene = loadGltf(kModels + "/RecursiveNodes/RecursiveNodes.gltf");
-    CHECK(hasWarning(scene, "NODE_LOOP"));
-  }
   SUBCASE("a missing buffer refuses the file") {
     const std::string path = kModels + "/MissingBin/BoxTextured.gltf";
     CHECK_THROWS_WITH_AS(loadGltf(path), doctest::Contains(path.c_str()), Error);
@@ -88,7 +92,7 @@ TEST_CASE("broken files: repaired with warnings or refused with one line naming 
                          doctest::Contains("KHR_technique_webgl"), Error);
   }
   SUBCASE("Draco compression is required but not supported: named as such") {
-    CHECK_THROWS_WITH_AS(loadGltf(kModels + "/draco/2CylinderEngine.gltf"), doctest::Contains("requires extension KHR_draco_mesh_compression"), Error);
+    CHECK_THROWS_WITH_AS(loadGltf(kModels + "/draco/2CylinderEngine.gltf"), doctest::Contains("requires extension 'KHR_draco_mesh_compression', which facet does not support"), Error);
   }
   SUBCASE("no such file") {
     CHECK_THROWS_WITH_AS(loadScene("/nonexistent/model.gltf"), "/nonexistent/model.gltf: no such file", Error);
@@ -194,12 +198,376 @@ TEST_CASE("valid files that tinygltf alone refuses are loaded: a skin without in
 }
 
 TEST_CASE("what glTF requires stays required: a spot light without its spot object (KHR_lights_punctual)") {
-  CHECK_THROWS_AS(loadGltfFromMemory(asset(
-                                         [](nlohmann::json& j) {
-                                           j["extensions"] = nlohmann::json::parse(R"({"KHR_lights_punctual": {"lights": [{"type": "spot"}]}})");
-                                           j["nodes"][0]["extensions"] = nlohmann::json::parse(R"({"KHR_lights_punctual": {"light": 0}})");
-                                         },
-                                         false),
-                                     "spot.gltf", ""),
-                  Error);
+  CHECK_THROWS_WITH_AS(loadGltfFromMemory(asset(
+                                              [](nlohmann::json& j) {
+                                                j["extensions"] = nlohmann::json::parse(R"({"KHR_lights_punctual": {"lights": [{"type": "spot"}]}})");
+                                                j["nodes"][0]["extensions"] = nlohmann::json::parse(R"({"KHR_lights_punctual": {"light": 0}})");
+                                              },
+                                              false),
+                                          "spot.gltf", ""),
+                       "spot.gltf: KHR_lights_punctual lights[0]: a spot light needs its spot object (innerConeAngle, outerConeAngle)", Error);
+}
+
+// ---------------------------------------------------------------------------
+// Bad input: every file below is refused with one line naming the file, the
+// object and the problem, or read with a warning naming what was dropped;
+// none crashes, hangs, reads out of bounds or allocates more than the
+// budgets of settings/render_settings.h. Most are built here; the few in
+// tests/data/gltf are the issue's own small files.
+
+namespace {
+
+const std::string kData = FACET_TEST_DATA "/gltf";
+
+// doctest::Contains of a built string (it copies the text).
+doctest::Contains has(const std::string& text) { return doctest::Contains(text.c_str()); }
+
+std::string u32(std::uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); }
+
+// A GLB of `json` (padded with spaces) and `bin`, as a writer following glTF 2.0, 4.4 makes it.
+std::string glb(std::string json, const std::string& bin) {
+  while (json.size() % 4) json += ' ';
+  std::string out = "glTF" + u32(2) + u32(static_cast<std::uint32_t>(12 + 8 + json.size() + (bin.empty() ? 0 : 8 + bin.size()))) +
+                    u32(static_cast<std::uint32_t>(json.size())) + "JSON" + json;
+  if (!bin.empty()) out += u32(static_cast<std::uint32_t>(bin.size())) + std::string("BIN\0", 4) + bin;
+  return out;
+}
+
+// The PNG signature and an IHDR chunk of w×h RGBA pixels, and nothing after:
+// enough for an image header, not for pixels.
+std::string pngHeader(std::uint32_t w, std::uint32_t h) {
+  const auto be = [](std::uint32_t v) { return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)}; };
+  return std::string("\x89PNG\r\n\x1a\n", 8) + be(13) + "IHDR" + be(w) + be(h) + std::string("\x08\x06\x00\x00\x00", 5) + be(0);
+}
+
+std::string dataUri(const std::string& bytes) {
+  static constexpr char kBase64[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string encoded;
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const std::size_t n = std::min<std::size_t>(3, bytes.size() - i);
+    unsigned v = 0;
+    for (std::size_t k = 0; k < 3; ++k) v = v << 8 | (k < n ? static_cast<unsigned char>(bytes[i + k]) : 0u);
+    for (std::size_t k = 0; k < 4; ++k) encoded += k <= n ? kBase64[(v >> (18 - 6 * k)) & 63u] : '=';
+  }
+  return "data:application/octet-stream;base64," + encoded;
+}
+
+std::string floats(std::initializer_list<float> values) {
+  std::string out;
+  for (float v : values) out.append(reinterpret_cast<const char*>(&v), sizeof v);
+  return out;
+}
+
+Scene loadJson(const nlohmann::json& document, const std::string& name = "bad.gltf") { return loadGltfFromMemory(document.dump(), name, ""); }
+
+nlohmann::json triangle() { return nlohmann::json::parse(asset([](nlohmann::json&) {}, false)); }
+
+// The triangle with a KHR_lights_punctual light on a second root node.
+nlohmann::json withLight(const nlohmann::json& light) {
+  nlohmann::json j = triangle();
+  j["extensionsUsed"] = {"KHR_lights_punctual"};
+  j["extensions"]["KHR_lights_punctual"]["lights"] = nlohmann::json::array({light});
+  j["nodes"].push_back({{"translation", {0, 2, 1}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+  j["scenes"][0]["nodes"] = {0, 1};
+  return j;
+}
+
+}  // namespace
+
+TEST_CASE("glTF bad input: an image whose bufferView lies past its buffer is refused before anything reads it") {
+  // The issue's file: an image at byteOffset 2^40 (it crashed `facet info`).
+  CHECK_THROWS_WITH_AS(loadGltf(kData + "/image_view_at_2p40.glb"),
+                       doctest::Contains("image_view_at_2p40.glb: images[0]: bufferViews[1]: byteOffset 1099511627776 + byteLength 75 runs past "
+                                         "the end of buffers[0], which has 111 bytes (BUFFER_VIEW_TOO_LONG)"),
+                       Error);
+  // Just past the end (it read invalid memory and drew), and a length that overflows offset + length.
+  for (const auto& [offset, length] : {std::pair<std::uint64_t, std::uint64_t>{40, 75}, {1, 0xffffffffffffffffull}}) {
+    CAPTURE(offset);
+    nlohmann::json j = triangle();
+    j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", length}});
+    j["images"] = {{{"bufferView", 3}, {"mimeType", "image/png"}}};
+    CHECK_THROWS_WITH_AS(loadJson(j), has("bad.gltf: images[0]: bufferViews[3]: byteOffset " + std::to_string(offset)), Error);
+  }
+  nlohmann::json j = triangle();
+  j["images"] = {{{"bufferView", 9}, {"mimeType", "image/png"}}};
+  CHECK_THROWS_WITH_AS(loadJson(j), doctest::Contains("images[0]: bufferView '9' does not exist"), Error);
+}
+
+TEST_CASE("glTF bad input: sparse accessors are read, their indices and values held to their bufferViews") {
+  // Vertex 2 of the triangle replaced by (0, 5, 0): indices (one UNSIGNED_INT) and values (one VEC3) in a second buffer.
+  const auto sparseTriangle = [](std::uint32_t index, std::size_t valuesLength) {
+    nlohmann::json j = triangle();
+    const std::string bytes = u32(index) + floats({0, 5, 0});
+    j["buffers"].push_back({{"byteLength", bytes.size()}, {"uri", dataUri(bytes)}});
+    j["bufferViews"].push_back({{"buffer", 1}, {"byteLength", 4}});
+    j["bufferViews"].push_back({{"buffer", 1}, {"byteOffset", 4}, {"byteLength", valuesLength}});
+    j["accessors"][0]["sparse"] = {{"count", 1}, {"indices", {{"bufferView", 3}, {"componentType", 5125}}}, {"values", {{"bufferView", 4}}}};
+    return j;
+  };
+  const Scene good = loadJson(sparseTriangle(2, 12));
+  REQUIRE(good.meshes.size() == 1);
+  CHECK(good.meshes[0].positions[2] == glm::vec3(0, 5, 0));
+  CHECK(good.meshes[0].positions[1] == glm::vec3(1, 0, 0));  // the base where no index replaces it
+
+  const Scene shortValues = loadJson(sparseTriangle(2, 8));  // 8 bytes hold no VEC3
+  CHECK(shortValues.meshes.empty());
+  CHECK(hasWarning(shortValues, "accessors[0].sparse.values: needs 12 bytes but its bufferView has 8 (ACCESSOR_TOO_LONG); skipped"));
+  const Scene pastCount = loadJson(sparseTriangle(3, 12));  // the accessor has elements 0..2
+  CHECK(hasWarning(pastCount, "accessors[0].sparse.indices: element 0 is 3, past the accessor's 3 elements (ACCESSOR_SPARSE_INDEX_OOB)"));
+  nlohmann::json pastBuffer = sparseTriangle(2, 12);
+  pastBuffer["bufferViews"][4]["byteOffset"] = 8;  // 8 + 12 > the buffer's 16 bytes
+  CHECK(hasWarning(loadJson(pastBuffer), "bufferViews[4]: byteOffset 8 + byteLength 12 runs past its buffer of 16 bytes (BUFFER_VIEW_TOO_LONG)"));
+}
+
+TEST_CASE("glTF bad input: a node hierarchy that is not a set of trees is refused at once, naming the node") {
+  // The issue's file: 41 nodes, each the child of the two before it (2^40 paths; it never finished).
+  CHECK_THROWS_WITH_AS(loadGltf(kData + "/node_dag_41.gltf"),
+                       doctest::Contains("node_dag_41.gltf: nodes[2]: is a child of both nodes[0] and nodes[1], but a glTF node has at most "
+                                         "one parent (NODE_PARENT_OVERRIDE)"),
+                       Error);
+  const auto nodes = [](const char* list, const char* roots) {
+    nlohmann::json j = triangle();
+    j["nodes"] = nlohmann::json::parse(list);
+    j["scenes"][0]["nodes"] = nlohmann::json::parse(roots);
+    return j;
+  };
+  CHECK_THROWS_WITH_AS(loadJson(nodes(R"([{"mesh": 0, "children": [1]}, {"children": [2]}, {"children": [1]}])", "[0]")),
+                       doctest::Contains("nodes[1]: is a child of both nodes[0] and nodes[2]"), Error);
+  CHECK_THROWS_WITH_AS(loadJson(nodes(R"([{"mesh": 0}, {"children": [2], "name": "a"}, {"children": [1]}])", "[0]")),
+                       doctest::Contains("bad.gltf: nodes[1] 'a': is its own ancestor (NODE_LOOP"), Error);
+  CHECK_THROWS_WITH_AS(loadJson(nodes(R"([{"mesh": 0, "children": [0]}])", "[0]")), doctest::Contains("nodes[0]: is its own child (NODE_LOOP"),
+                       Error);
+  CHECK_THROWS_WITH_AS(loadJson(nodes(R"([{"children": [1, 1]}, {"mesh": 0}])", "[0]")),
+                       doctest::Contains("nodes[1]: is listed twice among the children of nodes[0]"), Error);
+  CHECK_THROWS_WITH_AS(loadJson(nodes(R"([{"children": [1]}, {"mesh": 0}])", "[0, 1]")),
+                       doctest::Contains("scenes[0]: nodes[1] is a root of the scene but a child of nodes[0] (SCENE_NON_ROOT_NODE)"), Error);
+  CHECK_THROWS_WITH_AS(loadJson(nodes(R"([{"mesh": 0}])", "[0, 0]")), doctest::Contains("scenes[0]: lists nodes[0] twice"), Error);
+  CHECK_THROWS_WITH_AS(loadGltf(kModels + "/RecursiveNodes/RecursiveNodes.gltf"), doctest::Contains("nodes[0]: is its own ancestor (NODE_LOOP"),
+                       Error);
+  // A tree that shares a mesh between nodes is fine: one instance per node.
+  CHECK(loadJson(nodes(R"([{"mesh": 0, "children": [1, 2]}, {"mesh": 0}, {"mesh": 0, "children": [3]}, {"mesh": 0}])", "[0]")).instances.size() == 4);
+}
+
+TEST_CASE("glTF bad input: memory is priced from counts and image headers before it is allocated") {
+  // The issue's file: 900 bytes, one accessor of 2^26 zero vertices without a bufferView (1.6 GB for info).
+  CHECK_THROWS_WITH_AS(loadGltf(kData + "/zeros_accessor_2p26.gltf"),
+                       doctest::Contains("zeros_accessor_2p26.gltf: meshes[0].primitives[0]: 67108864 vertices (accessors[0]) and 67108864 "
+                                         "indices need 1.88 GB, more than the scene budget of 1 GiB"),
+                       Error);
+  // Three 16384² images: the second is refused from its header; nothing is decoded (only headers exist here).
+  nlohmann::json j = triangle();
+  for (int i = 0; i < 3; ++i) {
+    j["images"].push_back({{"uri", dataUri(pngHeader(16384, 16384))}});
+    j["textures"].push_back({{"source", i}});
+  }
+  CHECK_THROWS_WITH_AS(loadJson(j), doctest::Contains("bad.gltf: images[1]: 16384x16384 RGBA pixels need 1 GiB, which with the 1 GiB counted before is "
+                                                      "more than the scene budget of 1 GiB"),
+                       Error);
+  // Textures sharing one image: each copy beyond the first is priced too.
+  nlohmann::json shared = triangle();
+  shared["images"] = {{{"uri", dataUri(pngHeader(16384, 12000))}}};
+  shared["textures"] = {{{"source", 0}}, {{"source", 0}}};
+  CHECK_THROWS_WITH_AS(loadJson(shared), doctest::Contains("textures[0]: another copy of the 16384x12000 pixels of images[0]"), Error);
+  // Nodes that place one big mesh many times: priced as the frame will hold them, refused naming the node.
+  nlohmann::json instances = triangle();
+  instances["accessors"][0] = {{"componentType", 5126}, {"count", 3 * 262144}, {"type", "VEC3"}};
+  instances["nodes"] = nlohmann::json::array();
+  for (int n = 0; n < 100; ++n) instances["nodes"].push_back({{"mesh", 0}});
+  instances["scenes"][0]["nodes"] = nlohmann::json::array();
+  for (int n = 0; n < 100; ++n) instances["scenes"][0]["nodes"].push_back(n);
+  CHECK_THROWS_WITH_AS(loadJson(instances), doctest::Contains("bad.gltf: nodes[4]: the 786432 vertices and 262144 triangles of its instance of meshes[0] "
+                                                              "need 108 MiB, which with the 432 MiB counted before is more than the frame budget of 512 MiB"),
+                       Error);
+  instances["scenes"][0]["nodes"] = {0, 1, 2, 3};
+  CHECK(loadJson(instances).instances.size() == 4);
+}
+
+TEST_CASE("glTF bad input: the budgets' messages name what needs how much") {
+  CHECK(byteCount(std::uint64_t{1} << 30) == "1 GiB");
+  CHECK(byteCount(std::uint64_t{512} << 20) == "512 MiB");
+  CHECK(byteCount(805306368 + 1) == "805 MB");
+  CHECK(byteCount(1879048192 + 1) == "1.88 GB");
+  CHECK(byteCount(999) == "999 bytes");
+  MemoryBudget budget(1000, "test budget");
+  budget.charge(600, "a: six hundred bytes");
+  CHECK(budget.used() == 600);
+  CHECK_THROWS_WITH_AS(budget.charge(500, "b: five hundred bytes"),
+                       "b: five hundred bytes need 500 bytes, which with the 600 bytes counted before is more than the test budget of 1.00 kB", Error);
+  CHECK_THROWS_WITH_AS(budget.charge(std::uint64_t{1} << 63, "c: too many"), doctest::Contains("c: too many need 9.22 EB, more than the test budget"), Error);
+  CHECK(budget.used() == 600);
+  budget.charge(400, "d: the rest");
+  CHECK(budget.used() == 1000);
+}
+
+TEST_CASE("glTF bad input: a file that is not glTF is named for what it is, its bytes never echoed raw") {
+  CHECK_THROWS_WITH_AS(loadGltf(kData + "/utf16.gltf"), doctest::Contains("utf16.gltf: not a glTF file (.gltf must be UTF-8 JSON, and this is UTF-16LE text)"),
+                       Error);
+  const std::string json = triangle().dump();
+  std::string utf16be, utf32;
+  for (char c : json) utf16be += std::string{'\0', c}, utf32 += std::string{c, '\0', '\0', '\0'};
+  CHECK_THROWS_WITH_AS(loadGltfFromMemory(utf16be, "be.gltf", ""), doctest::Contains("this is UTF-16BE text"), Error);
+  CHECK_THROWS_WITH_AS(loadGltfFromMemory(utf32, "le.gltf", ""), doctest::Contains("this is UTF-32LE text"), Error);
+  CHECK_THROWS_WITH_AS(loadGltfFromMemory(pngHeader(4, 4), "image.gltf", ""), "image.gltf: is a PNG image, not a glTF file", Error);
+  CHECK_THROWS_WITH_AS(loadGltfFromMemory(pngHeader(4, 4), "image.glb", ""), "image.glb: is a PNG image, not a glTF file", Error);
+  CHECK_THROWS_WITH_AS(loadGltfFromMemory("\xff\xd8\xff\xe0 JFIF", "photo.gltf", ""), "photo.gltf: is a JPEG image, not a glTF file", Error);
+  CHECK_THROWS_WITH_AS(loadGltfFromMemory("", "empty.gltf", ""), "empty.gltf: not a glTF file (.gltf is empty)", Error);
+  CHECK_THROWS_WITH_AS(loadGltfFromMemory("solid cube\x01\x02", "cube.gltf", ""),
+                       "cube.gltf: not a glTF file (.gltf must be UTF-8 JSON holding an object, and it starts with 'solid cube\\x01\\x02')", Error);
+  CHECK_THROWS_WITH_AS(loadGltfFromMemory("[1, 2]", "array.gltf", ""), doctest::Contains("array.gltf: not a glTF file (.gltf must be UTF-8 JSON holding an object"),
+                       Error);
+  // A syntax error: nlohmann's words, the text around it quoted with its control bytes escaped.
+  CHECK_THROWS_WITH_AS(loadGltfFromMemory("{\"asset\": \x01}", "syntax.gltf", ""),
+                       doctest::Contains("syntax.gltf: not valid JSON at line 1, column 11: syntax error while parsing value - invalid literal"),
+                       Error);
+  CHECK_THROWS_WITH_AS(loadGltfFromMemory("{\"asset\": \x01}", "syntax.gltf", ""), doctest::Contains("near '{\"asset\": \\x01}'"), Error);
+  CHECK_THROWS_WITH_AS(loadGltfFromMemory("{\"a\": 1e999}", "overflow.gltf", ""), "overflow.gltf: not valid JSON: number overflow parsing '1e999'", Error);
+  // glTF JSON is UTF-8 text, which holds no NUL: what follows one is not silently dropped.
+  CHECK_THROWS_WITH_AS(loadGltfFromMemory(json + std::string("\0{\"more\": 1}", 12), "nul.gltf", ""),
+                       has("nul.gltf: a NUL byte at byte " + std::to_string(json.size()) + " of the .gltf, where JSON text cannot hold one (glTF JSON is UTF-8 text)"),
+                       Error);
+  CHECK_THROWS_WITH_AS(loadGltfFromMemory(glb(json + std::string("\0\0\0\0", 4), ""), "nul.glb", ""),
+                       has("nul.glb: a NUL byte at byte " + std::to_string(json.size()) + " of the GLB's JSON chunk"), Error);
+}
+
+TEST_CASE("glTF bad input: a malformed GLB is reported as exactly what is wrong with its chunks") {
+  nlohmann::json document = triangle();
+  document["buffers"][0].erase("uri");
+  const std::string bin = triangleBuffer();
+  const std::string good = glb(document.dump(), bin);
+  CHECK(loadGltfFromMemory(good, "good.glb", "").triangleCount() == 1);
+
+  std::string json = document.dump();
+  while (json.size() % 4 != 1) json += ' ';  // a JSON chunk length that is not a multiple of 4 (it read as a 1.2 GB BIN chunk)
+  const std::string unaligned = "glTF" + u32(2) + u32(static_cast<std::uint32_t>(20 + json.size() + 8 + bin.size())) +
+                                u32(static_cast<std::uint32_t>(json.size())) + "JSON" + json + u32(static_cast<std::uint32_t>(bin.size())) +
+                                std::string("BIN\0", 4) + bin;
+  CHECK_THROWS_WITH_AS(loadGltfFromMemory(unaligned, "padding.glb", ""),
+                       has("padding.glb: GLB JSON chunk at byte 12 is " + std::to_string(json.size()) +
+                           " bytes long, not a multiple of 4: chunks are padded to 4-byte boundaries (GLB_CHUNK_LENGTH_UNALIGNED)"),
+                       Error);
+  std::string tooBig = good;
+  const std::size_t binHeader = good.size() - bin.size() - 8;
+  tooBig.replace(binHeader, 4, u32(1200000000));
+  CHECK_THROWS_WITH_AS(loadGltfFromMemory(tooBig, "big.glb", ""),
+                       has("big.glb: GLB BIN chunk at byte " + std::to_string(binHeader) + " declares 1200000000 bytes, but the file ends " +
+                           std::to_string(bin.size()) + " bytes after its header (GLB_CHUNK_TOO_BIG)"),
+                       Error);
+  CHECK_THROWS_WITH_AS(loadGltfFromMemory(good + "xy", "long.glb", ""),
+                       has("long.glb: GLB header declares " + std::to_string(good.size()) + " bytes, but the file has " +
+                           std::to_string(good.size() + 2) + " (GLB_LENGTH_MISMATCH)"),
+                       Error);
+  std::string tail = good + "1234";
+  tail.replace(8, 4, u32(static_cast<std::uint32_t>(tail.size())));
+  CHECK_THROWS_WITH_AS(loadGltfFromMemory(tail, "tail.glb", ""), doctest::Contains("too few for a chunk header of 8 (GLB_UNEXPECTED_END_OF_CHUNK_HEADER)"),
+                       Error);
+  CHECK_THROWS_WITH_AS(loadGltfFromMemory(good.substr(0, 10), "short.glb", ""), doctest::Contains("(GLB_UNEXPECTED_END_OF_HEADER)"), Error);
+  CHECK_THROWS_WITH_AS(loadGltfFromMemory("{}", "json.glb", ""), "json.glb: not a GLB file: it starts with '{}', not 'glTF' (GLB_INVALID_MAGIC)", Error);
+  // A chunk of an unknown type is skipped, as glTF requires; the file loads.
+  std::string extra = good + u32(4) + "XTRA" + "abcd";
+  extra.replace(8, 4, u32(static_cast<std::uint32_t>(extra.size())));
+  CHECK(loadGltfFromMemory(extra, "extra.glb", "").triangleCount() == 1);
+  std::string twoBins = good + u32(4) + std::string("BIN\0", 4) + "abcd";
+  twoBins.replace(8, 4, u32(static_cast<std::uint32_t>(twoBins.size())));
+  CHECK_THROWS_WITH_AS(loadGltfFromMemory(twoBins, "two.glb", ""), has("has a second BIN chunk at byte " + std::to_string(good.size())), Error);
+}
+
+TEST_CASE("glTF bad input: a buffer file that exists but is not read says why, not \"File not found\"") {
+  namespace fs = std::filesystem;
+  const fs::path folder = fs::temp_directory_path() / ("facet-gltf-uris-" + std::to_string(::getpid()));
+  fs::create_directories(folder / "sub");
+  const auto scene = [&](const std::string& uri) {
+    nlohmann::json j = triangle();
+    j["buffers"][0]["uri"] = uri;
+    const std::string path = (folder / "scene.gltf").string();
+    std::ofstream(path) << j.dump();
+    return path;
+  };
+  std::ofstream(folder / "triangle.bin", std::ios::binary) << triangleBuffer();
+  CHECK(loadGltf(scene("triangle.bin")).triangleCount() == 1);
+  CHECK(loadGltf(scene("tri%61ngle.bin")).triangleCount() == 1);  // percent-decoded as tinygltf decodes it
+  CHECK_THROWS_WITH_AS(loadGltf(scene("/dev/zero")), doctest::Contains("scene.gltf: buffers[0]: uri '/dev/zero': not a regular file"), Error);
+  CHECK_THROWS_WITH_AS(loadGltf(scene("sub")), doctest::Contains("buffers[0]: uri 'sub': not a regular file"), Error);
+  CHECK_THROWS_WITH_AS(loadGltf(scene("missing.bin")), doctest::Contains("buffers[0]: uri 'missing.bin': no such file"), Error);
+  CHECK_THROWS_WITH_AS(loadGltf(scene("../" + folder.filename().string() + "/../" + folder.filename().string() + "-elsewhere.bin")),
+                       doctest::Contains("no such file"), Error);
+  std::ofstream(folder.string() + "-outside.bin", std::ios::binary) << triangleBuffer();
+  CHECK_THROWS_WITH_AS(loadGltf(scene("../" + folder.filename().string() + "-outside.bin")),
+                       doctest::Contains("outside the scene's folder, where facet reads no files"), Error);
+  fs::remove(folder.string() + "-outside.bin");
+  fs::remove_all(folder);
+}
+
+TEST_CASE("glTF bad input: KHR_lights_punctual lights must have a known type and a valid spot cone, named when not") {
+  CHECK_THROWS_WITH_AS(loadGltf(kData + "/laser_light.gltf"),
+                       doctest::Contains("laser_light.gltf: KHR_lights_punctual lights[0] 'pew': type 'laser' is not one of directional, point, spot"),
+                       Error);
+  CHECK_THROWS_WITH_AS(loadJson(withLight({{"type", 7}})), doctest::Contains("lights[0]: type '7' is not one of"), Error);
+  CHECK_THROWS_WITH_AS(loadJson(withLight({{"intensity", 1}})), doctest::Contains("lights[0]: has no type"), Error);
+  // 0 ≤ innerConeAngle < outerConeAngle ≤ π/2 (defaults 0 and π/4).
+  for (const auto& [inner, outer] : std::vector<std::pair<double, double>>{{0, -1.0}, {0, 1.6}, {0.5, 0.5}, {0.6, 0.5}, {-0.1, 0.5}, {0, 0}}) {
+    CAPTURE(inner);
+    CAPTURE(outer);
+    CHECK_THROWS_WITH_AS(loadJson(withLight({{"type", "spot"}, {"name", "desk"}, {"spot", {{"innerConeAngle", inner}, {"outerConeAngle", outer}}}})),
+                         doctest::Contains("bad.gltf: KHR_lights_punctual lights[0] 'desk': spot.innerConeAngle "), Error);
+  }
+  CHECK_THROWS_WITH_AS(loadJson(withLight({{"type", "spot"}, {"spot", {{"outerConeAngle", -1.0}}}})),
+                       "bad.gltf: KHR_lights_punctual lights[0]: spot.innerConeAngle 0 rad (0 deg) and outerConeAngle -1 rad (-57.3 deg) break "
+                       "0 <= innerConeAngle < outerConeAngle <= pi/2",
+                       Error);
+  CHECK_THROWS_WITH_AS(loadJson(withLight({{"type", "spot"}, {"spot", {{"outerConeAngle", "wide"}}}})),
+                       doctest::Contains("spot.outerConeAngle '\"wide\"' is not a finite number"), Error);
+  const Scene spot = loadJson(withLight({{"type", "spot"}, {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 1.5707963267948966}}}}));
+  REQUIRE(spot.lights.size() == 1);
+  CHECK(spot.lights[0].kind == LightKind::Spot);
+  CHECK(spot.lights[0].spotCutoffDeg == doctest::Approx(90.0f));
+  const Scene defaults = loadJson(withLight({{"type", "spot"}, {"spot", nlohmann::json::object()}}));
+  CHECK(defaults.lights[0].spotCutoffDeg == doctest::Approx(45.0f));
+  CHECK(loadJson(withLight({{"type", "point"}})).lights[0].kind == LightKind::Point);
+}
+
+TEST_CASE("glTF bad input: a texture whose sampler does not exist is refused") {
+  nlohmann::json j = triangle();
+  j["images"] = {{{"uri", dataUri(pngHeader(4, 4))}}};
+  j["samplers"] = {nlohmann::json::object()};
+  j["textures"] = {{{"source", 0}, {"sampler", 5}}};
+  CHECK_THROWS_WITH_AS(loadJson(j), "bad.gltf: textures[0]: sampler '5' does not exist (UNRESOLVED_REFERENCE: the file has 1 sampler)", Error);
+  j["textures"][0]["sampler"] = 0;
+  CHECK_NOTHROW(loadJson(j));
+  j["textures"][0].erase("sampler");  // no sampler: repeat wrapping, auto filtering
+  CHECK_NOTHROW(loadJson(j));
+}
+
+TEST_CASE("glTF bad input: positions that cannot be framed are dropped, naming the accessor, and the rest is framed") {
+  // Triangle 0 at the origin, triangle 1 at 3e19 (its bounding radius overflowed float: an empty image), triangle 2 with a NaN.
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const std::string bytes = floats({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 0, 3e19f, 0, 0, 0, 3e19f, 0, 0, 0, 0, 1, 0, 0, nan, 1, 0});
+  nlohmann::json j = triangle();
+  j["buffers"][0] = {{"byteLength", bytes.size()}, {"uri", dataUri(bytes)}};
+  j["bufferViews"] = {{{"buffer", 0}, {"byteLength", bytes.size()}}};
+  j["accessors"] = {{{"bufferView", 0}, {"componentType", 5126}, {"count", 9}, {"type", "VEC3"}}};
+  j.erase("animations");
+  const Scene scene = loadJson(j);
+  CHECK(scene.triangleCount() == 1);
+  CHECK(hasWarning(scene, "meshes[0].primitives[0]: POSITION accessors[0] has 2 positions beyond +-1e+18, farther than facet draws; their triangles dropped"));
+  CHECK(hasWarning(scene, "meshes[0].primitives[0]: POSITION accessors[0] has 1 NaN or infinite positions (ACCESSOR_INVALID_FLOAT); their triangles dropped"));
+  const Bounds b = scene.worldBounds();
+  CHECK(b.max.x == 1.0f);
+  CHECK(b.radius() == doctest::Approx(0.7071f));
+  // A node that places a mesh beyond the limit: that instance is skipped, the others drawn.
+  nlohmann::json far = triangle();
+  far["nodes"] = {{{"mesh", 0}}, {{"mesh", 0}, {"scale", {1e30, 1, 1}}}};
+  far["scenes"][0]["nodes"] = {0, 1};
+  const Scene placed = loadJson(far);
+  CHECK(placed.instances.size() == 1);
+  CHECK(hasWarning(placed, "nodes[1]: places meshes[0] beyond +-1e+18, farther than facet draws; that instance is skipped"));
+}
+
+TEST_CASE("glTF bad input: a bounding box beyond 1.8e19 keeps a finite radius") {
+  Bounds b;
+  b.include(glm::vec3(-1e19f, -1e19f, 0.0f));
+  b.include(glm::vec3(1e19f, 1e19f, 0.0f));
+  CHECK(b.radius() == doctest::Approx(1.41421e19f));
+  b.include(glm::vec3(3.3e38f, 3.3e38f, 0.0f));
+  b.include(glm::vec3(-3.3e38f, -3.3e38f, 0.0f));
+  CHECK(std::isinf(b.radius()));  // beyond float: said so, not wrapped
 }

@@ -1,0 +1,288 @@
+#include "scene/gltf_document_checks.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <vector>
+
+#include "common/error.h"
+#include "common/quote.h"
+
+namespace facet {
+namespace {
+
+using nlohmann::json;
+
+std::string show(std::string_view text) { return quoteInput(text); }
+
+const json& arrayOf(const json& object, const char* key) {
+  static const json kEmpty = json::array();
+  const auto it = object.find(key);
+  return it != object.end() && it->is_array() ? *it : kEmpty;
+}
+
+// "nodes[7]", with the object's name when it has one: "nodes[7] 'wheel'".
+std::string named(const char* array, std::size_t index, const json& object) {
+  std::string name = std::string(array) + "[" + std::to_string(index) + "]";
+  if (object.is_object())
+    if (const auto it = object.find("name"); it != object.end() && it->is_string()) {
+      name += ' ';
+      name += show(it->get<std::string>());
+    }
+  return name;
+}
+
+std::string at(const char* array, std::size_t index) { return std::string(array) + "[" + std::to_string(index) + "]"; }
+
+// "1 sampler", "3 samplers".
+std::string count(std::size_t n, const char* noun) { return std::to_string(n) + " " + noun + (n == 1 ? "" : "s"); }
+
+// An angle for a message: "-1 rad (-57.3 deg)".
+std::string radians(double a) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%g rad (%.3g deg)", a, a * 57.29577951308232);
+  return text;
+}
+
+// A JSON value as glTF's "integer" with minimum 0; an integral float (4.0) counts.
+bool nonNegativeInteger(const json& value, std::uint64_t& out) {
+  if (value.is_number_unsigned()) {
+    out = value.get<std::uint64_t>();
+    return true;
+  }
+  if (value.is_number_integer()) return false;  // negative
+  if (value.is_number_float()) {
+    const double d = value.get<double>();
+    if (!(d >= 0.0) || d >= 18446744073709551616.0 || std::floor(d) != d) return false;
+    out = static_cast<std::uint64_t>(d);
+    return true;
+  }
+  return false;
+}
+
+// An optional integer property; `fallback` when absent. Refuses anything
+// but a non-negative integer, naming the object.
+std::uint64_t integerProperty(const std::string& object, const json& o, const char* key, std::uint64_t fallback) {
+  const auto it = o.find(key);
+  if (it == o.end()) return fallback;
+  std::uint64_t value = 0;
+  if (!nonNegativeInteger(*it, value)) throw Error(object + ": " + key + " " + show(it->dump()) + " is not a non-negative integer");
+  return value;
+}
+
+// glTF 2.0, 3.6.2 "Buffers and Buffer Views": a bufferView's bytes lie in
+// its buffer (the glTF-Validator's BUFFER_VIEW_TOO_LONG). tinygltf hands an
+// image's bufferView to the image callback as a pointer into the buffer
+// without checking it, so an image's bufferView is checked here, before
+// tinygltf runs; the bufferViews of accessors (sparse indices and values
+// too) are checked where they are read (gltf_accessor.h), which skips the
+// primitive with a warning.
+void checkImageBufferViews(const json& document) {
+  const json& buffers = arrayOf(document, "buffers");
+  const json& views = arrayOf(document, "bufferViews");
+  const json& images = arrayOf(document, "images");
+  for (std::size_t i = 0; i < images.size(); ++i) {
+    if (!images[i].is_object()) continue;  // tinygltf refuses it
+    const auto bufferView = images[i].find("bufferView");
+    if (bufferView == images[i].end()) continue;
+    const std::string image = named("images", i, images[i]);
+    std::uint64_t v = 0;
+    if (!nonNegativeInteger(*bufferView, v) || v >= views.size() || !views[static_cast<std::size_t>(v)].is_object())
+      throw Error(image + ": bufferView " + show(bufferView->dump()) + " does not exist (UNRESOLVED_REFERENCE: the file has " +
+                  count(views.size(), "bufferView") + ")");
+    const json& view = views[static_cast<std::size_t>(v)];
+    const std::string name = image + ": " + named("bufferViews", static_cast<std::size_t>(v), view);
+    const auto buffer = view.find("buffer");
+    std::uint64_t b = 0;
+    if (buffer == view.end() || !nonNegativeInteger(*buffer, b) || b >= buffers.size() || !buffers[static_cast<std::size_t>(b)].is_object())
+      throw Error(name + ": buffer " + (buffer == view.end() ? std::string("is missing") : show(buffer->dump()) + " does not exist") +
+                  " (UNRESOLVED_REFERENCE: the file has " + count(buffers.size(), "buffer") + ")");
+    const std::string bufferName = named("buffers", static_cast<std::size_t>(b), buffers[static_cast<std::size_t>(b)]);
+    const std::uint64_t size = integerProperty(bufferName, buffers[static_cast<std::size_t>(b)], "byteLength", 0);
+    const std::uint64_t offset = integerProperty(name, view, "byteOffset", 0);
+    const std::uint64_t length = integerProperty(name, view, "byteLength", 0);
+    if (length == 0) throw Error(name + ": byteLength must be 1 or more");
+    if (offset > size || length > size - offset)  // overflow-safe offset + length > size
+      throw Error(name + ": byteOffset " + std::to_string(offset) + " + byteLength " + std::to_string(length) + " runs past the end of " +
+                  at("buffers", static_cast<std::size_t>(b)) + ", which has " + std::to_string(size) + " bytes (BUFFER_VIEW_TOO_LONG)");
+  }
+}
+
+// The file a relative URI names, decoded as tinygltf decodes it (%XX, and
+// '+' as a space): glTF 2.0, 2.8 "URIs" resolve relative to the glTF file.
+std::string decodeUri(const std::string& uri) {
+  const auto hex = [](char c) -> int {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    return 0;
+  };
+  std::string out;
+  for (std::size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] == '+') {
+      out += ' ';
+    } else if (uri[i] == '%' && i + 2 < uri.size()) {
+      out += static_cast<char>(hex(uri[i + 1]) << 4 | hex(uri[i + 2]));
+      i += 2;
+    } else {
+      out += uri[i];
+    }
+  }
+  return out;
+}
+
+// A buffer's external file: it exists, is a regular file, lies inside the
+// scene's folder (symbolic links resolved) and is not larger than the
+// largest file facet reads. tinygltf itself would say "File not found" for
+// all of these, and search the current directory too.
+void checkBufferUris(const json& document, const std::string& folder, std::uint64_t maxFileBytes) {
+  namespace fs = std::filesystem;
+  const json& buffers = arrayOf(document, "buffers");
+  for (std::size_t b = 0; b < buffers.size(); ++b) {
+    if (!buffers[b].is_object()) continue;
+    const auto uri = buffers[b].find("uri");
+    if (uri == buffers[b].end() || !uri->is_string()) continue;
+    const std::string text = uri->get<std::string>();
+    if (text.rfind("data:", 0) == 0) continue;  // embedded; tinygltf decodes and size-checks it
+    const std::string name = named("buffers", b, buffers[b]) + ": uri " + show(text);
+    if (folder.empty()) throw Error(name + ": external files are not read for a scene given as bytes");
+    const std::string decoded = decodeUri(text);
+    const fs::path file = fs::path(decoded).is_absolute() ? fs::path(decoded) : fs::path(folder) / decoded;
+    std::error_code ec;
+    const fs::file_status status = fs::status(file, ec);
+    if (ec || !fs::exists(status)) throw Error(name + ": no such file");
+    if (!fs::is_regular_file(status)) throw Error(name + ": not a regular file");
+    const fs::path canonical = fs::weakly_canonical(file, ec);
+    const fs::path root(folder);
+    const auto [rootEnd, unused] = std::mismatch(root.begin(), root.end(), canonical.begin(), canonical.end());
+    (void)unused;
+    if (ec || rootEnd != root.end()) throw Error(name + ": outside the scene's folder, where facet reads no files");
+    const std::uint64_t size = fs::file_size(file, ec);
+    if (!ec && size > maxFileBytes)
+      throw Error(name + ": file is " + std::to_string(size) + " bytes, more than the limit of " + std::to_string(maxFileBytes));
+  }
+}
+
+// glTF 2.0, 3.5.3 "Transformations": "the node hierarchy MUST be a set of
+// disjoint strict trees. That is node hierarchy MUST NOT contain cycles and
+// each node MUST have zero or one parent node"; 3.5.2: scene nodes "MUST be
+// root nodes". A node listed as a child twice would be drawn once per path
+// to it: 2^40 times for 41 nodes. Refused at once, naming the node.
+void checkNodeHierarchy(const json& document) {
+  const json& nodes = arrayOf(document, "nodes");
+  constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+  std::vector<std::size_t> parent(nodes.size(), kNone);
+  const auto node = [&](std::size_t n) { return named("nodes", n, nodes[n]); };
+  for (std::size_t n = 0; n < nodes.size(); ++n) {
+    if (!nodes[n].is_object()) continue;
+    for (const json& child : arrayOf(nodes[n], "children")) {
+      std::uint64_t c = 0;
+      if (!nonNegativeInteger(child, c) || c >= nodes.size()) continue;  // the walker warns of it (UNRESOLVED_REFERENCE)
+      const auto k = static_cast<std::size_t>(c);
+      if (k == n) throw Error(node(k) + ": is its own child (NODE_LOOP: glTF node hierarchies are trees)");
+      if (parent[k] == n) throw Error(node(k) + ": is listed twice among the children of " + at("nodes", n) + " (ARRAY_DUPLICATE_ELEMENTS)");
+      if (parent[k] != kNone)
+        throw Error(node(k) + ": is a child of both " + at("nodes", parent[k]) + " and " + at("nodes", n) +
+                    ", but a glTF node has at most one parent (NODE_PARENT_OVERRIDE)");
+      parent[k] = n;
+    }
+  }
+  // With one parent each, a loop is a chain of parents that never reaches a
+  // root. state: 0 unvisited, 1 on the chain being followed, 2 known to reach a root.
+  std::vector<char> state(nodes.size(), 0);
+  std::vector<std::size_t> chain;
+  for (std::size_t n = 0; n < nodes.size(); ++n) {
+    chain.clear();
+    std::size_t k = n;
+    while (k != kNone && state[k] == 0) {
+      state[k] = 1;
+      chain.push_back(k);
+      k = parent[k];
+    }
+    if (k != kNone && state[k] == 1) throw Error(node(k) + ": is its own ancestor (NODE_LOOP: glTF node hierarchies are trees)");
+    for (std::size_t c : chain) state[c] = 2;
+  }
+  const json& scenes = arrayOf(document, "scenes");
+  for (std::size_t s = 0; s < scenes.size(); ++s) {
+    if (!scenes[s].is_object()) continue;
+    std::vector<char> listed(nodes.size(), 0);
+    for (const json& root : arrayOf(scenes[s], "nodes")) {
+      std::uint64_t r = 0;
+      if (!nonNegativeInteger(root, r) || r >= nodes.size()) continue;
+      const auto k = static_cast<std::size_t>(r);
+      if (parent[k] != kNone)
+        throw Error(named("scenes", s, scenes[s]) + ": " + node(k) + " is a root of the scene but a child of " + at("nodes", parent[k]) +
+                    " (SCENE_NON_ROOT_NODE)");
+      if (listed[k]) throw Error(named("scenes", s, scenes[s]) + ": lists " + node(k) + " twice (ARRAY_DUPLICATE_ELEMENTS)");
+      listed[k] = 1;
+    }
+  }
+}
+
+// glTF 2.0, 5.29 "texture.sampler": the index of a sampler that exists.
+// facet samples with REPEAT and no filter choice either way, but a
+// reference to nothing is a broken file, not a default.
+void checkTextureSamplers(const json& document) {
+  const json& textures = arrayOf(document, "textures");
+  const std::size_t samplers = arrayOf(document, "samplers").size();
+  for (std::size_t t = 0; t < textures.size(); ++t) {
+    if (!textures[t].is_object()) continue;
+    const auto sampler = textures[t].find("sampler");
+    if (sampler == textures[t].end()) continue;  // "When undefined, a sampler with repeat wrapping and auto filtering MUST be used"
+    std::uint64_t s = 0;
+    if (!nonNegativeInteger(*sampler, s) || s >= samplers)
+      throw Error(named("textures", t, textures[t]) + ": sampler " + show(sampler->dump()) + " does not exist (UNRESOLVED_REFERENCE: the file has " +
+                  count(samplers, "sampler") + ")");
+  }
+}
+
+// KHR_lights_punctual: "type" is one of directional, point, spot; a spot
+// light has a "spot" object whose angles satisfy
+// 0 ≤ innerConeAngle < outerConeAngle ≤ π/2 (defaults 0 and π/4).
+void checkLights(const json& document) {
+  const auto extensions = document.find("extensions");
+  if (extensions == document.end() || !extensions->is_object()) return;
+  const auto punctual = extensions->find("KHR_lights_punctual");
+  if (punctual == extensions->end() || !punctual->is_object()) return;
+  const json& lights = arrayOf(*punctual, "lights");
+  constexpr double kHalfPi = 1.57079632679489661923;
+  for (std::size_t l = 0; l < lights.size(); ++l) {
+    const std::string name = "KHR_lights_punctual " + named("lights", l, lights[l]);
+    if (!lights[l].is_object()) throw Error(name + ": is not a JSON object");
+    const auto type = lights[l].find("type");
+    if (type == lights[l].end()) throw Error(name + ": has no type (one of directional, point, spot)");
+    if (!type->is_string() || (*type != "directional" && *type != "point" && *type != "spot"))
+      throw Error(name + ": type " + show(type->is_string() ? type->get<std::string>() : type->dump()) +
+                  " is not one of directional, point, spot");
+    if (*type != "spot") continue;
+    const auto spot = lights[l].find("spot");
+    if (spot == lights[l].end() || !spot->is_object()) throw Error(name + ": a spot light needs its spot object (innerConeAngle, outerConeAngle)");
+    const auto angle = [&](const char* key, double fallback) {
+      const auto it = spot->find(key);
+      if (it == spot->end()) return fallback;
+      if (!it->is_number() || !std::isfinite(it->get<double>())) throw Error(name + ": spot." + key + " " + show(it->dump()) + " is not a finite number");
+      return it->get<double>();
+    };
+    const double inner = angle("innerConeAngle", 0.0), outer = angle("outerConeAngle", kHalfPi / 2);
+    if (!(inner >= 0.0 && inner < outer && outer <= kHalfPi))
+      throw Error(name + ": spot.innerConeAngle " + radians(inner) + " and outerConeAngle " + radians(outer) +
+                  " break 0 <= innerConeAngle < outerConeAngle <= pi/2");
+  }
+}
+
+}  // namespace
+
+void checkGltfDocument(const std::string& path, const nlohmann::json& document, const std::string& folder, std::uint64_t maxFileBytes) {
+  try {
+    checkImageBufferViews(document);
+    checkBufferUris(document, folder, maxFileBytes);
+    checkNodeHierarchy(document);
+    checkTextureSamplers(document);
+    checkLights(document);
+  } catch (const Error& e) {
+    throw Error(path + ": " + e.what());
+  }
+}
+
+}  // namespace facet
