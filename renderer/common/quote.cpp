@@ -50,4 +50,10 @@ std::string quoteInput(std::string_view text) {
   return out + "'";
 }
 
+std::string countOf(std::size_t n, std::string_view one, std::string_view many) {
+  return std::to_string(n) + " " + std::string(n == 1 ? one : many);
+}
+
+std::string countOf(std::size_t n, std::string_view noun) { return countOf(n, noun, std::string(noun) + "s"); }
+
 }  // namespace facet

@@ -16,4 +16,9 @@ inline constexpr std::size_t kMaxQuotedBytes = 48;
 // bytes below 0x20, 0x7f and bytes that are not UTF-8 appear as \xNN.
 std::string quoteInput(std::string_view text);
 
+// A count for a message, the noun in the singular when one: "1 sampler",
+// "3 samplers". Nouns with other plurals pass both forms.
+std::string countOf(std::size_t n, std::string_view noun);
+std::string countOf(std::size_t n, std::string_view one, std::string_view many);
+
 }  // namespace facet

@@ -36,7 +36,6 @@ std::string named(const char* array, std::size_t index, const json& object) {
 std::string at(const char* array, std::size_t index) { return std::string(array) + "[" + std::to_string(index) + "]"; }
 
 // "1 sampler", "3 samplers".
-std::string count(std::size_t n, const char* noun) { return std::to_string(n) + " " + noun + (n == 1 ? "" : "s"); }
 
 // An angle for a message: "-1 rad (-57.3 deg)".
 std::string radians(double a) {
@@ -90,14 +89,14 @@ void checkImageBufferViews(const json& document) {
     std::uint64_t v = 0;
     if (!nonNegativeInteger(*bufferView, v) || v >= views.size() || !views[static_cast<std::size_t>(v)].is_object())
       throw Error(image + ": bufferView " + show(bufferView->dump()) + " does not exist (UNRESOLVED_REFERENCE: the file has " +
-                  count(views.size(), "bufferView") + ")");
+                  countOf(views.size(), "bufferView") + ")");
     const json& view = views[static_cast<std::size_t>(v)];
     const std::string name = image + ": " + named("bufferViews", static_cast<std::size_t>(v), view);
     const auto buffer = view.find("buffer");
     std::uint64_t b = 0;
     if (buffer == view.end() || !nonNegativeInteger(*buffer, b) || b >= buffers.size() || !buffers[static_cast<std::size_t>(b)].is_object())
       throw Error(name + ": buffer " + (buffer == view.end() ? std::string("is missing") : show(buffer->dump()) + " does not exist") +
-                  " (UNRESOLVED_REFERENCE: the file has " + count(buffers.size(), "buffer") + ")");
+                  " (UNRESOLVED_REFERENCE: the file has " + countOf(buffers.size(), "buffer") + ")");
     const std::string bufferName = named("buffers", static_cast<std::size_t>(b), buffers[static_cast<std::size_t>(b)]);
     const std::uint64_t size = integerProperty(bufferName, buffers[static_cast<std::size_t>(b)], "byteLength", 0);
     const std::uint64_t offset = integerProperty(name, view, "byteOffset", 0);
@@ -233,7 +232,7 @@ void checkTextureSamplers(const json& document) {
     std::uint64_t s = 0;
     if (!nonNegativeInteger(*sampler, s) || s >= samplers)
       throw Error(named("textures", t, textures[t]) + ": sampler " + show(sampler->dump()) + " does not exist (UNRESOLVED_REFERENCE: the file has " +
-                  count(samplers, "sampler") + ")");
+                  countOf(samplers, "sampler") + ")");
   }
 }
 

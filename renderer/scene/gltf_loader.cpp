@@ -394,13 +394,13 @@ bool convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& p
     triangles.resize(kept);
     mesh.indices = std::move(triangles);
     if (outOfRange)
-      warnings.push_back(name + ": " + std::to_string(outOfRange) + " triangles index past the " + std::to_string(vertexCount) +
-                         " vertices (ACCESSOR_INDEX_OOB); dropped");
+      warnings.push_back(name + ": " + countOf(outOfRange, "triangle") + " with an index past the " + countOf(vertexCount, "vertex", "vertices") +
+                         " (ACCESSOR_INDEX_OOB); dropped");
     if (notFinite)
-      warnings.push_back(name + ": " + positions + " has " + std::to_string(notFinite) +
-                         " NaN or infinite positions (ACCESSOR_INVALID_FLOAT); their triangles dropped");
+      warnings.push_back(name + ": " + positions + " has " + countOf(notFinite, "NaN or infinite position") +
+                         " (ACCESSOR_INVALID_FLOAT); their triangles dropped");
     if (tooFar)
-      warnings.push_back(name + ": " + positions + " has " + std::to_string(tooFar) + " positions beyond +-" + coordinateLimit() +
+      warnings.push_back(name + ": " + positions + " has " + countOf(tooFar, "position") + " beyond +-" + coordinateLimit() +
                          ", farther than facet draws; their triangles dropped");
     if (mesh.indices.empty()) {
       warnings.push_back(name + ": no drawable triangles; skipped");
@@ -426,7 +426,7 @@ bool convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& p
             if (!std::isfinite(length) || length < 1e-6f) ++bad;
             else n /= length;
           }
-          if (bad) warnings.push_back(name + ": " + std::to_string(bad) + " normals are zero, NaN or infinite; normals recomputed");
+          if (bad) warnings.push_back(name + ": " + countOf(bad, "normal") + " zero, NaN or infinite; normals recomputed");
           normalsOk = bad == 0;
         }
       } catch (const AccessorError& e) {
