@@ -10,6 +10,7 @@
 #include "commands.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "common/quote.h"
 #include "cpu/cpu_renderer.h"
 #include "cpu/reference/reference_renderer.h"
 #include "image/png.h"
@@ -77,9 +78,9 @@ Command addRenderCommand(CLI::App& app) {
     writePng(output, result.image);
     const double total = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
-    std::printf("rendered %s: %zu triangles, %dx%d, %s shading, %zu light(s), shadows %s\n", scene.source.c_str(), scene.triangleCount(),
+    std::printf("rendered %s: %s, %dx%d, %s shading, %s, shadows %s\n", scene.source.c_str(), countOf(scene.triangleCount(), "triangle").c_str(),
                 frame.width, frame.height, std::string(kShadingModeNames[static_cast<std::size_t>(frame.shading)]).c_str(),
-                frame.lights.size(), frame.shadowLayerCount > 0 ? "on" : "off");
+                countOf(frame.lights.size(), "light").c_str(), frame.shadowLayerCount > 0 ? "on" : "off");
     std::printf("backend: %s\n", renderer->description().c_str());
     for (const PassTiming& t : result.timings) std::printf("  %-28s %9.2f ms\n", t.pass.c_str(), t.milliseconds);
     std::printf("  %-28s %9.2f ms\n", "total (process)", total);

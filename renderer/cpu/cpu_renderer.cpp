@@ -5,6 +5,7 @@
 #include <string>
 #include <thread>
 
+#include "common/quote.h"
 #include "cpu/frame_buffers.h"
 #include "cpu/lighting.h"
 #include "cpu/passes.h"
@@ -28,7 +29,7 @@ class CpuRenderer final : public Renderer {
   explicit CpuRenderer(int threads)
       : pool_(threads > 0 ? threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()))) {}
 
-  std::string description() const override { return "cpu rasterizer, " + std::to_string(pool_.size()) + " thread(s)"; }
+  std::string description() const override { return "cpu rasterizer, " + countOf(pool_.size(), "thread"); }
 
   RenderResult render(const Scene& scene, const FrameInputs& frame) override {
     check_(scene, frame);

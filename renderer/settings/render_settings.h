@@ -31,10 +31,11 @@ inline constexpr std::size_t kMaxLights = 8;      // lights a frame shades; a sc
 // indices and decoded textures (from each image's header, before decoding).
 // The frame budget holds what a frame works in: the vertex and triangle
 // buffers of every instance (the CPU backend's, the larger) and the shadow
-// maps (S² floats per face, six faces per point light). A file or frame
+// maps (S² floats per face, six faces per point light; 8 point lights at
+// the default S = 2048 take 768 MiB, so the defaults fit). A file or frame
 // that needs more is refused with a line naming what needs it.
 inline constexpr std::uint64_t kSceneMemoryBudget = std::uint64_t{1} << 30;   // bytes
-inline constexpr std::uint64_t kFrameMemoryBudget = std::uint64_t{512} << 20; // bytes
+inline constexpr std::uint64_t kFrameMemoryBudget = std::uint64_t{1} << 30;   // bytes
 // The largest world coordinate a scene may place a vertex, light or camera
 // at: the pipeline squares distances in float (the projection's N·F, the
 // attenuation's d²), which overflows past 1.8e19. Beyond it the loader

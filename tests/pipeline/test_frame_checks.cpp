@@ -123,7 +123,8 @@ TEST_CASE("the light limit: a scene's lights beyond it are dropped with a warnin
 }
 
 TEST_CASE("frame budget: shadow maps and instance buffers are priced before a backend allocates them") {
-  // The issue's case: a scene of many point lights keeps eight, and 8 × 6 faces of 2048² depth took 800 MB of the CPU backend.
+  // The issue's case: a scene of many point lights keeps eight. At the default
+  // map size their 8 x 6 faces of 2048^2 depth (768 MiB) fit; at 4096 they do not.
   Scene scene = cubeScene();
   scene.source = "lamps.gltf";
   for (int i = 0; i < 8; ++i) {
@@ -132,21 +133,24 @@ TEST_CASE("frame budget: shadow maps and instance buffers are priced before a ba
     scene.lights.push_back(light);
   }
   RenderSettings settings = small();
-  settings.shadows.mapSize = 2048;
+  settings.shadows.mapSize = RenderSettings{}.shadows.mapSize;
+  REQUIRE(settings.shadows.mapSize == 2048);
+  CHECK_NOTHROW(buildFrameInputs(scene, settings));
+  settings.shadows.mapSize = 4096;
   CHECK_THROWS_WITH_AS(buildFrameInputs(scene, settings),
-                       "lamps.gltf: the shadow maps of 8 lights (48 faces of 2048x2048 depth texels) need 768 MiB, more than the frame budget of "
-                       "512 MiB (settings key 'shadows.mapSize': 1672 or less fits, or shadows.enabled=false)",
+                       "lamps.gltf: the shadow maps of 8 lights (48 faces of 4096x4096 depth texels) need 3 GiB, more than the frame budget of "
+                       "1 GiB (settings key 'shadows.mapSize': 2364 or less fits, or shadows.enabled=false)",
                        Error);
-  settings.shadows.mapSize = 1672;
+  settings.shadows.mapSize = 2364;
   const FrameInputs fits = buildFrameInputs(scene, settings);
   CHECK(shadowMapBytes(fits.shadows.mapSize, fits.shadowLayerCount) <= kFrameMemoryBudget);
-  settings.shadows.mapSize = 2048;
+  settings.shadows.mapSize = 4096;
   settings.shadows.enabled = false;
   CHECK_NOTHROW(buildFrameInputs(scene, settings));
   // The shared check refuses a frame made by hand too, before the CPU backend sizes its maps.
   FrameInputs bad = fits;
-  bad.shadows.mapSize = 1700;
-  CHECK_THROWS_WITH_AS(makeCpuRenderer(1)->render(scene, bad), doctest::Contains("more than the frame budget of 512 MiB"), Error);
+  bad.shadows.mapSize = 2365;
+  CHECK_THROWS_WITH_AS(makeCpuRenderer(1)->render(scene, bad), doctest::Contains("more than the frame budget of 1 GiB"), Error);
 
   // One mesh placed many times: the instances' vertex and triangle buffers.
   Scene many = cubeScene();
