@@ -20,24 +20,15 @@
 
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "scratch_folder.h"
 
 using namespace facet;
+using namespace facet::test;
 namespace fs = std::filesystem;
 
 namespace {
 
-// A fresh folder per test case, so the cases can run in parallel.
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("facet_common_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string readAll(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+fs::path scratch(const std::string& name) { return scratchFolder("common", name); }
 
 void writeText(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
 

@@ -12,18 +12,15 @@
 #include <doctest/doctest.h>
 
 #include "common/interrupt_cleanup.h"
+#include "scratch_folder.h"
 
 using namespace facet;
+using namespace facet::test;
 namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("facet_interrupt_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path scratch(const std::string& name) { return scratchFolder("interrupt", name); }
 
 // Runs `body` in a child whose `signal` starts at `action` (the test runner
 // handles some signals itself), and returns its wait status.

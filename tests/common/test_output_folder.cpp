@@ -12,23 +12,15 @@
 
 #include "common/error.h"
 #include "common/output_folder.h"
+#include "scratch_folder.h"
 
 using namespace facet;
+using namespace facet::test;
 namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("facet_folder_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string readAll(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+fs::path scratch(const std::string& name) { return scratchFolder("folder", name); }
 
 std::string messageOf(const std::function<void()>& run) {
   try {

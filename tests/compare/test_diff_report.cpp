@@ -15,6 +15,7 @@
 #include "compare/image_diff.h"
 #include "image/png.h"
 #include "test_images.h"
+#include "scratch_folder.h"
 
 using namespace facet;
 using namespace facet::test;
@@ -22,13 +23,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A fresh folder per test case, so the cases can run in parallel.
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("facet_compare_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path scratch(const std::string& name) { return scratchFolder("compare", name); }
 
 void writeText(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
 

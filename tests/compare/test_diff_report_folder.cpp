@@ -16,6 +16,7 @@
 #include "compare/image_diff.h"
 #include "image/png.h"
 #include "test_images.h"
+#include "scratch_folder.h"
 
 using namespace facet;
 using namespace facet::test;
@@ -23,17 +24,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("facet_report_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string readAll(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+fs::path scratch(const std::string& name) { return scratchFolder("report", name); }
 
 std::vector<std::string> namesIn(const fs::path& dir) {
   std::vector<std::string> names;
