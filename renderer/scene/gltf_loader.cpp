@@ -26,6 +26,7 @@
 
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "common/json_text.h"
 #include "common/quote.h"
 #include "math/transforms.h"
 #include "scene/gltf_accessor.h"
@@ -624,9 +625,12 @@ struct NodeWalker {
   void addLight(const tinygltf::Node& node, std::size_t n, const glm::mat4& world) {
     const auto ext = node.extensions.find("KHR_lights_punctual");
     if (ext == node.extensions.end() || !ext->second.Has("light")) return;
-    const int index = ext->second.Get("light").GetNumberAsInt();
-    if (index < 0 || static_cast<std::size_t>(index) >= model.lights.size()) {
-      warnings.push_back(at("nodes", n) + ": KHR_lights_punctual light " + std::to_string(index) + " does not exist (UNRESOLVED_REFERENCE); ignored");
+    // Read as a double: tinygltf's GetNumberAsInt converts 1e75 to int, which is undefined.
+    const tinygltf::Value& reference = ext->second.Get("light");
+    const double index = reference.IsNumber() ? reference.GetNumberAsDouble() : -1.0;
+    if (!(index >= 0.0) || index != std::floor(index) || index >= static_cast<double>(model.lights.size())) {
+      warnings.push_back(at("nodes", n) + ": KHR_lights_punctual light " + (reference.IsNumber() ? exactNumber(index) : std::string("(not a number)")) +
+                         " does not exist (UNRESOLVED_REFERENCE); ignored");
       return;
     }
     const tinygltf::Light& src = model.lights[static_cast<std::size_t>(index)];

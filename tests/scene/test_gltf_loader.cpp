@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/error.h"
+#include "common/json_text.h"
 #include "scene/gltf_loader.h"
 #include "scene/load_scene.h"
 #include "scene/memory_budget.h"
@@ -495,6 +496,21 @@ TEST_CASE("glTF bad input: a buffer file that exists but is not read says why, n
                        doctest::Contains("outside the scene's folder, where facet reads no files"), Error);
   fs::remove(folder.string() + "-outside.bin");
   fs::remove_all(folder);
+}
+
+TEST_CASE("glTF bad input: a node's KHR_lights_punctual light that does not exist is ignored with a warning, whatever number it is") {
+  // 6.7e74 (a fuzzer's) was converted to int by tinygltf's GetNumberAsInt, which is undefined.
+  for (const nlohmann::json& reference : {nlohmann::json(6.666666666666667e74), nlohmann::json(1), nlohmann::json(-1), nlohmann::json(0.5),
+                                          nlohmann::json("zero")}) {
+    CAPTURE(reference.dump());
+    nlohmann::json j = withLight({{"type", "point"}});
+    j["nodes"][1]["extensions"]["KHR_lights_punctual"]["light"] = reference;
+    const Scene scene = loadJson(j);
+    CHECK(scene.lights.empty());
+    CHECK(hasWarning(scene, "nodes[1]: KHR_lights_punctual light " + (reference.is_number() ? exactNumber(reference.get<double>()) : "(not a number)") +
+                                " does not exist (UNRESOLVED_REFERENCE); ignored"));
+  }
+  CHECK(loadJson(withLight({{"type", "point"}})).lights.size() == 1);
 }
 
 TEST_CASE("glTF bad input: KHR_lights_punctual lights must have a known type and a valid spot cone, named when not") {
