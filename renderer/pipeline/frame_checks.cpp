@@ -4,6 +4,7 @@
 #include <string>
 
 #include "common/error.h"
+#include "common/quote.h"
 #include "scene/memory_budget.h"
 
 namespace facet {
@@ -49,17 +50,17 @@ void checkFrameMemory(const Scene& scene, const FrameInputs& frame) {
 
   const std::string source = scene.source.empty() ? "" : scene.source + ": ";
   MemoryBudget budget(kFrameMemoryBudget, "frame budget");
-  budget.charge(geometry, source + "the vertex and triangle buffers of " + std::to_string(frame.instances.size()) + " instances (" +
-                              std::to_string(vertices) + " vertices, " + std::to_string(triangles) + " triangles)");
-  int lights = 0;
+  budget.charge(geometry, source + "the vertex and triangle buffers of " + countOf(frame.instances.size(), "instance") + " (" +
+                              countOf(vertices, "vertex", "vertices") + ", " + countOf(triangles, "triangle") + ")");
+  std::size_t lights = 0;
   for (const FrameLight& light : frame.lights) lights += light.hasShadowMap ? 1 : 0;
-  const std::uint64_t left = budget.limit() - budget.used();
-  const auto fits = static_cast<std::uint64_t>(std::sqrt(static_cast<double>(left / (sizeof(float) * static_cast<std::uint64_t>(frame.shadowLayerCount)))));
   try {
-    budget.charge(shadows, source + "the shadow maps of " + std::to_string(lights) + (lights == 1 ? " light (" : " lights (") +
-                               std::to_string(frame.shadowLayerCount) + " faces of " + std::to_string(frame.shadows.mapSize) + "x" +
-                               std::to_string(frame.shadows.mapSize) + " depth texels)");
+    budget.charge(shadows, source + "the shadow maps of " + countOf(lights, "light") + " (" + countOf(frame.shadowLayerCount, "face") + " of " +
+                               std::to_string(frame.shadows.mapSize) + "x" + std::to_string(frame.shadows.mapSize) + " depth texels)");
   } catch (const Error& e) {
+    // Here the geometry fit and the shadow maps did not, so there is at least one face.
+    const std::uint64_t left = budget.limit() - budget.used();
+    const auto fits = static_cast<std::uint64_t>(std::sqrt(static_cast<double>(left / shadowMapBytes(1, frame.shadowLayerCount))));
     throw Error(std::string(e.what()) + " (settings key 'shadows.mapSize': " +
                 (fits >= static_cast<std::uint64_t>(kMinShadowMapSize) ? std::to_string(fits) + " or less fits" : "no size fits") +
                 ", or shadows.enabled=false)");
