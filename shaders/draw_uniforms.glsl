@@ -12,13 +12,16 @@ uniform vec3 baseColorFactor;      // O_d without its texture, linear RGB
 layout(binding = 0) uniform sampler2DArray shadowMaps;  // pass 1: one S×S depth layer per light face
 layout(binding = 1) uniform usampler2D baseColorTexture; // sRGB-encoded bytes (GL_RGBA8UI), bottom row first
 
-// O_d at texture coordinates st: the factor times the texture (renderer/PIPELINE.md, section 8).
-// FACET_TEXTURED: the draw's material has one and its mesh has TEXCOORD_0.
-vec3 baseColorAt(vec2 st) {
-#if FACET_TEXTURED
-  precise vec3 r = baseColorFactor * sampleBaseColor(baseColorTexture, st);
-  return r;
-#else
-  return baseColorFactor;
+// O_d = factor · COLOR_0 · texel at texture coordinates st (renderer/PIPELINE.md, section 8).
+// FACET_COLORED: the draw's mesh has COLOR_0; FACET_TEXTURED: its material
+// has a base colour texture and its mesh TEXCOORD_0.
+vec3 baseColorAt(vec2 st, vec3 vertexColor) {
+  precise vec3 O = baseColorFactor;
+#if FACET_COLORED
+  O = O * vertexColor;
 #endif
+#if FACET_TEXTURED
+  O = O * sampleBaseColor(baseColorTexture, st);
+#endif
+  return O;
 }

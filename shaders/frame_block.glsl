@@ -34,4 +34,5 @@ struct CourseMaterial {
   float kd;
   float ks;
   float shininess; // n
+  float metallic;  // m in O_s = (1 - m) + m·O_d
 };

@@ -3,7 +3,8 @@
 // with the same names, arguments and float operations (shading_math.glsl).
 // Change one, change the other.
 //
-//   I = k_e + k_a·I_a·O_d + Σ_lights S·f_att·(k_d·I_p·max(N·L, 0)·O_d + k_s·I_p·spec)
+//   I = k_e + k_a·I_a·O_d + Σ_lights S·f_att·(k_d·I_p·max(N·L, 0)·O_d + k_s·I_p·spec·O_s)
+//   O_s = (1 - m) + m·O_d   (the specular colour: the light's for a dielectric, tinted for a metal)
 //
 // Needs frame_block.glsl, transform.glsl, shading_math.glsl and
 // `uniform sampler2DArray shadowMaps;` (draw_uniforms.glsl) before it, and
@@ -70,9 +71,10 @@ float shadowFactor(int i, vec3 P, vec3 N, vec3 L) {
 }
 
 // I split in the part O_d multiplies and the rest (Gouraud and flat apply a
-// textured O_d per pixel):  I = O_d·diffuse + specular
-//   diffuse  = k_a·I_a + Σ S·f_att·k_d·I_p·max(N·L, 0)
-//   specular = k_e + Σ S·f_att·k_s·I_p·spec
+// textured O_d per pixel). With H = Σ S·f_att·k_s·I_p·spec,
+// O_s·H = (1 - m)·H + m·O_d·H, so  I = O_d·diffuse + specular
+//   diffuse  = (k_a·I_a + Σ S·f_att·k_d·I_p·max(N·L, 0)) + m·H
+//   specular = k_e + (1 - m)·H
 struct Illumination {
   vec3 diffuse;
   vec3 specular;
@@ -82,7 +84,7 @@ struct Illumination {
 Illumination illuminate(CourseMaterial material, vec3 P, vec3 N, vec3 V) {
   precise float ambient = material.ka * frame.ambient.x;
   precise vec3 diffuse = vec3(ambient, ambient, ambient);
-  precise vec3 specular = material.emissive;
+  precise vec3 highlights = vec3(0.0, 0.0, 0.0);  // H
   for (int i = 0; i < FACET_LIGHT_COUNT; ++i) {
     int kind = FACET_LIGHT_KIND(i);
     precise vec3 L;
@@ -104,9 +106,11 @@ Illumination illuminate(CourseMaterial material, vec3 P, vec3 N, vec3 V) {
     precise vec3 addDiffuse = lightFactor * ((material.kd * NdotL) * Ip);
     precise vec3 addSpecular = lightFactor * ((material.ks * specularTerm(N, L, V, material.shininess, FACET_SPECULAR_MODEL)) * Ip);
     diffuse = diffuse + addDiffuse;
-    specular = specular + addSpecular;
+    highlights = highlights + addSpecular;
   }
-  return Illumination(diffuse, specular);
+  precise vec3 tinted = diffuse + material.metallic * highlights;
+  precise vec3 specular = material.emissive + (1.0 - material.metallic) * highlights;
+  return Illumination(tinted, specular);
 }
 
 // I = O_d·diffuse + specular (linear, unclamped).

@@ -14,10 +14,11 @@ flat in vec3 frontSpecular;
 flat in vec3 backDiffuse;
 flat in vec3 backSpecular;
 in vec2 st;
+in vec3 vertexColor;
 
 layout(location = 0) out vec4 color;
 
 void main() {
   Illumination I = gl_FrontFacing ? Illumination(frontDiffuse, frontSpecular) : Illumination(backDiffuse, backSpecular);
-  color = encodeSrgb(shade(I, baseColorAt(st)));
+  color = encodeSrgb(shade(I, baseColorAt(st, vertexColor)));
 }

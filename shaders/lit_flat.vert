@@ -20,12 +20,14 @@
 layout(std430, binding = 0) readonly buffer MeshIndices { uint indices[]; };      // three per triangle
 layout(std430, binding = 1) readonly buffer MeshPositions { float positions[]; }; // model space, x y z per vertex
 layout(std430, binding = 2) readonly buffer MeshTexcoords { float texcoords[]; }; // s t per vertex (read only when textured)
+layout(std430, binding = 3) readonly buffer MeshColors { float colors[]; };       // COLOR_0 r g b a per vertex (read only when coloured)
 
 flat out vec3 frontDiffuse;  // Illumination with N
 flat out vec3 frontSpecular;
-flat out vec3 backDiffuse;   // Illumination with -N, for back faces when culling is off
+flat out vec3 backDiffuse;   // Illumination with -N, for back faces where they are not culled
 flat out vec3 backSpecular;
 out vec2 st;                 // a texture still varies O_d per pixel
+out vec3 vertexColor;        // and so do vertex colours
 
 vec3 modelPosition(uint v) {
   return vec3(positions[3u * v], positions[3u * v + 1u], positions[3u * v + 2u]);
@@ -56,5 +58,10 @@ void main() {
   st = vec2(texcoords[2u * v], texcoords[2u * v + 1u]);
 #else
   st = vec2(0.0);
+#endif
+#if FACET_COLORED
+  vertexColor = vec3(colors[4u * v], colors[4u * v + 1u], colors[4u * v + 2u]);
+#else
+  vertexColor = vec3(1.0);
 #endif
 }

@@ -13,12 +13,14 @@
 layout(location = 0) in vec3 position;  // model space
 layout(location = 1) in vec3 normal;    // model space, unit length
 layout(location = 2) in vec2 texcoord;  // TEXCOORD_0 (0, 0 when the mesh has none)
+layout(location = 3) in vec4 color0;    // COLOR_0, linear RGBA (read only when the mesh has it)
 
 out vec3 frontDiffuse;   // Illumination with N
 out vec3 frontSpecular;
-out vec3 backDiffuse;    // Illumination with -N, for back faces when culling is off
+out vec3 backDiffuse;    // Illumination with -N, for back faces where they are not culled
 out vec3 backSpecular;
 out vec2 st;
+out vec3 vertexColor;
 
 void main() {
   gl_Position = transformPoint(clipFromModel, position);
@@ -32,4 +34,5 @@ void main() {
   backDiffuse = back.diffuse;
   backSpecular = back.specular;
   st = texcoord;
+  vertexColor = color0.rgb;
 }

@@ -12,12 +12,13 @@
 in vec3 worldPosition;
 in vec3 worldNormal;
 in vec2 st;
+in vec3 vertexColor;
 
 layout(location = 0) out vec4 color;
 
 void main() {
   vec3 P = worldPosition;
   vec3 N = normalize3(worldNormal);
-  if (!gl_FrontFacing) N = -N;  // two-sided lighting: only drawn when culling is off
-  color = encodeSrgb(shade(illuminate(material, P, N, viewVector(P)), baseColorAt(st)));
+  if (!gl_FrontFacing) N = -N;  // two-sided lighting: a back face is drawn only where it is not culled
+  color = encodeSrgb(shade(illuminate(material, P, N, viewVector(P)), baseColorAt(st, vertexColor)));
 }

@@ -11,14 +11,17 @@
 layout(location = 0) in vec3 position;  // model space
 layout(location = 1) in vec3 normal;    // model space, unit length
 layout(location = 2) in vec2 texcoord;  // TEXCOORD_0 (0, 0 when the mesh has none)
+layout(location = 3) in vec4 color0;    // COLOR_0, linear RGBA (read only when the mesh has it)
 
 out vec3 worldPosition;
 out vec3 worldNormal;  // unit at the vertex; renormalized per pixel
 out vec2 st;
+out vec3 vertexColor;
 
 void main() {
   gl_Position = transformPoint(clipFromModel, position);
   worldPosition = transformPoint(worldFromModel, position).xyz;
   worldNormal = normalize3(transformDirection(normalMatrix, normal));
   st = texcoord;
+  vertexColor = color0.rgb;
 }

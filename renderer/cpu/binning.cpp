@@ -15,7 +15,7 @@ void pack(const WindowVertex& w, int varyingCount, std::vector<float>& out) {
 
 }  // namespace
 
-void binTriangles(const Scene& scene, const FrameInputs& frame, const PassVertices& vertices, const TileGrid& grid, bool cullBackFaces,
+void binTriangles(const Scene& scene, const FrameInputs& frame, const PassVertices& vertices, const TileGrid& grid, bool culling,
                   std::size_t begin, std::size_t end, WorkerBins& bins, const FlatIllumination* flat) {
   bins.triangles.clear();
   bins.clipped.clear();
@@ -30,6 +30,7 @@ void binTriangles(const Scene& scene, const FrameInputs& frame, const PassVertic
   for (std::size_t global = begin; global < end; ++global) {
     while (global >= vertices.firstTriangle[instance + 1]) ++instance;
     const Mesh& mesh = scene.meshes[static_cast<std::size_t>(frame.instances[instance].mesh)];
+    const bool cullBackFaces = culling && frame.instances[instance].cullBackFaces;
     const std::size_t first = vertices.firstVertex[instance];
     const std::size_t t = 3 * (global - vertices.firstTriangle[instance]);
     const std::uint32_t local[3] = {mesh.indices[t], mesh.indices[t + 1], mesh.indices[t + 2]};

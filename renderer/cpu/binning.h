@@ -12,9 +12,11 @@ namespace facet::cpu {
 
 // Flat shading's per-triangle illumination (front, back) from the triangle's
 // three vertices (indices into PassVertices); called once for each triangle that reaches setup.
+// `culling`: back faces of the instances that FrameInstance::cullBackFaces
+// marks are dropped (the lit pass); false keeps every triangle (the shadow pass).
 using FlatIllumination = FunctionRef<void(std::uint32_t instance, const std::uint32_t (&indices)[3], Illumination (&out)[2])>;
 
-void binTriangles(const Scene& scene, const FrameInputs& frame, const PassVertices& vertices, const TileGrid& grid, bool cullBackFaces,
+void binTriangles(const Scene& scene, const FrameInputs& frame, const PassVertices& vertices, const TileGrid& grid, bool culling,
                   std::size_t begin, std::size_t end, WorkerBins& bins, const FlatIllumination* flat);
 
 // Packs the window vertex of an unclipped vertex with clip coordinates

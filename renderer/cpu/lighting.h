@@ -5,7 +5,8 @@
 // Mirror: shaders/lighting.glsl, the same functions in the same order with
 // the same names, arguments and float operations. Change one, change the other.
 //
-//   I = k_e + k_a·I_a·O_d + Σ_lights S·f_att·(k_d·I_p·max(N·L, 0)·O_d + k_s·I_p·spec)
+//   I = k_e + k_a·I_a·O_d + Σ_lights S·f_att·(k_d·I_p·max(N·L, 0)·O_d + k_s·I_p·spec·O_s)
+//   O_s = (1 - m) + m·O_d   (the specular colour: the light's for a dielectric, tinted for a metal)
 //
 // Lanes: a light that does not reach a lane (spot cut-off, N·L ≤ 0) leaves
 // that lane's sums as they were (a select), which is what the one-pixel code
@@ -24,10 +25,11 @@
 namespace facet::cpu {
 
 // I split in the part O_d multiplies and the rest, so that a textured O_d can
-// be applied per pixel when lighting is per vertex (Gouraud) or per triangle (flat):
+// be applied per pixel when lighting is per vertex (Gouraud) or per triangle (flat).
+// With H = Σ S·f_att·k_s·I_p·spec, O_s·H = (1 - m)·H + m·O_d·H, so
 //   I = O_d·diffuse + specular
-//   diffuse  = k_a·I_a + Σ S·f_att·k_d·I_p·max(N·L, 0)
-//   specular = k_e + Σ S·f_att·k_s·I_p·spec
+//   diffuse  = (k_a·I_a + Σ S·f_att·k_d·I_p·max(N·L, 0)) + m·H
+//   specular = k_e + (1 - m)·H
 template <class F>
 struct IlluminationOf {
   Vec3Of<F> diffuse{}, specular{};
@@ -38,9 +40,9 @@ using Illumination = IlluminationOf<float>;
 template <class F>
 struct LaneMaterial {
   Vec3Of<F> emissive;  // k_e
-  F ka, kd, ks, shininess;
+  F ka, kd, ks, shininess, metallic;
 };
-inline LaneMaterial<float> laneMaterial(const CourseMaterial& m) { return {m.emissive, m.ka, m.kd, m.ks, m.shininess}; }
+inline LaneMaterial<float> laneMaterial(const CourseMaterial& m) { return {m.emissive, m.ka, m.kd, m.ks, m.shininess, m.metallic}; }
 
 // f_att = min(1, 1/(c1 + c2·d + c3·d²)), as ((c1 + c2·d) + (c3·d)·d)
 template <class F>
@@ -129,7 +131,7 @@ IlluminationOf<F> illuminate(const FrameInputs& frame, const ShadowMaps& maps, c
   IlluminationOf<F> I;
   const F ambient = material.ka * F(frame.ambient);
   I.diffuse = Vec3(ambient, ambient, ambient);
-  I.specular = material.emissive;
+  Vec3 highlights(F(0.0f), F(0.0f), F(0.0f));  // H
   for (const FrameLight& fl : frame.lights) {
     const Light& light = fl.light;
     Vec3 L;
@@ -152,8 +154,10 @@ IlluminationOf<F> illuminate(const FrameInputs& frame, const ShadowMaps& maps, c
     const Vec3 diffuse = (S * fAtt) * ((material.kd * NdotL) * Ip);
     const Vec3 specular = (S * fAtt) * ((material.ks * specularTerm(N, L, V, material.shininess, frame.specular)) * Ip);
     I.diffuse = select(active, I.diffuse + diffuse, I.diffuse);
-    I.specular = select(active, I.specular + specular, I.specular);
+    highlights = select(active, highlights + specular, highlights);
   }
+  I.diffuse = I.diffuse + material.metallic * highlights;
+  I.specular = material.emissive + (F(1.0f) - material.metallic) * highlights;
   return I;
 }
 

@@ -39,6 +39,8 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
   Interpolation* in = nullptr;
   const CourseMaterial* material = nullptr;
   const Image* texture = nullptr;
+  bool colored = false;
+  int used = 0;  // varyings set up for the triangle: a prefix of the layout
   bool back = false;
   const Illumination* flat = nullptr;
   PhongBatch batch(frame, maps, image.data());  // Phong: four pixels' illumination at a time
@@ -59,15 +61,17 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         texture = material->baseColorTexture >= 0 && !mesh.texcoords.empty()
                       ? &scene.textures[static_cast<std::size_t>(material->baseColorTexture)].image
                       : nullptr;
+        colored = !mesh.colors.empty();
+        used = colored ? layout.count : (kMode == ShadingMode::Flat && !texture ? 0 : layout.color);
         back = !t.snapped.frontFacing;
-        if (kMode != ShadingMode::Flat || texture) in->setUpVaryings(layout.count);
+        if (used) in->setUpVaryings(used);
         if constexpr (kMode == ShadingMode::Flat) flat = &bins.flat[2 * index];
       }
 #if defined(__SSE2__)
       if constexpr (kMode == ShadingMode::Phong) {
-        // Four pixels of one untextured triangle in a row: interpolation on four lanes, straight into the batch.
+        // Four pixels of one untextured, uncoloured triangle in a row: interpolation on four lanes, straight into the batch.
         const std::uint32_t* row = &scratch.id[(py - ty0) * kTileSize + (px - tx0)];
-        if (!texture && px + 3 <= tx1 && row[1] == id && row[2] == id && row[3] == id) {
+        if (!texture && !colored && px + 3 <= tx1 && row[1] == id && row[2] == id && row[3] == id) {
           const __m128 w = in->inverseW4(px, py);
           const __m128 P[3] = {in->varying4(0, px, py, w), in->varying4(1, px, py, w), in->varying4(2, px, py, w)};
           const __m128 N[3] = {in->varying4(3, px, py, w), in->varying4(4, px, py, w), in->varying4(5, px, py, w)};
@@ -79,8 +83,10 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
       }
 #endif
       float v[layout.count];
-      if (kMode != ShadingMode::Flat || texture) in->varyingsAt(px, py, v);
+      if (used) in->varyingsAt(px, py, v);
+      // O_d = factor · COLOR_0 · texel (PIPELINE.md, section 8)
       glm::vec3 baseColor = material->baseColor;
+      if (colored) baseColor *= glm::vec3(v[layout.color], v[layout.color + 1], v[layout.color + 2]);
       if (texture) baseColor *= sampleBaseColor(*texture, {v[layout.uv], v[layout.uv + 1]});
       glm::vec3 color;
       if constexpr (kMode == ShadingMode::Phong) {
@@ -104,7 +110,6 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
 void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, Image& image,
              std::vector<std::uint32_t>* triangleIds) {
   const VaryingLayout layout = varyingLayout(frame.shading);
-  const bool twoSided = !frame.cullBackFaces;
   const float halfWidth = 0.5f * static_cast<float>(frame.width), halfHeight = 0.5f * static_cast<float>(frame.height);
   PassVertices& v = buffers.vertices;
   const std::size_t vertexCount = v.world.size();
@@ -128,6 +133,7 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
       const glm::vec2 uv = mesh.texcoords.empty() ? glm::vec2(0.0f) : mesh.texcoords[local];
       varyings[layout.uv] = uv.x;
       varyings[layout.uv + 1] = uv.y;
+      put(varyings, layout.color, mesh.colors.empty() ? glm::vec3(1.0f) : glm::vec3(mesh.colors[local]));
       if (frame.shading == ShadingMode::Phong) {
         put(varyings, 0, P);
         put(varyings, 3, normalize3(transformDirection(instance.normalMatrix, mesh.normals[local])));
@@ -138,7 +144,7 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
         put(varyings, 0, front.diffuse);
         put(varyings, 3, front.specular);
         Illumination back;  // zero when one-sided, as ClipVertex's varyings were
-        if (twoSided) back = illuminate(frame, maps, laneMaterial(material), P, -N, V);
+        if (!instance.cullBackFaces) back = illuminate(frame, maps, laneMaterial(material), P, -N, V);
         put(varyings, 6, back.diffuse);
         put(varyings, 9, back.specular);
       }
@@ -150,18 +156,19 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
 
   // Primitive stage. Flat: one illumination per triangle, from its geometric normal at its centroid.
   const auto flatLighting = [&](std::uint32_t instance, const std::uint32_t (&vertex)[3], Illumination (&out)[2]) {
-    const CourseMaterial& material = frame.materials[static_cast<std::size_t>(frame.instances[instance].material)];
+    const FrameInstance& drawn = frame.instances[instance];
+    const CourseMaterial& material = frame.materials[static_cast<std::size_t>(drawn.material)];
     const glm::vec3 p0 = v.world[vertex[0]], p1 = v.world[vertex[1]], p2 = v.world[vertex[2]];
     const glm::vec3 N = normalize3(cross3(p1 - p0, p2 - p0));
     const glm::vec3 centroid = (p0 + p1 + p2) / 3.0f;
     const glm::vec3 V = viewVector<float>(frame, centroid);
     out[0] = illuminate(frame, maps, laneMaterial(material), centroid, N, V);
-    out[1] = twoSided ? illuminate(frame, maps, laneMaterial(material), centroid, -N, V) : Illumination{};
+    out[1] = !drawn.cullBackFaces ? illuminate(frame, maps, laneMaterial(material), centroid, -N, V) : Illumination{};
   };
   const FlatIllumination flat = flatLighting;  // refers to the lambda above, which outlives the pass
   const TileGrid grid = TileGrid::over(frame.width, frame.height);
   forEachRange(pool, v.firstTriangle.back(), [&](std::size_t begin, std::size_t end, int w) {
-    binTriangles(scene, frame, v, grid, frame.cullBackFaces, begin, end, buffers.workers[static_cast<std::size_t>(w)],
+    binTriangles(scene, frame, v, grid, true, begin, end, buffers.workers[static_cast<std::size_t>(w)],
                  frame.shading == ShadingMode::Flat ? &flat : nullptr);
   });
 

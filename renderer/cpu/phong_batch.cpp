@@ -25,7 +25,7 @@ void PhongBatch::flush() {
   for (int k = 0; k < kLanes; ++k) {
     const CourseMaterial& m = *material_[k];
     for (int c = 0; c < 3; ++c) E_[c][k] = m.emissive[c];
-    ka_[k] = m.ka, kd_[k] = m.kd, ks_[k] = m.ks, n_[k] = m.shininess;
+    ka_[k] = m.ka, kd_[k] = m.kd, ks_[k] = m.ks, n_[k] = m.shininess, m_[k] = m.metallic;
   }
   const Vec3x4 P = load(P_);
   // N = normalize(interpolated N), then -N on a back face (two-sided lighting)
@@ -33,7 +33,7 @@ void PhongBatch::flush() {
   const Mask4 back{_mm_cmpneq_ps(_mm_load_ps(back_), _mm_setzero_ps())};
   const Vec3x4 N = select(back, -unit, unit);
   const LaneMaterial<Float4> material{load(E_), Float4(_mm_load_ps(ka_)), Float4(_mm_load_ps(kd_)), Float4(_mm_load_ps(ks_)),
-                                      Float4(_mm_load_ps(n_))};
+                                      Float4(_mm_load_ps(n_)), Float4(_mm_load_ps(m_))};
   const Vec3x4 color = shade(illuminate(frame_, maps_, material, P, N, viewVector<Float4>(frame_, P)), load(O_));
   alignas(16) float rgb[3][kLanes];
   _mm_store_ps(rgb[0], color.x.v);

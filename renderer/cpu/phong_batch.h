@@ -73,7 +73,7 @@ class PhongBatch {
   std::size_t offset_[kLanes];
   const CourseMaterial* material_[kLanes];
   alignas(16) float P_[3][kLanes], N_[3][kLanes], O_[3][kLanes], back_[kLanes];
-  alignas(16) float E_[3][kLanes], ka_[kLanes], kd_[kLanes], ks_[kLanes], n_[kLanes];  // filled by flush
+  alignas(16) float E_[3][kLanes], ka_[kLanes], kd_[kLanes], ks_[kLanes], n_[kLanes], m_[kLanes];  // filled by flush
 };
 
 }  // namespace facet::cpu

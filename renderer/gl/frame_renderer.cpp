@@ -22,6 +22,8 @@ constexpr GLuint kBaseColorTextureUnit = 1;   // usampler2D baseColorTexture
 constexpr GLuint kMeshIndicesBinding = 0;     // storage buffers of lit_flat.vert
 constexpr GLuint kMeshPositionsBinding = 1;
 constexpr GLuint kMeshTexcoordsBinding = 2;
+constexpr GLuint kMeshColorsBinding = 3;
+constexpr GLint kMeshStorageBuffers = 4;
 
 // The vertex and fragment shader of each shading mode, indexed by ShadingMode.
 constexpr std::array<std::string_view, 2> kLitStages[] = {
@@ -37,8 +39,8 @@ using Clock = std::chrono::steady_clock;
 // visits adds one or two; past this the cache starts over.
 constexpr std::size_t kMaxLitPrograms = 32;
 
-std::string litProgramKey(const FrameInputs& frame, bool textured) {
-  return std::to_string(static_cast<int>(frame.shading)) + "\n" + litShaderDefines(frame, textured);
+std::string litProgramKey(const FrameInputs& frame, DrawVariant variant) {
+  return std::to_string(static_cast<int>(frame.shading)) + "\n" + litShaderDefines(frame, variant);
 }
 
 double millisecondsSince(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
@@ -123,16 +125,12 @@ std::vector<std::uint32_t> GlFrameRenderer::drawTriangleIds(const FrameInputs& f
   gl_.glClearNamedFramebufferfv(idTarget_.framebuffer(), GL_DEPTH, 0, &farDepth);
   gl_.glEnable(GL_DEPTH_TEST);
   gl_.glDepthFunc(GL_LESS);
-  if (frame.cullBackFaces) {
-    gl_.glEnable(GL_CULL_FACE);
-    gl_.glCullFace(GL_BACK);
-  } else {
-    gl_.glDisable(GL_CULL_FACE);
-  }
+  gl_.glCullFace(GL_BACK);
   gl_.glUseProgram(program);
   GLuint first = 0;
   for (const FrameInstance& instance : frame.instances) {
     const MeshBuffers& mesh = scene_.mesh(instance.mesh);
+    setCulling(instance.cullBackFaces);
     gl_.glProgramUniformMatrix4fv(program, clipFromModel, 1, GL_FALSE, glm::value_ptr(instance.clipFromModel));
     gl_.glProgramUniform1ui(program, firstTriangle, first);
     if (mesh.indexCount > 0) {
@@ -150,26 +148,33 @@ std::vector<std::uint32_t> GlFrameRenderer::drawTriangleIds(const FrameInputs& f
   return ids;
 }
 
-bool GlFrameRenderer::isTextured(const FrameInputs& frame, const FrameInstance& instance) const {
-  return frame.materials[static_cast<std::size_t>(instance.material)].baseColorTexture >= 0 && scene_.mesh(instance.mesh).texcoords;
+DrawVariant GlFrameRenderer::drawVariant(const FrameInputs& frame, const FrameInstance& instance) const {
+  const MeshBuffers& mesh = scene_.mesh(instance.mesh);
+  return {frame.materials[static_cast<std::size_t>(instance.material)].baseColorTexture >= 0 && mesh.texcoords, static_cast<bool>(mesh.colors)};
+}
+
+void GlFrameRenderer::setCulling(bool cull) {
+  if (cull) gl_.glEnable(GL_CULL_FACE);
+  else gl_.glDisable(GL_CULL_FACE);
 }
 
 bool GlFrameRenderer::preparePrograms(const FrameInputs& frame) {
   bool compiled = false;
   const bool shadows = frame.shadowLayerCount > 0;
-  bool variants[2] = {false, false};  // [textured]: some draw of the frame needs it
+  bool needed[DrawVariant::kCount] = {};  // some draw of the frame needs the variant
   for (const FrameInstance& instance : frame.instances)
-    if (scene_.mesh(instance.mesh).indexCount > 0) variants[isTextured(frame, instance) ? 1 : 0] = true;
-  if (litPrograms_.size() + 2 > kMaxLitPrograms) litPrograms_.clear();
-  for (const bool textured : {false, true}) {
-    if (!variants[textured ? 1 : 0]) continue;
-    const std::string key = litProgramKey(frame, textured);
+    if (scene_.mesh(instance.mesh).indexCount > 0) needed[drawVariant(frame, instance).index()] = true;
+  if (litPrograms_.size() + DrawVariant::kCount > kMaxLitPrograms) litPrograms_.clear();
+  for (int v = 0; v < DrawVariant::kCount; ++v) {
+    if (!needed[v]) continue;
+    const DrawVariant variant = DrawVariant::of(v);
+    const std::string key = litProgramKey(frame, variant);
     if (litPrograms_.count(key)) continue;
-    if (frame.shading == ShadingMode::Flat && getInteger(gl_, GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS) < 3)
-      throw Error("OpenGL: flat shading reads the mesh from 3 storage buffers in the vertex shader; this driver allows " +
-                  std::to_string(getInteger(gl_, GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS)));
+    if (frame.shading == ShadingMode::Flat && getInteger(gl_, GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS) < kMeshStorageBuffers)
+      throw Error("OpenGL: flat shading reads the mesh from " + std::to_string(kMeshStorageBuffers) +
+                  " storage buffers in the vertex shader; this driver allows " + std::to_string(getInteger(gl_, GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS)));
     const auto& stages = kLitStages[static_cast<std::size_t>(frame.shading)];
-    ShaderProgram program = buildProgram(gl_, {stages[0], stages[1]}, litShaderDefines(frame, textured));
+    ShaderProgram program = buildProgram(gl_, {stages[0], stages[1]}, litShaderDefines(frame, variant));
     const auto at = [&](const char* name) { return uniformLocation(gl_, program, name); };
     litPrograms_.emplace(key, LitProgram{.clipFromModel = at("clipFromModel"),
                                          .worldFromModel = at("worldFromModel"),
@@ -179,6 +184,7 @@ bool GlFrameRenderer::preparePrograms(const FrameInputs& frame) {
                                          .kd = at("material.kd"),
                                          .ks = at("material.ks"),
                                          .shininess = at("material.shininess"),
+                                         .metallic = at("material.metallic"),
                                          .baseColorFactor = at("baseColorFactor"),
                                          .program = std::move(program)});
     compiled = true;
@@ -243,24 +249,23 @@ void GlFrameRenderer::litPass(const FrameInputs& frame) {
 
   gl_.glEnable(GL_DEPTH_TEST);
   gl_.glDepthFunc(GL_LESS);
-  if (frame.cullBackFaces) {
-    gl_.glEnable(GL_CULL_FACE);
-    gl_.glCullFace(GL_BACK);
-  }
+  gl_.glCullFace(GL_BACK);
   gl_.glBindTextureUnit(kShadowMapsUnit, frame.shadowLayerCount > 0 ? shadowMaps_.texture() : 0);
-  const LitProgram* programs[2] = {litProgram(frame, false), litProgram(frame, true)};  // [textured]
+  const LitProgram* programs[DrawVariant::kCount];
+  for (int v = 0; v < DrawVariant::kCount; ++v) programs[v] = litProgram(frame, DrawVariant::of(v));
   GLuint current = 0;
   for (const FrameInstance& instance : frame.instances) {
     if (scene_.mesh(instance.mesh).indexCount == 0) continue;
-    const LitProgram* lit = programs[isTextured(frame, instance) ? 1 : 0];
+    const LitProgram* lit = programs[drawVariant(frame, instance).index()];
     if (!lit) throw Error("OpenGL backend: no lit program was prepared for this frame");
     if (lit->program.id() != current) gl_.glUseProgram(current = lit->program.id());
+    setCulling(instance.cullBackFaces);
     drawInstance(*lit, frame, instance, frame.shading == ShadingMode::Flat);
   }
 }
 
-const GlFrameRenderer::LitProgram* GlFrameRenderer::litProgram(const FrameInputs& frame, bool textured) const {
-  const auto found = litPrograms_.find(litProgramKey(frame, textured));
+const GlFrameRenderer::LitProgram* GlFrameRenderer::litProgram(const FrameInputs& frame, DrawVariant variant) const {
+  const auto found = litPrograms_.find(litProgramKey(frame, variant));
   return found == litPrograms_.end() ? nullptr : &found->second;
 }
 
@@ -268,7 +273,8 @@ void GlFrameRenderer::drawInstance(const LitProgram& lit, const FrameInputs& fra
   const MeshBuffers& mesh = scene_.mesh(instance.mesh);
   if (mesh.indexCount == 0) return;
   const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
-  const bool textured = isTextured(frame, instance);
+  const DrawVariant variant = drawVariant(frame, instance);
+  const bool textured = variant.textured;
 
   const GLuint program = lit.program.id();
   gl_.glProgramUniformMatrix4fv(program, lit.clipFromModel, 1, GL_FALSE, glm::value_ptr(instance.clipFromModel));
@@ -279,6 +285,7 @@ void GlFrameRenderer::drawInstance(const LitProgram& lit, const FrameInputs& fra
   gl_.glProgramUniform1f(program, lit.kd, material.kd);
   gl_.glProgramUniform1f(program, lit.ks, material.ks);
   gl_.glProgramUniform1f(program, lit.shininess, material.shininess);
+  gl_.glProgramUniform1f(program, lit.metallic, material.metallic);
   gl_.glProgramUniform3fv(program, lit.baseColorFactor, 1, glm::value_ptr(material.baseColor));
   gl_.glBindTextureUnit(kBaseColorTextureUnit, textured ? scene_.texture(material.baseColorTexture) : 0);
 
@@ -287,6 +294,7 @@ void GlFrameRenderer::drawInstance(const LitProgram& lit, const FrameInputs& fra
     gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshPositionsBinding, mesh.positions.id());
     // Read only when textured; something valid is bound either way.
     gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshTexcoordsBinding, textured ? mesh.texcoords.id() : mesh.positions.id());
+    gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshColorsBinding, variant.colored ? mesh.colors.id() : mesh.positions.id());
     gl_.glBindVertexArray(emptyVertexArray_.id());
     gl_.glDrawArrays(GL_TRIANGLES, 0, mesh.indexCount);
   } else {

@@ -17,6 +17,7 @@
 #include "gl/render_target.h"
 #include "gl/scene_buffers.h"
 #include "gl/shader_program.h"
+#include "gl/shader_variant.h"
 #include "render/renderer.h"
 
 namespace facet::gl {
@@ -56,7 +57,7 @@ class GlFrameRenderer {
   // the locations are looked up before the program is moved in.
   struct LitProgram {
     GLint clipFromModel, worldFromModel, normalMatrix;
-    GLint emissive, ka, kd, ks, shininess;
+    GLint emissive, ka, kd, ks, shininess, metallic;
     GLint baseColorFactor;
     ShaderProgram program;
   };
@@ -67,10 +68,12 @@ class GlFrameRenderer {
 
   // Compiles what the frame needs and has not been compiled yet; true when it compiled anything.
   bool preparePrograms(const FrameInputs& frame);
-  // The lit program of `frame` for draws with or without a base colour texture; null when not prepared.
-  const LitProgram* litProgram(const FrameInputs& frame, bool textured) const;
-  // Whether the instance's draw samples a base colour texture.
-  bool isTextured(const FrameInputs& frame, const FrameInstance& instance) const;
+  // The lit program of `frame` for draws of `variant`; null when not prepared.
+  const LitProgram* litProgram(const FrameInputs& frame, DrawVariant variant) const;
+  // What the instance's draw reads: a base colour texture, vertex colours.
+  DrawVariant drawVariant(const FrameInputs& frame, const FrameInstance& instance) const;
+  // Back-face culling as the instance asks (FrameInstance::cullBackFaces).
+  void setCulling(bool cull);
   void shadowPass(const FrameInputs& frame);
   void litPass(const FrameInputs& frame);
   void drawInstance(const LitProgram& lit, const FrameInputs& frame, const FrameInstance& instance, bool flat);

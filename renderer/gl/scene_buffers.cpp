@@ -40,6 +40,10 @@ MeshBuffers uploadMesh(const GlFunctions& gl, const Mesh& mesh) {
     buffers.texcoords = uploadBuffer(gl, mesh.texcoords);
     addAttribute(gl, vao, kTexcoordAttribute, buffers.texcoords, 2);
   }
+  if (mesh.colors.size() == mesh.positions.size()) {
+    buffers.colors = uploadBuffer(gl, mesh.colors);
+    addAttribute(gl, vao, kColorAttribute, buffers.colors, 4);
+  }
   gl.glVertexArrayElementBuffer(vao, buffers.indices.id());
   return buffers;
 }
@@ -59,7 +63,8 @@ GlObject uploadTexture(const GlFunctions& gl, const Image& image) {
 }  // namespace
 
 SceneBuffers::SceneBuffers(const GlFunctions& gl, const Scene& scene) {
-  static_assert(sizeof(glm::vec3) == 3 * sizeof(float) && sizeof(glm::vec2) == 2 * sizeof(float) && sizeof(Rgba8) == 4);
+  static_assert(sizeof(glm::vec4) == 4 * sizeof(float) && sizeof(glm::vec3) == 3 * sizeof(float) && sizeof(glm::vec2) == 2 * sizeof(float) &&
+                sizeof(Rgba8) == 4);
   meshes_.reserve(scene.meshes.size());
   for (const Mesh& mesh : scene.meshes) meshes_.push_back(uploadMesh(gl, mesh));
   textures_.reserve(scene.textures.size());

@@ -2,7 +2,7 @@
 // Lit-pass programs specialized per frame: what the shaders would otherwise
 // decide per pixel from uniforms (light count and kinds, which lights have
 // shadow maps, the specular model, the PCF radius, whether the draw is
-// textured) becomes #defines compiled in. llvmpipe evaluates both sides of
+// textured or has vertex colours) becomes #defines compiled in. llvmpipe evaluates both sides of
 // every `if` with per-pixel masks, so a texture path or a shadow lookup that
 // a uniform turns off still costs its full price on every pixel; compiled
 // out, it costs nothing. Only dead branches go: the arithmetic of the path
@@ -13,10 +13,18 @@
 
 namespace facet::gl {
 
+// What one draw of the lit pass reads besides the base colour factor.
+struct DrawVariant {
+  bool textured = false;  // a base colour texture, through TEXCOORD_0
+  bool colored = false;   // COLOR_0
+  static constexpr int kCount = 4;
+  int index() const { return (textured ? 1 : 0) + (colored ? 2 : 0); }
+  static DrawVariant of(int index) { return {(index & 1) != 0, (index & 2) != 0}; }
+};
+
 // The #define lines (one per macro, each ending in a newline) of the lit
-// programs for `frame`, for draws with (textured) or without a base colour
-// texture. Equal strings mean the same program, so the text is also the key
-// of the renderer's program cache.
-std::string litShaderDefines(const FrameInputs& frame, bool textured);
+// programs for `frame`, for draws of `variant`. Equal strings mean the same
+// program, so the text is also the key of the renderer's program cache.
+std::string litShaderDefines(const FrameInputs& frame, DrawVariant variant);
 
 }  // namespace facet::gl

@@ -23,6 +23,8 @@ void checkMesh(const Scene& scene, std::size_t m) {
   if (!mesh.texcoords.empty() && mesh.texcoords.size() != n)
     throw Error(meshName(scene, m) + ": " + std::to_string(mesh.texcoords.size()) + " texture coordinates for " + std::to_string(n) +
                 " positions");
+  if (!mesh.colors.empty() && mesh.colors.size() != n)
+    throw Error(meshName(scene, m) + ": " + std::to_string(mesh.colors.size()) + " vertex colours for " + std::to_string(n) + " positions");
   if (n >= kMaxFrameVertices) throw Error(meshName(scene, m) + ": " + std::to_string(n) + " vertices, more than a frame holds");
   for (std::size_t i = 0; i < mesh.indices.size(); ++i)
     if (mesh.indices[i] >= n)

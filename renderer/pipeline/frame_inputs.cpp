@@ -55,6 +55,7 @@ FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings)
     fi.clipFromModel = f.clipFromWorld * instance.worldFromModel;
     const int material = scene.meshes[static_cast<std::size_t>(instance.mesh)].material;
     fi.material = material >= 0 && material < defaultMaterial ? material : defaultMaterial;
+    fi.cullBackFaces = settings.cullBackFaces && !f.materials[static_cast<std::size_t>(fi.material)].doubleSided;
     f.instances.push_back(fi);
   }
 

@@ -28,6 +28,7 @@ struct FrameInstance {
   glm::mat3 normalMatrix{1.0f};   // (TM^T)^-1, upper 3x3
   glm::mat4 clipFromModel{1.0f};  // PM·EM·TM
   int material = 0;               // index into FrameInputs::materials (never -1)
+  bool cullBackFaces = true;      // culling is on and the material is single-sided
 };
 
 struct FrameLight {
@@ -60,7 +61,7 @@ struct FrameInputs {
   float ambient = 0;              // I_a
   ShadingMode shading = ShadingMode::Phong;
   SpecularModel specular = SpecularModel::BlinnPhong;
-  bool cullBackFaces = true;
+  bool cullBackFaces = true;      // the settings' switch; each instance says whether it is culled
   ShadowSettings shadows;
   int shadowLayerCount = 0;       // S×S depth maps over all lights: one per face
   glm::vec3 background{0.0f};    // linear RGB

@@ -8,7 +8,7 @@ CourseMaterial courseMaterial(const Material& material, const MaterialOverrides&
   const float m = std::clamp(material.metallic, 0.0f, 1.0f);
   const float r = std::clamp(material.roughness, 0.0f, 1.0f);
   const float alpha = r * r;
-  const float n = alpha > 0.0f ? std::clamp(2.0f / (alpha * alpha) - 2.0f, 1.0f, 1024.0f) : 1024.0f;
+  const float n = alpha > 0.0f ? std::clamp(2.0f / (alpha * alpha) - 2.0f, kMinDerivedShininess, 1024.0f) : 1024.0f;
   const float f0 = 0.04f * (1.0f - m) + 0.9f * m;
   CourseMaterial out;
   out.baseColor = glm::vec3(material.baseColor);
@@ -18,6 +18,7 @@ CourseMaterial courseMaterial(const Material& material, const MaterialOverrides&
   out.ka = overrides.ka.value_or(1.0f - 0.6f * m);
   out.ks = overrides.ks.value_or(std::min(1.0f, f0 * (n + 8.0f) / 8.0f));
   out.shininess = overrides.shininess.value_or(n);
+  out.metallic = m;
   out.doubleSided = material.doubleSided;
   return out;
 }

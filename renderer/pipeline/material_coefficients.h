@@ -7,23 +7,33 @@
 namespace facet {
 
 // A material in the course's terms: the coefficients of
-//   I = k_e + k_a·I_a·O_d + Σ S·f_att·(k_d·I_p·max(N·L, 0)·O_d + k_s·I_p·spec), spec = (·)^n
+//   I = k_e + k_a·I_a·O_d + Σ S·f_att·(k_d·I_p·max(N·L, 0)·O_d + k_s·I_p·spec·O_s), spec = (·)^n
+// with the specular colour O_s = (1 - m) + m·O_d: the light's colour for a
+// dielectric, the base colour for a metal.
 struct CourseMaterial {
   glm::vec3 baseColor{1.0f};  // O_d, linear RGB (multiplied by the texture when there is one)
   int baseColorTexture = -1;  // index into Scene::textures, -1 = none
   glm::vec3 emissive{0.0f};   // k_e, linear RGB
   float ka = 0, kd = 0, ks = 0;
   float shininess = 1;        // n
+  float metallic = 0;         // m in O_s = (1 - m) + m·O_d, in [0, 1]
   bool doubleSided = false;
 };
 
-// The one documented mapping from glTF metallic m and roughness r:
-//   α = r²,  n = clamp(2/α² - 2, 1, 1024)      (Blinn-Phong exponent matching
+// The smallest derived exponent: (cos θ)^8 falls to half at θ = 23.6°, a
+// lobe well inside the diffuse one (cos θ is half at 60°), so a rough
+// material still has a highlight rather than a second, white diffuse term.
+inline constexpr float kMinDerivedShininess = 8.0f;
+
+// The one documented mapping from glTF metallic m and roughness r
+// (renderer/PIPELINE.md, section 5):
+//   α = r²,  n = clamp(2/α² - 2, 8, 1024)      (Blinn-Phong exponent matching
 //                                               a Beckmann lobe of roughness α)
 //   F0 = 0.04·(1 - m) + 0.9·m                  (dielectric vs. metal reflectance)
 //   k_s = min(1, F0·(n + 8)/8)                 (energy-normalized peak of the lobe)
-//   k_d = 1 - 0.6·m,  k_a = k_d                (metals keep some coloured diffuse,
-//                                               since the course's specular is white)
+//   k_d = 1 - 0.6·m,  k_a = k_d                (punctual lights alone leave a metal
+//                                               black outside its highlights)
+//   O_s = (1 - m) + m·O_d                      (metals tint their highlights)
 // Any of k_a, k_d, k_s, n set in `overrides` replaces the derived value.
 CourseMaterial courseMaterial(const Material& material, const MaterialOverrides& overrides);
 

@@ -237,6 +237,20 @@ std::vector<glm::vec2> readVec2(const tinygltf::Model& model, int accessor) {
                             [](const ElementSpan& span, std::uint64_t e) { return glm::vec2(component(span, e, 0), component(span, e, 1)); });
 }
 
+std::vector<glm::vec4> readColors(const tinygltf::Model& model, int accessor) {
+  const int type = accessor >= 0 && static_cast<std::size_t>(accessor) < model.accessors.size() ? model.accessors[static_cast<std::size_t>(accessor)].type : 0;
+  const ElementSpan s = locate(model, accessor, type == TINYGLTF_TYPE_VEC3 ? 3 : 4);
+  const bool floatOrUnorm = s.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ||
+                            (s.normalized && (s.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                              s.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT));
+  if (!floatOrUnorm)
+    throw AccessorError{name(accessor) + ": colours must be FLOAT or normalized UNSIGNED_BYTE/SHORT (MESH_PRIMITIVE_ATTRIBUTES_ACCESSOR_INVALID_FORMAT)"};
+  const bool rgb = type == TINYGLTF_TYPE_VEC3;
+  return readAll<glm::vec4>(model, accessor, s, [rgb](const ElementSpan& span, std::uint64_t e) {
+    return glm::vec4(component(span, e, 0), component(span, e, 1), component(span, e, 2), rgb ? 1.0f : component(span, e, 3));
+  });
+}
+
 std::vector<std::uint32_t> readIndices(const tinygltf::Model& model, int accessor) {
   const ElementSpan s = locate(model, accessor, 1);
   if (s.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && s.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&

@@ -8,6 +8,7 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 namespace tinygltf {
 class Model;
@@ -33,6 +34,9 @@ std::uint64_t accessorCount(const tinygltf::Model& model, int accessor);
 std::vector<glm::vec3> readVec3(const tinygltf::Model& model, int accessor);
 // VEC2 of float, or normalized unsigned byte/short (TEXCOORD_n).
 std::vector<glm::vec2> readVec2(const tinygltf::Model& model, int accessor);
+// VEC3 or VEC4 of float, or normalized unsigned byte/short (COLOR_n), as
+// linear RGBA: VEC3 gets alpha 1.
+std::vector<glm::vec4> readColors(const tinygltf::Model& model, int accessor);
 // SCALAR unsigned byte/short/int (indices).
 std::vector<std::uint32_t> readIndices(const tinygltf::Model& model, int accessor);
 

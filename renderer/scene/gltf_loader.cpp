@@ -338,6 +338,7 @@ void pricePrimitive(const tinygltf::Model& model, const tinygltf::Primitive& pri
   const std::uint64_t indices = prim.indices >= 0 ? accessorCount(model, prim.indices) : vertices;
   std::uint64_t bytes = vertices * (sizeof(glm::vec3) + sizeof(glm::vec3)) + indices * sizeof(std::uint32_t);
   if (prim.attributes.count("TEXCOORD_0")) bytes += vertices * sizeof(glm::vec2);
+  if (prim.attributes.count("COLOR_0")) bytes += vertices * sizeof(glm::vec4);
   if (mode != TINYGLTF_MODE_TRIANGLES && indices > 2) bytes += 3 * (indices - 2) * sizeof(std::uint32_t);
   budget.charge(bytes, name + ": " + std::to_string(vertices) + " vertices (" + at("accessors", static_cast<std::size_t>(positionAccessor)) +
                            ") and " + std::to_string(indices) + " indices");
@@ -446,6 +447,28 @@ bool convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& p
       } catch (const AccessorError& e) {
         warnings.push_back(name + ": TEXCOORD_0 " + e.message + "; ignored");
         mesh.texcoords.clear();
+      }
+    }
+
+    if (const auto color = prim.attributes.find("COLOR_0"); color != prim.attributes.end()) {
+      try {
+        mesh.colors = readColors(model, color->second);
+        if (mesh.colors.size() != vertexCount) {
+          warnings.push_back(name + ": COLOR_0 count differs from POSITION (MESH_PRIMITIVE_UNEQUAL_ACCESSOR_COUNT); ignored");
+          mesh.colors.clear();
+        }
+        // glTF holds colours to [0, 1]; one outside (or NaN, taken as 1) is clamped.
+        std::size_t outside = 0;
+        for (glm::vec4& c : mesh.colors)
+          for (int k = 0; k < 4; ++k)
+            if (!(c[k] >= 0.0f && c[k] <= 1.0f)) {
+              ++outside;
+              c[k] = c[k] < 0.0f ? 0.0f : 1.0f;
+            }
+        if (outside) warnings.push_back(name + ": COLOR_0 has " + countOf(outside, "component") + " outside [0, 1] (ACCESSOR_INVALID_FLOAT); clamped");
+      } catch (const AccessorError& e) {
+        warnings.push_back(name + ": COLOR_0 " + e.message + "; ignored");
+        mesh.colors.clear();
       }
     }
   } catch (const AccessorError& e) {

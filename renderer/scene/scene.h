@@ -22,6 +22,7 @@ struct Mesh {
   std::vector<glm::vec3> positions;   // model space
   std::vector<glm::vec3> normals;     // model space, unit length, one per position
   std::vector<glm::vec2> texcoords;   // TEXCOORD_0, empty when the mesh has none
+  std::vector<glm::vec4> colors;      // COLOR_0, linear RGBA, empty when the mesh has none
   std::vector<std::uint32_t> indices; // three per triangle, counter-clockwise = front
   int material = -1;                  // index into Scene::materials, -1 = the default material
 

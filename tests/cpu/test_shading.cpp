@@ -8,6 +8,7 @@
 #include <glm/trigonometric.hpp>
 
 #include "cpu_test_scenes.h"
+#include "pipeline/material_coefficients.h"
 
 using namespace facet;
 using namespace facet::test;
@@ -31,10 +32,11 @@ RenderSettings handSettings(ShadingMode mode, SpecularModel specular, const Ligh
   return s;
 }
 
-// I = k_a·I_a·O_d + f_att·(k_d·I_p·max(N·L,0)·O_d + k_s·I_p·spec), N = +y, V = +y (parallel, eye above).
-glm::vec3 byHand(glm::vec3 P, const Light& light, SpecularModel model) {
+// I = k_a·I_a·O_d + f_att·(k_d·I_p·max(N·L,0)·O_d + k_s·I_p·spec·O_s), O_s = (1 - m) + m·O_d,
+// N = +y, V = +y (parallel, eye above).
+glm::vec3 byHand(glm::vec3 P, const Light& light, SpecularModel model, float metallic = 0.0f, glm::vec3 base = kBase) {
   const glm::vec3 N{0, 1, 0}, V{0, 1, 0};
-  glm::vec3 I = kKa * kIa * kBase;
+  glm::vec3 I = kKa * kIa * base;
   glm::vec3 L;
   float fAtt = 1.0f;
   if (light.kind == LightKind::Directional) {
@@ -56,7 +58,8 @@ glm::vec3 byHand(glm::vec3 P, const Light& light, SpecularModel model) {
     spec = std::pow(std::max(glm::dot(N, glm::normalize(L + V)), 0.0f), kN);
   }
   const glm::vec3 Ip = light.color * light.intensity;
-  return I + fAtt * (kKd * Ip * NdotL * kBase + kKs * Ip * spec);
+  const glm::vec3 Os = (1.0f - metallic) + metallic * base;
+  return I + fAtt * (kKd * Ip * NdotL * base + kKs * Ip * spec * Os);
 }
 
 void checkPixel(const Image& image, int px, int py, glm::vec3 linear) {
@@ -170,4 +173,115 @@ TEST_CASE("Phong and Gouraud differ where the highlight falls between vertices")
   const Image gouraud = renderCpu(groundScene(1, kBase), handSettings(ShadingMode::Gouraud, SpecularModel::Phong, light));
   const int px = static_cast<int>((0.3f + 2.0f) / 4.0f * kSize), py = static_cast<int>((2.0f - 0.2f) / 4.0f * kSize);
   CHECK(phong.at(px, py).g > gouraud.at(px, py).g + 20);
+}
+
+TEST_CASE("materials: a metal's highlight has its base colour, a dielectric's the light's (O_s = (1 - m) + m·O_d)") {
+  Light light = pointLight();
+  light.position = {0.3f, 0.8f, 0.2f};  // the highlight in the image
+  for (float m : {0.0f, 0.5f, 1.0f}) {
+    CAPTURE(m);
+    Scene scene = groundScene(4, kBase);
+    scene.materials[0].metallic = m;
+    const Image image = renderCpu(scene, handSettings(ShadingMode::Phong, SpecularModel::BlinnPhong, light));
+    for (const auto& p : kProbes) checkPixel(image, p[0], p[1], byHand(worldAtPixel(p[0], p[1], kSize), light, SpecularModel::BlinnPhong, m));
+  }
+  // Under the highlight, the metal is tinted: its blue channel (O_d.b = 0.2) falls far below the dielectric's.
+  Scene dielectric = groundScene(4, kBase), metal = groundScene(4, kBase);
+  metal.materials[0].metallic = 1.0f;
+  const int px = static_cast<int>((0.3f + 2.0f) / 4.0f * kSize), py = static_cast<int>((2.0f - 0.2f) / 4.0f * kSize);
+  const Rgba8 white = renderCpu(dielectric, handSettings(ShadingMode::Phong, SpecularModel::BlinnPhong, light)).at(px, py);
+  const Rgba8 tinted = renderCpu(metal, handSettings(ShadingMode::Phong, SpecularModel::BlinnPhong, light)).at(px, py);
+  CHECK(white.b > tinted.b + 40);
+  CHECK(white.r == tinted.r);  // O_d.r = 0.8 and the light's 1.0 both saturate red there
+}
+
+TEST_CASE("materials: glTF's defaults (metallic 1, roughness 1) give a red cube red, with n held to its minimum") {
+  Material red;
+  red.baseColor = {0.8f, 0.05f, 0.05f, 1.0f};  // metallic and roughness left at glTF's 1
+  const CourseMaterial course = courseMaterial(red, {});
+  CHECK(course.shininess == kMinDerivedShininess);
+  CHECK(course.metallic == 1.0f);
+  Material smooth = red;
+  smooth.roughness = 0.2f;  // 2/α² - 2 = 1248, past the top
+  CHECK(courseMaterial(smooth, {}).shininess == 1024.0f);
+  // Rendered with its own coefficients, every lit pixel of the plane keeps red well above green and blue.
+  Scene scene = groundScene(4, glm::vec3(red.baseColor));
+  scene.materials[0] = red;
+  RenderSettings s = topDownSettings(kSize);
+  Light light = pointLight();
+  light.position = {0.0f, 1.0f, 0.0f};
+  s.lights = {light};
+  s.shading = ShadingMode::Phong;
+  const Image image = renderCpu(scene, s);
+  int lit = 0;
+  for (int py = 0; py < kSize; ++py)
+    for (int px = 0; px < kSize; ++px) {
+      const Rgba8 c = image.at(px, py);
+      if (c.r < 30) continue;
+      ++lit;
+      CAPTURE(px);
+      CAPTURE(py);
+      REQUIRE(c.g * 3 < c.r);
+      REQUIRE(c.b * 3 < c.r);
+    }
+  CHECK(lit > kSize * kSize / 2);
+}
+
+TEST_CASE("vertex colours (COLOR_0) multiply the base colour in every shading mode") {
+  const Light light = pointLight();
+  const glm::vec3 vertexColor{0.5f, 1.0f, 0.25f};
+  for (ShadingMode mode : {ShadingMode::Phong, ShadingMode::Gouraud, ShadingMode::Flat}) {
+    CAPTURE(static_cast<int>(mode));
+    Scene plain = groundScene(1, kBase * vertexColor);
+    Scene colored = groundScene(1, kBase);
+    colored.meshes[0].colors.assign(colored.meshes[0].positions.size(), glm::vec4(vertexColor, 1.0f));
+    const Image want = renderCpu(plain, handSettings(mode, SpecularModel::BlinnPhong, light));
+    const Image got = renderCpu(colored, handSettings(mode, SpecularModel::BlinnPhong, light));
+    // The interpolated colour is c·(p·(1/p)), within an ulp of c: at most one level apart.
+    int differing = 0;
+    for (int py = 0; py < kSize; ++py)
+      for (int px = 0; px < kSize; ++px) {
+        const Rgba8 a = want.at(px, py), b = got.at(px, py);
+        REQUIRE(std::abs(a.r - b.r) <= 1);
+        REQUIRE(std::abs(a.g - b.g) <= 1);
+        REQUIRE(std::abs(a.b - b.b) <= 1);
+        differing += !(a == b);
+      }
+    CHECK(differing < kSize * kSize / 50);
+  }
+  // Varying colours vary: red at x = -2, blue at x = +2.
+  Scene ramp = groundScene(1, glm::vec3(1.0f));
+  for (const glm::vec3& p : ramp.meshes[0].positions)
+    ramp.meshes[0].colors.push_back(p.x < 0.0f ? glm::vec4(1, 0, 0, 1) : glm::vec4(0, 0, 1, 1));
+  const Image image = renderCpu(ramp, handSettings(ShadingMode::Phong, SpecularModel::BlinnPhong, light));
+  CHECK(image.at(3, 32).r > image.at(3, 32).b + 50);
+  CHECK(image.at(60, 32).b > image.at(60, 32).r + 50);
+}
+
+TEST_CASE("doubleSided: with culling on, a single-sided material's back faces are culled and a double-sided one's lit from behind") {
+  Light below = pointLight();
+  below.position = {0.2f, -1.5f, 0.1f};  // lights the plane's back side
+  RenderSettings s = handSettings(ShadingMode::Phong, SpecularModel::BlinnPhong, below);
+  s.camera.eye = {0, -10, 0};  // from below: the plane shows its back
+  s.camera.up = {0, 0, 1};
+  s.background = {0, 0, 0};
+  for (bool doubleSided : {false, true})
+    for (bool culling : {true, false})
+      for (ShadingMode mode : {ShadingMode::Phong, ShadingMode::Gouraud, ShadingMode::Flat}) {
+        CAPTURE(doubleSided);
+        CAPTURE(culling);
+        CAPTURE(static_cast<int>(mode));
+        Scene scene = groundScene(4, kBase);
+        scene.materials[0].doubleSided = doubleSided;
+        s.cullBackFaces = culling;
+        s.shading = mode;
+        const Image image = renderCpu(scene, s);
+        const Rgba8 centre = image.at(32, 32);
+        if (culling && !doubleSided) {
+          CHECK(centre == Rgba8{0, 0, 0, 255});
+        } else {
+          // Two-sided lighting: N = -y faces the light below, so the plane is lit, not ambient-dark.
+          CHECK(centre.r > 100);
+        }
+      }
 }

@@ -50,7 +50,7 @@ TEST_CASE("the driver lays the Frame block out as FrameBlock: every offset, the 
   test::GlHarness harness;
   const GlFunctions& gl = harness.gl;
   // The program that reads the most of the block; std140 keeps every member active anyway.
-  const ShaderProgram program = buildProgram(gl, {"lit_phong.vert", "lit_phong.frag"}, litShaderDefines(buildFrameInputs(makeDefaultScene(), RenderSettings{}), false));
+  const ShaderProgram program = buildProgram(gl, {"lit_phong.vert", "lit_phong.frag"}, litShaderDefines(buildFrameInputs(makeDefaultScene(), RenderSettings{}), {}));
   const GLuint block = gl.glGetUniformBlockIndex(program.id(), "Frame");
   REQUIRE(block != GL_INVALID_INDEX);
   GLint size = 0;

@@ -56,7 +56,7 @@ std::vector<glm::vec4> evaluate(const std::string& expression, const std::vector
                             "void main() {\n  vec4 a = texelFetch(inputA, ivec2(gl_FragCoord.xy), 0), b = texelFetch(inputB, ivec2(gl_FragCoord.xy), 0);\n"
                             "  value = " + expression + ";\n}\n";
   const FrameInputs frame = buildFrameInputs(makeDefaultScene(), RenderSettings{});
-  const gl::ShaderProgram program = gl::buildProgram(gl, {"background.vert", "probe.frag"}, gl::litShaderDefines(frame, false), [&](std::string_view name) {
+  const gl::ShaderProgram program = gl::buildProgram(gl, {"background.vert", "probe.frag"}, gl::litShaderDefines(frame, {}), [&](std::string_view name) {
     return name == "probe.frag" ? std::optional<std::string_view>(probe) : gl::findEmbeddedShaderFile(name);
   });
   gl.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());

@@ -75,9 +75,9 @@ TEST_CASE("every shader file is embedded, and every program of the backend compi
   }
   for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong})
     for (const RenderSettings& settings : lightSets)
-      for (bool textured : {false, true}) {
+      for (int variant = 0; variant < DrawVariant::kCount; ++variant) {
         const std::string name(kShadingModeNames[static_cast<std::size_t>(mode)]);
-        const std::string defines = litShaderDefines(buildFrameInputs(scene, settings), textured);
+        const std::string defines = litShaderDefines(buildFrameInputs(scene, settings), DrawVariant::of(variant));
         INFO(name, "\n", defines);
         CHECK_NOTHROW(buildProgram(harness.gl, {"lit_" + name + ".vert", "lit_" + name + ".frag"}, defines));
       }

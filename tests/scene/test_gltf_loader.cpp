@@ -587,3 +587,19 @@ TEST_CASE("glTF bad input: a bounding box beyond 1.8e19 keeps a finite radius") 
   b.include(glm::vec3(-3.3e38f, -3.3e38f, 0.0f));
   CHECK(std::isinf(b.radius()));  // beyond float: said so, not wrapped
 }
+
+TEST_CASE("COLOR_0: float RGB, normalized unsigned byte RGBA and unsigned short RGBA read as the same linear colours") {
+  const Scene scene = loadGltf(std::string(FACET_TEST_DATA) + "/../../assets/scenes/vertex_colors.gltf");
+  CHECK(scene.warnings.empty());
+  int coloured = 0;
+  for (const Mesh& mesh : scene.meshes) {
+    if (mesh.colors.empty()) continue;
+    ++coloured;
+    CAPTURE(mesh.name);
+    REQUIRE(mesh.colors.size() == 24);
+    CHECK(mesh.colors[0] == glm::vec4(1, 0, 0, 1));   // the first face red: 1.0, 255/255, 65535/65535
+    CHECK(mesh.colors[4] == glm::vec4(0, 1, 0, 1));   // the second green
+    CHECK(mesh.colors[23] == glm::vec4(1, 0, 1, 1));  // the last magenta
+  }
+  CHECK(coloured == 3);
+}

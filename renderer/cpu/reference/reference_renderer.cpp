@@ -111,17 +111,22 @@ ShadowMaps shadowPass(const Scene& scene, const FrameInputs& frame) {
 
 // Pass 2: every triangle into the image, shaded by its mode, with the
 // varyings of varyings.h (Phong: position, normal; Gouraud: the
-// illumination of both sides; all: texture coordinates).
+// illumination of both sides; all: texture coordinates and vertex colour).
 void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, Target& target) {
-  const int count = varyingLayout(frame.shading).count, uv = varyingLayout(frame.shading).uv;
+  const VaryingLayout layout = varyingLayout(frame.shading);
+  const int count = layout.count, uv = layout.uv, color = layout.color;
   std::uint32_t id = 0;
   for (const FrameInstance& instance : frame.instances) {
     const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
     const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
     const bool textured = material.baseColorTexture >= 0 && !mesh.texcoords.empty();
+    const bool colored = !mesh.colors.empty();
+    // O_d = factor · COLOR_0 · texel, each factor only where the mesh has it.
     const auto baseColor = [&](const float* v) {
-      return textured ? material.baseColor * sampleBaseColor(scene.textures[static_cast<std::size_t>(material.baseColorTexture)].image, {v[uv], v[uv + 1]})
-                      : material.baseColor;
+      glm::vec3 O = material.baseColor;
+      if (colored) O = O * glm::vec3(v[color], v[color + 1], v[color + 2]);
+      if (textured) O = O * sampleBaseColor(scene.textures[static_cast<std::size_t>(material.baseColorTexture)].image, {v[uv], v[uv + 1]});
+      return O;
     };
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
       // Vertex stage.
@@ -135,12 +140,14 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
         float* out = v[k].varyings.data();
         const glm::vec2 st = mesh.texcoords.empty() ? glm::vec2(0.0f) : mesh.texcoords[i];
         out[uv] = st.x, out[uv + 1] = st.y;
+        const glm::vec3 rgb = colored ? glm::vec3(mesh.colors[i]) : glm::vec3(1.0f);
+        for (int c = 0; c < 3; ++c) out[color + c] = rgb[c];
         if (frame.shading == ShadingMode::Phong) {
           for (int c = 0; c < 3; ++c) out[c] = world[k][c], out[3 + c] = N[c];
         } else if (frame.shading == ShadingMode::Gouraud) {  // the illumination equation at the vertex, both sides
           const glm::vec3 V = viewVector<float>(frame, world[k]);
           const Illumination front = illuminate(frame, maps, laneMaterial(material), world[k], N, V);
-          const Illumination back = frame.cullBackFaces ? Illumination{} : illuminate(frame, maps, laneMaterial(material), world[k], -N, V);
+          const Illumination back = instance.cullBackFaces ? Illumination{} : illuminate(frame, maps, laneMaterial(material), world[k], -N, V);
           for (int c = 0; c < 3; ++c)
             out[c] = front.diffuse[c], out[3 + c] = front.specular[c], out[6 + c] = back.diffuse[c], out[9 + c] = back.specular[c];
         }
@@ -152,7 +159,7 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
         const glm::vec3 centroid = (world[0] + world[1] + world[2]) / 3.0f;
         const glm::vec3 V = viewVector<float>(frame, centroid);
         flat[0] = illuminate(frame, maps, laneMaterial(material), centroid, N, V);
-        if (!frame.cullBackFaces) flat[1] = illuminate(frame, maps, laneMaterial(material), centroid, -N, V);
+        if (!instance.cullBackFaces) flat[1] = illuminate(frame, maps, laneMaterial(material), centroid, -N, V);
       }
       // Fragment stage.
       const FragmentShader fragment = [&](const float* f, bool front) -> glm::vec3 {
@@ -168,7 +175,7 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
         }
         return shade(front ? flat[0] : flat[1], baseColor(f));
       };
-      drawTriangle(v, count, frame.cullBackFaces, ++id, target, fragment);
+      drawTriangle(v, count, instance.cullBackFaces, ++id, target, fragment);
     }
   }
 }
