@@ -1,0 +1,851 @@
+#!/usr/bin/env python3
+"""Writes facet's small glTF 2.0 scenes.
+
+    python3 scripts/make_scenes.py
+
+Two sets, each file self-contained (.gltf JSON, its buffer and its PNG
+images embedded as base64 data URIs):
+
+  tests/data/gltf/materials/   feature models: sparse accessors, sampler
+                               wraps, mipmapping (material defaults, COLOR_0
+                               and doubleSided are scripts/make_material_scenes.py's)
+  assets/                      the course tour, one scene per chapter
+
+Units are meters, +y is up. Every scene has a perspective camera looking at
+its content and KHR_lights_punctual lights; scenes[0].extras.description says
+what the picture should show.
+
+The output is deterministic: the same bytes on every run (JSON with sorted
+keys, numbers written as the shortest decimal that reads back as the same
+float32, PNGs compressed with zlib at level 9; a zlib other than the
+reference one, e.g. zlib-ng, may compress the images to other bytes, which
+decode to the same pixels). Only the Python 3 standard library is used.
+"""
+
+import base64
+import json
+import math
+import os
+import struct
+import zlib
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+MATERIALS_DIR = os.path.join(ROOT, "tests", "data", "gltf", "materials")
+ASSETS_DIR = os.path.join(ROOT, "assets")
+
+# glTF 2.0 enumerations
+UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT, FLOAT = 5121, 5123, 5125, 5126
+ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER = 34962, 34963
+NEAREST, LINEAR, LINEAR_MIPMAP_LINEAR = 9728, 9729, 9987
+REPEAT, CLAMP_TO_EDGE, MIRRORED_REPEAT = 10497, 33071, 33648
+
+COMPONENTS = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4}
+PACK = {UNSIGNED_BYTE: "B", UNSIGNED_SHORT: "H", UNSIGNED_INT: "I", FLOAT: "f"}
+
+
+# ---------------------------------------------------------------- numbers
+
+def f32(x):
+    """x rounded to the nearest float32, as a Python float."""
+    return struct.unpack("<f", struct.pack("<f", x))[0]
+
+
+def num(x):
+    """x for the JSON: an int when whole, else the shortest decimal that
+    reads back as the same float32 (what the renderer will hold)."""
+    v = f32(x)
+    if v == int(v) and abs(v) < 2 ** 24:
+        return int(v)
+    for digits in range(1, 10):
+        shortest = float("%.*g" % (digits, v))
+        if f32(shortest) == v:
+            return shortest
+    return v
+
+
+def nums(values):
+    return [num(v) for v in values]
+
+
+# ---------------------------------------------------------------- vectors
+
+def add(a, b):
+    return tuple(x + y for x, y in zip(a, b))
+
+
+def sub(a, b):
+    return tuple(x - y for x, y in zip(a, b))
+
+
+def mul(a, s):
+    return tuple(x * s for x in a)
+
+
+def dot(a, b):
+    return sum(x * y for x, y in zip(a, b))
+
+
+def cross(a, b):
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def normalize(a):
+    length = math.sqrt(dot(a, a))
+    return mul(a, 1.0 / length)
+
+
+def axis_angle(axis, degrees):
+    """The rotation quaternion [x, y, z, w] about `axis` by `degrees`."""
+    half = math.radians(degrees) / 2
+    x, y, z = mul(normalize(axis), math.sin(half))
+    return [x, y, z, math.cos(half)]
+
+
+def quat_from_axes(x, y, z):
+    """The quaternion of the rotation whose matrix has columns x, y, z."""
+    m00, m01, m02 = x[0], y[0], z[0]
+    m10, m11, m12 = x[1], y[1], z[1]
+    m20, m21, m22 = x[2], y[2], z[2]
+    trace = m00 + m11 + m22
+    if trace > 0:
+        s = 2 * math.sqrt(trace + 1)
+        return [(m21 - m12) / s, (m02 - m20) / s, (m10 - m01) / s, s / 4]
+    if m00 > m11 and m00 > m22:
+        s = 2 * math.sqrt(1 + m00 - m11 - m22)
+        return [s / 4, (m01 + m10) / s, (m02 + m20) / s, (m21 - m12) / s]
+    if m11 > m22:
+        s = 2 * math.sqrt(1 + m11 - m00 - m22)
+        return [(m01 + m10) / s, s / 4, (m12 + m21) / s, (m02 - m20) / s]
+    s = 2 * math.sqrt(1 + m22 - m00 - m11)
+    return [(m02 + m20) / s, (m12 + m21) / s, s / 4, (m10 - m01) / s]
+
+
+def look_at(eye, target, up=(0, 1, 0)):
+    """The rotation that turns a glTF camera or light (which looks down its
+    local -z with +y up) at `eye` towards `target`."""
+    back = normalize(sub(eye, target))
+    if abs(dot(back, normalize(up))) > 0.999:
+        up = (0, 0, -1)
+    right = normalize(cross(up, back))
+    return quat_from_axes(right, cross(back, right), back)
+
+
+# ---------------------------------------------------------------- meshes
+
+class Mesh:
+    """Vertex attributes (lists of tuples) and a triangle list, counter-
+    clockwise seen from the side the normals point to."""
+
+    def __init__(self, positions, normals, indices, uvs=None):
+        self.positions, self.normals, self.indices, self.uvs = positions, normals, indices, uvs
+        for t in range(0, len(indices), 3):
+            a, b, c = (positions[i] for i in indices[t:t + 3])
+            face = cross(sub(b, a), sub(c, a))
+            vertex = add(add(normals[indices[t]], normals[indices[t + 1]]), normals[indices[t + 2]])
+            assert dot(face, face) < 1e-12 or dot(face, vertex) > 0, "triangle %d winds against its normals" % (t // 3)
+
+
+def quad_indices(a, b, c, d):
+    """Two triangles of the quad a b c d, counter-clockwise."""
+    return [a, b, c, a, c, d]
+
+
+# Cube faces: outward normal and the face's "up" (the top of its texture).
+# Its "right" is up x normal, so that each face is counter-clockwise from outside.
+CUBE_FACES = [
+    ("+x", (1, 0, 0), (0, 1, 0)),
+    ("-x", (-1, 0, 0), (0, 1, 0)),
+    ("+y", (0, 1, 0), (0, 0, -1)),
+    ("-y", (0, -1, 0), (0, 0, 1)),
+    ("+z", (0, 0, 1), (0, 1, 0)),
+    ("-z", (0, 0, -1), (0, 1, 0)),
+]
+
+
+def cube(size=1.0, skip=()):
+    """A cube centred on the origin, 4 vertices per face (per-face normals,
+    each face textured 0..1 upright seen from outside); `skip` names faces
+    left out, e.g. ("+y",) for an open box."""
+    positions, normals, uvs, indices = [], [], [], []
+    h = size / 2
+    for name, n, up in CUBE_FACES:
+        if name in skip:
+            continue
+        right = cross(up, n)
+        first = len(positions)
+        for du, dv, uv in ((-1, -1, (0, 1)), (1, -1, (1, 1)), (1, 1, (1, 0)), (-1, 1, (0, 0))):
+            positions.append(add(mul(n, h), add(mul(right, du * h), mul(up, dv * h))))
+            normals.append(n)
+            uvs.append(uv)
+        indices += quad_indices(first, first + 1, first + 2, first + 3)
+    return Mesh(positions, normals, indices, uvs)
+
+
+def quad(width, height, uv_min=(0, 0), uv_max=(1, 1)):
+    """An upright quad in the xy plane, centred on the origin, facing +z;
+    u runs left to right, v top to bottom (glTF's image orientation)."""
+    w, h = width / 2, height / 2
+    positions = [(-w, -h, 0), (w, -h, 0), (w, h, 0), (-w, h, 0)]
+    (u0, v0), (u1, v1) = uv_min, uv_max
+    uvs = [(u0, v1), (u1, v1), (u1, v0), (u0, v0)]
+    return Mesh(positions, [(0, 0, 1)] * 4, quad_indices(0, 1, 2, 3), uvs)
+
+
+def plane(width, depth, uv_repeat=1.0):
+    """A ground quad in the xz plane at y = 0, facing +y; the texture's top
+    lies towards -z, and it repeats `uv_repeat` times across."""
+    w, d = width / 2, depth / 2
+    positions = [(-w, 0, d), (w, 0, d), (w, 0, -d), (-w, 0, -d)]
+    r = uv_repeat
+    uvs = [(0, r), (r, r), (r, 0), (0, 0)]
+    return Mesh(positions, [(0, 1, 0)] * 4, quad_indices(0, 1, 2, 3), uvs)
+
+
+def grid_positions(columns, rows, spacing):
+    """columns x rows vertices of a flat grid in the xz plane, centred on the
+    origin, row by row from -z to +z."""
+    x0, z0 = -(columns - 1) * spacing / 2, -(rows - 1) * spacing / 2
+    return [(x0 + c * spacing, 0.0, z0 + r * spacing) for r in range(rows) for c in range(columns)]
+
+
+def grid_indices(columns, rows):
+    indices = []
+    for r in range(rows - 1):
+        for c in range(columns - 1):
+            a = r * columns + c
+            indices += quad_indices(a + columns, a + columns + 1, a + 1, a)  # facing +y
+    return indices
+
+
+def uv_sphere(radius, segments, rings):
+    """A sphere of `segments` meridians and `rings` bands, smooth normals;
+    u goes once around, v from the north pole (0) to the south pole (1)."""
+    positions, normals, uvs, indices = [], [], [], []
+    for i in range(rings + 1):
+        theta = math.pi * i / rings
+        for j in range(segments + 1):
+            phi = 2 * math.pi * j / segments
+            n = (math.sin(theta) * math.sin(phi), math.cos(theta), math.sin(theta) * math.cos(phi))
+            positions.append(mul(n, radius))
+            normals.append(n)
+            uvs.append((j / segments, i / rings))
+    for i in range(rings):
+        for j in range(segments):
+            a = i * (segments + 1) + j
+            b = a + segments + 1
+            if i > 0:
+                indices += [a, b, a + 1]
+            if i < rings - 1:
+                indices += [a + 1, b, b + 1]
+    return Mesh(positions, normals, indices, uvs)
+
+
+def cylinder(radius, height, segments, caps=True):
+    """An upright cylinder standing on y = 0, smooth sides; with `caps`, flat
+    discs close it; without, it is an open tube."""
+    positions, normals, uvs, indices = [], [], [], []
+    for j in range(segments + 1):
+        phi = 2 * math.pi * j / segments
+        n = (math.sin(phi), 0, math.cos(phi))
+        for y, v in ((0, 1), (height, 0)):
+            positions.append((radius * n[0], y, radius * n[2]))
+            normals.append(n)
+            uvs.append((j / segments, v))
+    for j in range(segments):
+        a = 2 * j
+        indices += quad_indices(a, a + 2, a + 3, a + 1)
+    if caps:
+        for y, ny in ((0, -1), (height, 1)):
+            centre = len(positions)
+            positions.append((0, y, 0))
+            normals.append((0, ny, 0))
+            uvs.append((0.5, 0.5))
+            for j in range(segments):
+                phi = 2 * math.pi * j / segments
+                positions.append((radius * math.sin(phi), y, radius * math.cos(phi)))
+                normals.append((0, ny, 0))
+                uvs.append((0.5 + 0.5 * math.sin(phi), 0.5 - 0.5 * math.cos(phi)))
+            for j in range(segments):
+                a, b = centre + 1 + j, centre + 1 + (j + 1) % segments
+                indices += [centre, a, b] if ny > 0 else [centre, b, a]
+    return Mesh(positions, normals, indices, uvs)
+
+
+def torus(major, minor, segments, sides):
+    """A torus around the y axis: `segments` around the ring, `sides` around
+    the tube, smooth normals."""
+    positions, normals, uvs, indices = [], [], [], []
+    for i in range(segments + 1):
+        phi = 2 * math.pi * i / segments
+        ring = (math.sin(phi), 0, math.cos(phi))
+        for j in range(sides + 1):
+            theta = 2 * math.pi * j / sides
+            n = add(mul(ring, math.cos(theta)), (0, math.sin(theta), 0))
+            positions.append(add(mul(ring, major), mul(n, minor)))
+            normals.append(n)
+            uvs.append((i / segments, j / sides))
+    for i in range(segments):
+        for j in range(sides):
+            a = i * (sides + 1) + j
+            b = a + sides + 1
+            indices += quad_indices(a, b, b + 1, a + 1)
+    return Mesh(positions, normals, indices, uvs)
+
+
+def smooth_normals(positions, indices):
+    """Area-weighted vertex normals of a triangle list."""
+    sums = [(0.0, 0.0, 0.0)] * len(positions)
+    for t in range(0, len(indices), 3):
+        a, b, c = indices[t:t + 3]
+        face = cross(sub(positions[b], positions[a]), sub(positions[c], positions[a]))
+        for v in (a, b, c):
+            sums[v] = add(sums[v], face)
+    return [normalize(s) for s in sums]
+
+
+# ---------------------------------------------------------------- PNG
+
+def png(width, height, pixel):
+    """An 8-bit RGB PNG of pixel(x, y) -> (r, g, b), row 0 at the top."""
+    raw = bytearray()
+    for y in range(height):
+        raw.append(0)  # filter: none
+        for x in range(width):
+            raw += bytes(pixel(x, y))
+
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
+
+    header = struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)  # 8 bits, RGB, deflate, no filter, no interlace
+    return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", zlib.compress(bytes(raw), 9)) + chunk(b"IEND", b"")
+
+
+def checker(size, square, dark, light):
+    return lambda x, y: dark if (x // square + y // square) % 2 else light
+
+
+# The letter F on a 5 x 7 cell raster (top row first): asymmetric under
+# every flip and rotation, so it shows how a texture is oriented.
+LETTER_F = ["#####", "#....", "#....", "####.", "#....", "#....", "#...."]
+
+
+def letter_f(x, y, left, top, cell):
+    """Whether texel (x, y) lies in an F whose top-left corner is (left, top)."""
+    c, r = (x - left) // cell, (y - top) // cell
+    return 0 <= r < len(LETTER_F) and 0 <= c < len(LETTER_F[0]) and LETTER_F[r][c] == "#"
+
+
+def wrap_texture():
+    """8 x 8 texels: a one-texel checker of two greys, texel column 0 red and
+    row 0 (the top) yellow, so every wrap and mirror shows at the edges."""
+    def pixel(x, y):
+        if x == 0:
+            return (220, 30, 30)
+        if y == 0:
+            return (240, 200, 30)
+        return (40, 60, 120) if (x + y) % 2 else (235, 235, 235)
+    return png(8, 8, pixel)
+
+
+def brick_texture(size=64):
+    """Red bricks (16 x 8 texels, every other row shifted by half a brick)
+    in grey mortar, each brick a slightly different shade, and a cream
+    letter F in the top-left corner."""
+    def pixel(x, y):
+        if letter_f(x, y, 4, 3, 3):
+            return (250, 235, 190)
+        row = y // 8
+        shifted = x + (8 if row % 2 else 0)
+        if y % 8 == 7 or shifted % 16 == 15:
+            return (170, 165, 155)
+        shade = ((row * 7 + (shifted // 16) * 13) % 5) * 9
+        return (150 + shade, 55 + shade // 2, 40)
+    return png(size, size, pixel)
+
+
+# ---------------------------------------------------------------- document
+
+class Gltf:
+    """One glTF document being built: every add_* returns the new index."""
+
+    def __init__(self, description):
+        self.doc = {
+            "asset": {"version": "2.0", "generator": "facet scenes"},
+            "scene": 0,
+            "scenes": [{"nodes": [], "extras": {"description": description}}],
+        }
+        self.buffer = bytearray()
+        self.mesh_accessors = {}  # id(Mesh) -> its attributes and indices, written once
+
+    def append(self, key, item):
+        self.doc.setdefault(key, []).append(item)
+        return len(self.doc[key]) - 1
+
+    # -- buffer data
+
+    def add_view(self, data, target=None):
+        """A bufferView of `data`, starting on a 4-byte boundary of the buffer."""
+        self.buffer += b"\0" * (-len(self.buffer) % 4)
+        view = {"buffer": 0, "byteOffset": len(self.buffer), "byteLength": len(data)}
+        if target is not None:
+            view["target"] = target
+        self.buffer += data
+        return self.append("bufferViews", view)
+
+    @staticmethod
+    def pack(rows, component_type):
+        flat = [v for row in rows for v in (row if isinstance(row, tuple) else (row,))]
+        return struct.pack("<%d%s" % (len(flat), PACK[component_type]), *flat)
+
+    def add_accessor(self, rows, kind, component_type=FLOAT, target=ARRAY_BUFFER, normalized=False, bounds=False):
+        """An accessor of `rows` (tuples, or numbers for SCALAR) in a bufferView
+        of its own; `bounds` adds min and max (required for POSITION)."""
+        accessor = {
+            "bufferView": self.add_view(self.pack(rows, component_type), target),
+            "componentType": component_type,
+            "count": len(rows),
+            "type": kind,
+        }
+        if normalized:
+            accessor["normalized"] = True
+        if bounds:
+            accessor["min"], accessor["max"] = self.bounds(rows)
+        return self.append("accessors", accessor)
+
+    @staticmethod
+    def bounds(rows):
+        """Per-component min and max of float32 rows, as float32 values."""
+        columns = list(zip(*[tuple(f32(v) for v in row) for row in rows]))
+        return [num(min(c)) for c in columns], [num(max(c)) for c in columns]
+
+    def add_sparse_accessor(self, count, kind, component_type, base_rows, substitutes, index_type,
+                            target=ARRAY_BUFFER, normalized=False, bounds=None):
+        """A sparse accessor of `count` elements: its base is `base_rows` in a
+        bufferView, or zeros when base_rows is None (no bufferView); then
+        `substitutes` ({element: row}) replace elements. Its indices are
+        stored as `index_type`, its values tightly packed; `bounds` are the
+        rows after substitution, for min/max."""
+        elements = sorted(substitutes)
+        accessor = {
+            "componentType": component_type,
+            "count": count,
+            "type": kind,
+            "sparse": {
+                "count": len(elements),
+                "indices": {"bufferView": self.add_view(self.pack(elements, index_type)), "componentType": index_type},
+                "values": {"bufferView": self.add_view(self.pack([substitutes[e] for e in elements], component_type))},
+            },
+        }
+        if base_rows is not None:
+            assert len(base_rows) == count
+            accessor["bufferView"] = self.add_view(self.pack(base_rows, component_type), target)
+        if normalized:
+            accessor["normalized"] = True
+        if bounds is not None:
+            accessor["min"], accessor["max"] = self.bounds(bounds)
+        return self.append("accessors", accessor)
+
+    def add_indices(self, indices):
+        component_type = UNSIGNED_SHORT if max(indices) < 65535 else UNSIGNED_INT
+        return self.add_accessor(indices, "SCALAR", component_type, ELEMENT_ARRAY_BUFFER)
+
+    # -- meshes
+
+    def primitive(self, mesh, material, colors=None):
+        """A primitive of `mesh` with `material`; the mesh's accessors are
+        written the first time it is used and shared after. TEXCOORD_0 is
+        written only for a textured material; `colors` is a COLOR_0 accessor."""
+        key = id(mesh)
+        if key not in self.mesh_accessors:
+            attributes = {
+                "POSITION": self.add_accessor(mesh.positions, "VEC3", bounds=True),
+                "NORMAL": self.add_accessor(mesh.normals, "VEC3"),
+            }
+            self.mesh_accessors[key] = (attributes, self.add_indices(mesh.indices), mesh)  # keeps mesh alive: id stays unique
+        attributes, indices, _ = self.mesh_accessors[key]
+        if "baseColorTexture" in self.doc["materials"][material]["pbrMetallicRoughness"] and "TEXCOORD_0" not in attributes:
+            attributes["TEXCOORD_0"] = self.add_accessor(mesh.uvs, "VEC2")
+        primitive = {"attributes": dict(attributes), "indices": indices, "material": material}
+        if colors is not None:
+            primitive["attributes"]["COLOR_0"] = colors
+        return primitive
+
+    def add_mesh(self, name, *primitives):
+        return self.append("meshes", {"name": name, "primitives": list(primitives)})
+
+    def add_material(self, name, color, metallic=None, roughness=None, texture=None, double_sided=None, emissive=None):
+        """A material; metallic, roughness and doubleSided left out when None
+        (glTF's defaults: 1, 1 and false)."""
+        pbr = {"baseColorFactor": nums(color)}
+        if metallic is not None:
+            pbr["metallicFactor"] = num(metallic)
+        if roughness is not None:
+            pbr["roughnessFactor"] = num(roughness)
+        if texture is not None:
+            pbr["baseColorTexture"] = {"index": texture}
+        material = {"name": name, "pbrMetallicRoughness": pbr}
+        if double_sided is not None:
+            material["doubleSided"] = double_sided
+        if emissive is not None:
+            material["emissiveFactor"] = nums(emissive)
+        return self.append("materials", material)
+
+    # -- textures
+
+    def add_texture(self, image, sampler):
+        return self.append("textures", {"sampler": sampler, "source": image})
+
+    def add_image(self, name, png_bytes):
+        uri = "data:image/png;base64," + base64.b64encode(png_bytes).decode("ascii")
+        return self.append("images", {"name": name, "mimeType": "image/png", "uri": uri})
+
+    def add_sampler(self, mag, min_filter, wrap_s, wrap_t):
+        return self.append("samplers", {"magFilter": mag, "minFilter": min_filter, "wrapS": wrap_s, "wrapT": wrap_t})
+
+    # -- nodes
+
+    def add_node(self, name, mesh=None, translation=None, rotation=None, scale=None, parent=None, **extra):
+        """A node; a root of the scene unless `parent` (a node index) is given."""
+        node = {"name": name}
+        if mesh is not None:
+            node["mesh"] = mesh
+        for key, value in (("translation", translation), ("rotation", rotation), ("scale", scale)):
+            if value is not None:
+                node[key] = nums(value)
+        node.update(extra)
+        index = self.append("nodes", node)
+        if parent is None:
+            self.doc["scenes"][0]["nodes"].append(index)
+        else:
+            self.doc["nodes"][parent].setdefault("children", []).append(index)
+        return index
+
+    def add_camera(self, name, eye, target, yfov_deg=45.0, znear=0.1, zfar=100.0):
+        """A perspective camera node at `eye` looking at `target`."""
+        camera = self.append("cameras", {"name": name, "type": "perspective", "perspective": {
+            "yfov": num(math.radians(yfov_deg)), "znear": num(znear), "zfar": num(zfar)}})
+        return self.add_node(name, translation=eye, rotation=look_at(eye, target), camera=camera)
+
+    def add_orthographic_camera(self, name, eye, target, xmag, ymag, znear=0.1, zfar=100.0):
+        camera = self.append("cameras", {"name": name, "type": "orthographic", "orthographic": {
+            "xmag": num(xmag), "ymag": num(ymag), "znear": num(znear), "zfar": num(zfar)}})
+        return self.add_node(name, translation=eye, rotation=look_at(eye, target), camera=camera)
+
+    def add_light(self, name, kind, position, target=None, color=(1, 1, 1), intensity=1.0, inner_deg=None, outer_deg=None):
+        """A KHR_lights_punctual light and its node: point lights shine from
+        `position`, directional and spot lights from `position` towards
+        `target`. Point and spot intensities are candela (facet: I / d^2),
+        directional ones lux."""
+        extension = self.doc.setdefault("extensions", {}).setdefault("KHR_lights_punctual", {"lights": []})
+        light = {"name": name, "type": kind, "color": nums(color), "intensity": num(intensity)}
+        if kind == "spot":
+            light["spot"] = {"innerConeAngle": num(math.radians(inner_deg)), "outerConeAngle": num(math.radians(outer_deg))}
+        extension["lights"].append(light)
+        self.doc["extensionsUsed"] = ["KHR_lights_punctual"]
+        rotation = look_at(position, target) if target is not None else None
+        return self.add_node(name, translation=position, rotation=rotation,
+                             extensions={"KHR_lights_punctual": {"light": len(extension["lights"]) - 1}})
+
+    # -- output
+
+    def write(self, path):
+        self.buffer += b"\0" * (-len(self.buffer) % 4)
+        self.doc["buffers"] = [{"byteLength": len(self.buffer),
+                                "uri": "data:application/octet-stream;base64," + base64.b64encode(bytes(self.buffer)).decode("ascii")}]
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        with open(path, "w", encoding="ascii", newline="\n") as out:
+            out.write(json.dumps(self.doc, indent=1, sort_keys=True) + "\n")
+        print("%-45s %7d bytes" % (os.path.relpath(path, ROOT), os.path.getsize(path)))
+
+
+# Shared materials and set pieces
+
+GREY_GROUND = ((0.5, 0.5, 0.5, 1), 0.0, 0.8)
+
+
+def add_ground(g, width=8.0, depth=8.0, translation=None, name="ground", color=GREY_GROUND):
+    base, metallic, roughness = color
+    material = g.add_material(name, base, metallic, roughness)
+    return g.add_node(name, g.add_mesh(name, g.primitive(plane(width, depth), material)), translation=translation)
+
+
+# ---------------------------------------------------------------- A. feature models
+
+def sparse():
+    g = Gltf("Two patches on a grey ground. Left: a 5x5-vertex grid, 2 m across, with a bump in its middle "
+             "(centre vertex 0.6 m up, its 8 neighbours 0.25 m), smooth normals, an undistorted 4x4 checker "
+             "(cream and grey, one square per grid cell) and vertex colours: corners red (back left), green "
+             "(back right), blue (front left), yellow (front right), centre magenta, white elsewhere. "
+             "Right: a flat 1.6 m blue square of 8 triangles. Everything comes from sparse accessors; "
+             "see the accessors' extras for what reading the sparse parts wrongly shows.")
+    columns = rows = 5
+    flat = grid_positions(columns, rows, 0.5)
+    lift = {12: 0.6}
+    for v in (6, 7, 8, 11, 13, 16, 17, 18):
+        lift[v] = 0.25
+    bumped = [add(p, (0, lift.get(v, 0.0), 0)) for v, p in enumerate(flat)]
+    indices = grid_indices(columns, rows)
+    normals = smooth_normals(bumped, indices)
+    uvs = [(c / (columns - 1), r / (rows - 1)) for r in range(rows) for c in range(columns)]
+    inner = [v for v in range(columns * rows) if 0 < v % columns < columns - 1 and 0 < v // columns < rows - 1]
+
+    position = g.add_sparse_accessor(
+        len(flat), "VEC3", FLOAT, flat, {v: bumped[v] for v in lift}, UNSIGNED_BYTE, bounds=bumped)
+    normal = g.add_sparse_accessor(
+        len(flat), "VEC3", FLOAT, None, dict(enumerate(normals)), UNSIGNED_SHORT)
+    texcoord = g.add_sparse_accessor(
+        len(flat), "VEC2", FLOAT, [(0.0, 0.0) if v in inner else uv for v, uv in enumerate(uvs)],
+        {v: uvs[v] for v in inner}, UNSIGNED_INT)
+    color = g.add_sparse_accessor(
+        len(flat), "VEC4", UNSIGNED_BYTE, [(255, 255, 255, 255)] * len(flat),
+        {0: (255, 0, 0, 255), 4: (0, 255, 0, 255), 12: (255, 0, 255, 255), 20: (0, 0, 255, 255), 24: (255, 255, 0, 255)},
+        UNSIGNED_BYTE, normalized=True)
+    g.doc["accessors"][position]["extras"] = {"expected": "flat base grid; the sparse values lift the centre vertex 12 by "
+                                              "0.6 m and vertices 6 7 8 11 13 16 17 18 by 0.25 m (a bump). Unread: flat."}
+    g.doc["accessors"][normal]["extras"] = {"expected": "no bufferView: a base of zeros; the sparse values give all 25 "
+                                            "normals. Unread: zero normals."}
+    g.doc["accessors"][texcoord]["extras"] = {"expected": "the base holds (0, 0) for the 9 inner vertices; the sparse "
+                                              "values put them on the regular grid. Unread: the checker collapses to "
+                                              "the top-left corner in the middle."}
+    g.doc["accessors"][color]["extras"] = {"expected": "base all white; sparse values colour vertices 0 red, 4 green, "
+                                           "12 magenta, 20 blue, 24 yellow. Unread: all white."}
+
+    # The second primitive: a 3x3-vertex square whose index list is sparse.
+    patch = grid_positions(3, 3, 0.8)
+    patch_indices = grid_indices(3, 3)
+    broken = patch_indices[:12] + [0] * 12  # the last 4 triangles degenerate in the base
+    patch_position = g.add_accessor([add(p, (2.4, 0, 0)) for p in patch], "VEC3", bounds=True)
+    patch_normal = g.add_accessor([(0.0, 1.0, 0.0)] * len(patch), "VEC3")
+    patch_index = g.add_sparse_accessor(
+        len(broken), "SCALAR", UNSIGNED_BYTE, broken, {i: patch_indices[i] for i in range(12, 24)}, UNSIGNED_BYTE,
+        target=ELEMENT_ARRAY_BUFFER)
+    g.doc["accessors"][patch_index]["extras"] = {"expected": "the base's last 4 triangles are 0 0 0 (degenerate); the "
+                                                 "sparse values replace indices 12..23 with the right ones. Unread: "
+                                                 "only the back half of the square is drawn."}
+
+    checker_image = g.add_image("checker 16x16", png(16, 16, checker(16, 4, (150, 150, 150), (245, 235, 210))))
+    textured = g.add_material("white, checker", (1, 1, 1, 1), 0.0, 0.7,
+                              texture=g.add_texture(checker_image, g.add_sampler(NEAREST, NEAREST, REPEAT, REPEAT)))
+    blue = g.add_material("blue", (0.15, 0.3, 0.8, 1), 0.0, 0.6)
+    mesh = g.add_mesh("sparse patches",
+                      {"attributes": {"POSITION": position, "NORMAL": normal, "TEXCOORD_0": texcoord, "COLOR_0": color},
+                       "indices": g.add_indices(indices), "material": textured},
+                      {"attributes": {"POSITION": patch_position, "NORMAL": patch_normal},
+                       "indices": patch_index, "material": blue})
+    g.add_node("sparse patches", mesh, translation=(-1.2, 0.05, 0))
+    add_ground(g, 8, 6)
+    g.add_camera("camera", (-0.2, 2.3, 4.4), (-0.2, 0.1, 0.1))
+    g.add_light("key", "spot", (-3.6, 2.2, 1.2), (-0.4, 0, 0), intensity=16, inner_deg=35, outer_deg=50)
+    return g
+
+
+def textured_wraps():
+    g = Gltf("Three quads with the same 8x8 texture (a one-texel checker of white and dark blue, texel column 0 "
+             "red, row 0 yellow) and texture coordinates from -1 to 2. Left: REPEAT, NEAREST: 3x3 tiles, sharp "
+             "texels. Middle: CLAMP_TO_EDGE, LINEAR: one tile in the middle, its edge texels smeared outwards "
+             "(red band on the left, yellow band at the top). Right: MIRRORED_REPEAT, LINEAR: 3x3 tiles, every "
+             "other one mirrored, so red columns and yellow rows meet in pairs.")
+    image = g.add_image("wrap checker 8x8", wrap_texture())
+    panel = quad(1.2, 1.2, (-1, -1), (2, 2))
+    for i, (name, mag, wrap) in enumerate((("REPEAT, NEAREST", NEAREST, REPEAT),
+                                           ("CLAMP_TO_EDGE, LINEAR", LINEAR, CLAMP_TO_EDGE),
+                                           ("MIRRORED_REPEAT, LINEAR", LINEAR, MIRRORED_REPEAT))):
+        texture = g.add_texture(image, g.add_sampler(mag, mag, wrap, wrap))
+        material = g.add_material(name, (1, 1, 1, 1), 0.0, 0.9, texture=texture)
+        g.add_node(name, g.add_mesh(name, g.primitive(panel, material)), translation=(1.4 * (i - 1), 0.75, 0))
+    add_ground(g, 8, 6)
+    g.add_camera("camera", (0, 0.9, 3.6), (0, 0.7, 0))
+    g.add_light("sun", "directional", (-1.5, 3.0, 4.0), (0, 0, 0), intensity=1.1)
+    return g
+
+
+def grazing_checker():
+    g = Gltf("A 200 m ground with a black and white checker (64x64 texels, 8-texel squares, repeated 100 times: "
+             "25 cm squares) seen from 1.5 m up, looking just below the horizon. With mipmaps "
+             "(LINEAR_MIPMAP_LINEAR) the squares fade to an even grey towards the horizon; without, they "
+             "break into moire.")
+    image = g.add_image("checker 64x64", png(64, 64, checker(64, 8, (0, 0, 0), (255, 255, 255))))
+    texture = g.add_texture(image, g.add_sampler(LINEAR, LINEAR_MIPMAP_LINEAR, REPEAT, REPEAT))
+    material = g.add_material("checker", (1, 1, 1, 1), 0.0, 1.0, texture=texture)
+    g.add_node("ground", g.add_mesh("ground", g.primitive(plane(200, 200, 100), material)))
+    g.add_camera("camera", (0, 1.5, 0), (0, 1.5 - 0.6, -10), yfov_deg=50, zfar=300)
+    g.add_light("sun", "directional", (30, 40, 20), (0, 0, 0), intensity=1.0)
+    return g
+
+
+# ---------------------------------------------------------------- B. the course tour
+
+def transformations():
+    g = Gltf("Model transformations compose: a parent node T * R * S (translated 0.5 m up, turned 30 degrees about "
+             "y, scaled 1.5) carries a grey hub and its own axes (x red, y green, z blue, each 1 m long locally); "
+             "its children are translated in its frame: a yellow cube at the end of its x axis with a white "
+             "sphere on top (a grandchild, scaled 0.5), and a cyan cube at the end of its z axis, turned 45 "
+             "degrees about its own x. Everything the parent does, its children follow.")
+    box, ball = cube(), uv_sphere(0.5, 24, 12)
+    mat = {name: g.add_material(name, color, 0.0, roughness) for name, color, roughness in (
+        ("grey", (0.55, 0.55, 0.6, 1), 0.5), ("red", (0.85, 0.1, 0.1, 1), 0.5), ("green", (0.1, 0.7, 0.15, 1), 0.5),
+        ("blue", (0.1, 0.25, 0.9, 1), 0.5), ("yellow", (0.9, 0.75, 0.1, 1), 0.4), ("cyan", (0.1, 0.7, 0.8, 1), 0.4),
+        ("white", (0.9, 0.9, 0.9, 1), 0.3))}
+    meshes = {name: g.add_mesh(name + " cube", g.primitive(box, mat[name])) for name in mat if name != "white"}
+    parent = g.add_node("parent: T * R * S", translation=(0, 0.5, 0), rotation=axis_angle((0, 1, 0), 30),
+                        scale=(1.5, 1.5, 1.5))
+    g.add_node("hub", meshes["grey"], scale=(0.25, 0.25, 0.25), parent=parent)
+    thin = 0.06
+    for name, axis, size in (("red", (0.5, 0, 0), (1, thin, thin)), ("green", (0, 0.5, 0), (thin, 1, thin)),
+                             ("blue", (0, 0, 0.5), (thin, thin, 1))):
+        g.add_node("parent's axis, " + name, meshes[name], translation=axis, scale=size, parent=parent)
+    child_x = g.add_node("child: translated along x", meshes["yellow"], translation=(1.2, 0, 0),
+                         scale=(0.4, 0.4, 0.4), parent=parent)
+    g.add_node("grandchild: translated up, scaled 0.5", g.add_mesh("white sphere", g.primitive(ball, mat["white"])),
+               translation=(0, 1.0, 0), scale=(0.5, 0.5, 0.5), parent=child_x)
+    g.add_node("child: translated along z, rotated about x", meshes["cyan"], translation=(0, 0, 1.2),
+               rotation=axis_angle((1, 0, 0), 45), scale=(0.4, 0.4, 0.4), parent=parent)
+    add_ground(g, 8, 8)
+    g.add_camera("camera", (3.2, 3.0, 4.6), (0.4, 0.4, 0.6))
+    g.add_light("sun", "directional", (-2, 5, 3), (0, 0, 0), intensity=1.1)
+    return g
+
+
+def projections():
+    g = Gltf("Six equal 0.6 m cubes in a row receding along -z, every 1.5 m, alternately orange and teal. "
+             "The first camera (perspective, used by default) makes them shrink towards a vanishing point; "
+             "the second (orthographic, same place and direction) keeps them equal in size.")
+    box = cube(0.6)
+    orange = g.add_mesh("orange cube", g.primitive(box, g.add_material("orange", (0.9, 0.45, 0.1, 1), 0.0, 0.5)))
+    teal = g.add_mesh("teal cube", g.primitive(box, g.add_material("teal", (0.1, 0.6, 0.6, 1), 0.0, 0.5)))
+    for i in range(6):
+        g.add_node("cube %d" % (i + 1), orange if i % 2 == 0 else teal, translation=(0, 0.3, 1.5 - 1.5 * i))
+    add_ground(g, 6, 14, translation=(0, 0, -2))
+    eye, target = (1.8, 1.4, 4.0), (0, 0.3, -2.5)
+    g.add_camera("perspective camera", eye, target, yfov_deg=40)
+    g.add_orthographic_camera("orthographic camera", eye, target, xmag=3.2, ymag=2.4)
+    g.add_light("sun", "directional", (-3, 5, 2), (0, 0, -2), intensity=1.1)
+    return g
+
+
+def culling():
+    g = Gltf("Back-face culling: an open box (no top) and a tube (a cylinder without caps), seen from above, "
+             "beside a closed sphere. With culling on, only their outer walls that face the camera are drawn: "
+             "the ground shows through where the inner walls and the box's floor (all back faces) would be. "
+             "With culling off, the insides show. The sphere looks the same either way.")
+    open_box = cube(1.0, skip=("+y",))
+    tube = cylinder(0.45, 1.0, 24, caps=False)
+    g.add_node("open box", g.add_mesh("open box", g.primitive(open_box, g.add_material(
+        "orange", (0.9, 0.5, 0.15, 1), 0.0, 0.6))), translation=(-1.3, 0.5, 0))
+    g.add_node("tube", g.add_mesh("tube", g.primitive(tube, g.add_material(
+        "teal", (0.15, 0.6, 0.65, 1), 0.0, 0.6))), translation=(0.2, 0, 0))
+    g.add_node("closed sphere", g.add_mesh("sphere", g.primitive(uv_sphere(0.45, 24, 12), g.add_material(
+        "violet", (0.5, 0.3, 0.8, 1), 0.0, 0.4))), translation=(1.5, 0.45, 0.1))
+    add_ground(g, 8, 6)
+    g.add_camera("camera", (0.4, 3.4, 3.4), (0.1, 0.2, 0))
+    g.add_light("key", "point", (-1.5, 4.5, 2.5), intensity=28)
+    return g
+
+
+def hidden_surfaces():
+    g = Gltf("Hidden surfaces: two long boxes cross through each other (red along x, blue turned 60 degrees), "
+             "so each hides part of the other and their intersection is a crisp line; a green sphere passes "
+             "through an upright cream panel, half of it in front, half behind and hidden.")
+    box = cube()
+    g.add_node("red box", g.add_mesh("red box", g.primitive(box, g.add_material(
+        "red", (0.85, 0.15, 0.1, 1), 0.0, 0.5))), translation=(-1.0, 0.35, 0), scale=(2.0, 0.5, 0.5))
+    g.add_node("blue box", g.add_mesh("blue box", g.primitive(box, g.add_material(
+        "blue", (0.15, 0.3, 0.85, 1), 0.0, 0.5))), translation=(-1.0, 0.4, 0), rotation=axis_angle((0, 1, 0), 60),
+        scale=(2.0, 0.4, 0.6))
+    g.add_node("panel", g.add_mesh("panel", g.primitive(quad(1.4, 1.4), g.add_material(
+        "cream", (0.9, 0.85, 0.7, 1), 0.0, 0.7))), translation=(1.3, 0.7, 0), rotation=axis_angle((0, 1, 0), -20))
+    g.add_node("sphere through the panel", g.add_mesh("sphere", g.primitive(uv_sphere(0.45, 32, 16), g.add_material(
+        "green", (0.2, 0.75, 0.3, 1), 0.0, 0.35))), translation=(1.25, 0.75, 0.05))
+    add_ground(g, 8, 6)
+    g.add_camera("camera", (0.6, 2.4, 4.4), (0.1, 0.45, 0))
+    g.add_light("key", "point", (-2.0, 4.5, 3.0), intensity=30)
+    return g
+
+
+def lighting():
+    g = Gltf("Illumination: two rows of five spheres of one colour, roughness 0.1, 0.3, 0.5, 0.7, 0.9 from left "
+             "to right; front row metallic 0 (dielectric: bright diffuse, small white highlights growing wide "
+             "and faint), back row metallic 1 (darker diffuse, stronger highlights). Lit by a warm point light "
+             "(front left), a blue-white spot light from above aimed at the middle, and a dim directional "
+             "light from the right.")
+    ball = uv_sphere(0.35, 32, 16)
+    for row, (metallic, z) in enumerate(((0.0, 0.6), (1.0, -0.4))):
+        for i, roughness in enumerate((0.1, 0.3, 0.5, 0.7, 0.9)):
+            name = "metallic %g, roughness %g" % (metallic, roughness)
+            material = g.add_material(name, (0.75, 0.45, 0.2, 1), metallic, roughness)
+            g.add_node(name, g.add_mesh(name, g.primitive(ball, material)), translation=(0.9 * (i - 2), 0.35, z))
+    add_ground(g, 8, 6)
+    g.add_camera("camera", (0, 2.0, 4.2), (0, 0.3, 0.1))
+    g.add_light("point, warm", "point", (-2.5, 2.5, 2.5), color=(1.0, 0.85, 0.7), intensity=9)
+    g.add_light("spot, blue-white", "spot", (0.5, 4.0, 1.0), (0, 0, 0.1), color=(0.75, 0.85, 1.0), intensity=7,
+                inner_deg=20, outer_deg=32)
+    g.add_light("directional, from the right", "directional", (4, 3, 1), (0, 0, 0), intensity=0.25)
+    return g
+
+
+def shading():
+    g = Gltf("Shading models: a low-polygon sphere (12 x 6) and torus (12 x 6) with smooth normals, glossy, "
+             "lit by one point light. Flat shading shows every facet; Gouraud smooths the facets but smears "
+             "and loses the highlights; Phong keeps round highlights on the same coarse geometry.")
+    g.add_node("low-poly sphere", g.add_mesh("low-poly sphere", g.primitive(uv_sphere(0.6, 12, 6), g.add_material(
+        "glossy red", (0.8, 0.15, 0.1, 1), 0.0, 0.3))), translation=(-0.9, 0.6, 0))
+    g.add_node("low-poly torus", g.add_mesh("low-poly torus", g.primitive(torus(0.5, 0.2, 12, 6), g.add_material(
+        "glossy blue", (0.15, 0.3, 0.85, 1), 0.0, 0.3))), translation=(0.9, 0.62, 0), rotation=axis_angle((1, 0, 0), 50))
+    add_ground(g, 8, 6)
+    g.add_camera("camera", (0, 1.9, 3.6), (0, 0.5, 0))
+    g.add_light("key", "point", (-1.5, 3.0, 2.5), intensity=12)
+    return g
+
+
+def shadows():
+    g = Gltf("Shadow maps: a golden torus floating 1 m over the ground, tilted, and a small cube under it. A spot "
+             "light from the front left and a point light from the right each throw a ring-shaped shadow of the "
+             "torus (and one of the cube) on the ground; where the two shadows overlap it is darkest.")
+    g.add_node("torus", g.add_mesh("torus", g.primitive(torus(0.6, 0.18, 48, 16), g.add_material(
+        "gold", (0.85, 0.6, 0.2, 1), 0.0, 0.4))), translation=(0, 1.0, 0), rotation=axis_angle((1, 0, 0.3), 25))
+    g.add_node("cube", g.add_mesh("cube", g.primitive(cube(0.4), g.add_material(
+        "grey-blue", (0.4, 0.5, 0.7, 1), 0.0, 0.6))), translation=(0.1, 0.2, 0.1), rotation=axis_angle((0, 1, 0), 20))
+    add_ground(g, 8, 8)
+    g.add_camera("camera", (0.5, 3.0, 4.2), (0, 0.4, 0))
+    g.add_light("spot", "spot", (-1.6, 3.8, 1.6), (0, 0.5, 0), intensity=11, inner_deg=25, outer_deg=40)
+    g.add_light("point", "point", (2.4, 3.2, -0.6), intensity=9)
+    return g
+
+
+def texture():
+    g = Gltf("Texture mapping: a 64x64 brick texture drawn by the script, with a cream letter F in its top-left "
+             "corner, on every face of a cube (upright on the sides, the F readable, not mirrored) and on the "
+             "floor, repeated 4 x 4 (F's top towards the back). REPEAT, mipmapped.")
+    image = g.add_image("bricks with F", brick_texture())
+    bricks = g.add_texture(image, g.add_sampler(LINEAR, LINEAR_MIPMAP_LINEAR, REPEAT, REPEAT))
+    material = g.add_material("bricks", (1, 1, 1, 1), 0.0, 0.8, texture=bricks)
+    g.add_node("textured cube", g.add_mesh("textured cube", g.primitive(cube(), material)),
+               translation=(0, 0.5, 0), rotation=axis_angle((0, 1, 0), 30))
+    g.add_node("textured floor", g.add_mesh("textured floor", g.primitive(plane(6, 6, 4), material)))
+    g.add_camera("camera", (1.4, 1.8, 3.2), (0, 0.45, 0))
+    g.add_light("key", "point", (-1.8, 3.5, 2.8), intensity=22)
+    return g
+
+
+SCENES = [
+    (MATERIALS_DIR, "sparse.gltf", sparse),
+    (MATERIALS_DIR, "textured_wraps.gltf", textured_wraps),
+    (MATERIALS_DIR, "grazing_checker.gltf", grazing_checker),
+    (ASSETS_DIR, "transformations.gltf", transformations),
+    (ASSETS_DIR, "projections.gltf", projections),
+    (ASSETS_DIR, "culling.gltf", culling),
+    (ASSETS_DIR, "hidden_surfaces.gltf", hidden_surfaces),
+    (ASSETS_DIR, "lighting.gltf", lighting),
+    (ASSETS_DIR, "shading.gltf", shading),
+    (ASSETS_DIR, "shadows.gltf", shadows),
+    (ASSETS_DIR, "texture.gltf", texture),
+]
+
+
+def main():
+    for folder, name, build in SCENES:
+        build().write(os.path.join(folder, name))
+
+
+if __name__ == "__main__":
+    main()
