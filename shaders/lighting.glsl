@@ -58,11 +58,13 @@ float shadowFactor(int i, vec3 P, vec3 N, vec3 L) {
   int tx = int(floor(x));
   int ty = int(floor(y));
   int layer = frame.lights[i].shadow.x + face;
+  // A point light's cube has no outside: a tap beyond its face's edge reads the edge texel.
+  bool cube = FACET_LIGHT_KIND(i) == kLightPoint;
   precise float compared = z - bias;
   int lit = 0;
   for (int dy = -r; dy <= r; ++dy)
     for (int dx = -r; dx <= r; ++dx) {
-      int xi = tx + dx, yi = ty + dy;
+      int xi = cube ? clamp(tx + dx, 0, size - 1) : tx + dx, yi = cube ? clamp(ty + dy, 0, size - 1) : ty + dy;
       if (xi < 0 || yi < 0 || xi >= size || yi >= size) ++lit;
       else if (!(compared > texelFetch(shadowMaps, ivec3(xi, yi, layer), 0).r)) ++lit;
     }

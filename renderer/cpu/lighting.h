@@ -11,6 +11,7 @@
 // Lanes: a light that does not reach a lane (spot cut-off, N·L ≤ 0) leaves
 // that lane's sums as they were (a select), which is what the one-pixel code
 // does when it skips the light.
+#include <algorithm>
 #include <cstdint>
 
 #include <glm/vec3.hpp>
@@ -64,8 +65,9 @@ F specularTerm(const Vec3Of<F>& N, const Vec3Of<F>& L, const Vec3Of<F>& V, F shi
 
 // S of one light at world point P: PCF over (2r+1)² texels of the light's
 // map, a texel in shadow when z - bias > depth, bias = max(b_slope·(1 - N·L), b_min).
-// Outside the map (or beyond its far plane) counts as lit. One pixel at a
-// time: texel reads do not go into lanes.
+// Outside the map (or beyond its far plane) counts as lit. A point light's
+// cube has no outside: a tap beyond its face's edge reads the edge texel.
+// One pixel at a time: texel reads do not go into lanes.
 inline float shadowFactor(const ShadowMaps& maps, const FrameLight& light, const ShadowSettings& shadows, glm::vec3 P, glm::vec3 N,
                           glm::vec3 L) {
   if (!light.hasShadowMap) return 1.0f;
@@ -84,10 +86,11 @@ inline float shadowFactor(const ShadowMaps& maps, const FrameLight& light, const
   const int tx = static_cast<int>(std::floor(uc * static_cast<float>(size)));
   const int ty = static_cast<int>(std::floor(vc * static_cast<float>(size)));
   const int layer = light.shadowLayer + face;
+  const bool cube = light.light.kind == LightKind::Point;
   int lit = 0;
   for (int dy = -r; dy <= r; ++dy)
     for (int dx = -r; dx <= r; ++dx) {
-      const int x = tx + dx, y = ty + dy;
+      const int x = cube ? std::clamp(tx + dx, 0, size - 1) : tx + dx, y = cube ? std::clamp(ty + dy, 0, size - 1) : ty + dy;
       if (x < 0 || y < 0 || x >= size || y >= size) ++lit;
       else if (!(z - bias > maps.texelFetch(layer, x, y))) ++lit;
     }

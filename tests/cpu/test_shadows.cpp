@@ -148,3 +148,29 @@ TEST_CASE("the shadow bias is max(b_slope·(1 - N·L), b_min): a point just beyo
   CHECK(S(0.0205f, grazing, 0.0f) == 0.0f);  // without the slope term, b_min = 0.01 again
   CHECK(S(-0.1f, grazing, 0.04f) == 1.0f);   // nearer the light than the map: lit
 }
+
+TEST_CASE("PCF taps beyond a map's edge: lit for a spot or directional map, the edge texel for a point light's cube face") {
+  // Shadow-map coordinates are the world's own, a 16x16 map at depth 0.5 and a point at z = 0.6 behind
+  // it at u = 0.99, in the last column: a 3x3 kernel has three taps in column 16, beyond the edge.
+  cpu::ShadowMaps maps;
+  maps.reset(16, 6);
+  std::fill(maps.depth.begin(), maps.depth.end(), 0.5f);
+  ShadowSettings shadows;
+  shadows.pcfRadius = 1;
+  shadows.biasMin = 0.01f;
+  shadows.biasSlope = 0.0f;
+  const glm::vec3 P{0.99f, 0.5f, 0.6f}, N{0.0f, 0.0f, 1.0f}, L{0.0f, 0.0f, 1.0f};
+  const auto S = [&](LightKind kind) {
+    FrameLight light;
+    light.light.kind = kind;
+    light.light.position = {-10.0f, 0.5f, 0.5f};  // P - position lies along +x: cube face 0
+    light.hasShadowMap = true;
+    light.shadowLayer = 0;
+    light.shadowFromWorld.fill(glm::mat4(1.0f));
+    return cpu::shadowFactor(maps, light, shadows, P, N, L);
+  };
+  CHECK(S(LightKind::Directional) == doctest::Approx(3.0f / 9.0f));
+  CHECK(S(LightKind::Spot) == doctest::Approx(3.0f / 9.0f));
+  // The neighbouring cube face holds what lies beyond the edge: no lit seam where the face changes.
+  CHECK(S(LightKind::Point) == 0.0f);
+}
