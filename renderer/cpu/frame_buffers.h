@@ -22,6 +22,7 @@
 #include "cpu/interpolation.h"
 #include "cpu/lighting.h"
 #include "cpu/triangle_setup.h"
+#include "scene/memory_budget.h"
 
 namespace facet::cpu {
 
@@ -50,6 +51,9 @@ struct PassVertices {
 
   const float* at(std::uint32_t v) const { return window.data() + static_cast<std::size_t>(v) * static_cast<std::size_t>(stride); }
 };
+
+// The memory budget prices a vertex at kFrameBytesPerVertex: the most these take.
+static_assert((4 + kMaxVaryings) * sizeof(float) + sizeof(glm::vec4) + sizeof(std::uint8_t) + sizeof(glm::vec3) <= kFrameBytesPerVertex);
 
 struct WorkerBins {
   std::vector<BinnedTriangle> triangles;
