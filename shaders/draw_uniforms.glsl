@@ -8,20 +8,22 @@ uniform mat4 worldFromModel;       // TM
 uniform mat3 normalMatrix;         // (TM^T)^-1, upper 3x3
 uniform CourseMaterial material;   // k_e, k_a, k_d, k_s, n
 uniform vec3 baseColorFactor;      // O_d without its texture, linear RGB
+uniform ivec4 baseColorSampler;    // its texture's magFilter, minFilter, wrapS, wrapT: scene/scene.h's enum values
 
 layout(binding = 0) uniform sampler2DArray shadowMaps;  // pass 1: one S×S depth layer per light face
 layout(binding = 1) uniform usampler2D baseColorTexture; // sRGB-encoded bytes (GL_RGBA8UI), bottom row first
 
-// O_d = factor · COLOR_0 · texel at texture coordinates st (renderer/PIPELINE.md, section 8).
+// O_d = factor · COLOR_0 · texel at texture coordinates st, whose
+// derivatives are (dFdx(st), dFdy(st)) (renderer/PIPELINE.md, section 8).
 // FACET_COLORED: the draw's mesh has COLOR_0; FACET_TEXTURED: its material
 // has a base colour texture and its mesh TEXCOORD_0.
-vec3 baseColorAt(vec2 st, vec3 vertexColor) {
+vec3 baseColorAt(vec2 st, vec4 stDerivatives, vec3 vertexColor) {
   precise vec3 O = baseColorFactor;
 #if FACET_COLORED
   O = O * vertexColor;
 #endif
 #if FACET_TEXTURED
-  O = O * sampleBaseColor(baseColorTexture, st);
+  O = O * sampleTexture(baseColorTexture, baseColorSampler, st, stDerivatives);
 #endif
   return O;
 }

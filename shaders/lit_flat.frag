@@ -19,6 +19,7 @@ in vec3 vertexColor;
 layout(location = 0) out vec4 color;
 
 void main() {
+  vec4 stDerivatives = vec4(dFdx(st), dFdy(st));  // in uniform control flow, before anything can branch
   Illumination I = gl_FrontFacing ? Illumination(frontDiffuse, frontSpecular) : Illumination(backDiffuse, backSpecular);
-  color = encodeSrgb(shade(I, baseColorAt(st, vertexColor)));
+  color = encodeSrgb(shade(I, baseColorAt(st, stDerivatives, vertexColor)));
 }

@@ -17,8 +17,9 @@ in vec3 vertexColor;
 layout(location = 0) out vec4 color;
 
 void main() {
+  vec4 stDerivatives = vec4(dFdx(st), dFdy(st));  // in uniform control flow, before anything can branch
   vec3 P = worldPosition;
   vec3 N = normalize3(worldNormal);
   if (!gl_FrontFacing) N = -N;  // two-sided lighting: a back face is drawn only where it is not culled
-  color = encodeSrgb(shade(illuminate(material, P, N, viewVector(P)), baseColorAt(st, vertexColor)));
+  color = encodeSrgb(shade(illuminate(material, P, N, viewVector(P)), baseColorAt(st, stDerivatives, vertexColor)));
 }

@@ -49,9 +49,9 @@ const float kExp2Series[10] = float[10](1.0, 0.693147182, 0.240226507, 0.0555041
                                         1.52527336e-05, 1.32154867e-06, 1.01780863e-07);
 const float kSqrtTwo = 1.41421354;
 
-float power(float x, float y) {
-  bool positive = x > 0.0;
-  int bits = floatBitsToInt(positive ? x : 1.0);
+// log2(x) for x > 0 by the series above (x ≤ 0 or NaN: not defined here; power guards it).
+float log2Of(float x) {
+  int bits = floatBitsToInt(x);
   precise float mantissa = intBitsToFloat((bits & 0x007FFFFF) | 0x3F800000);
   bool above = mantissa > kSqrtTwo;
   precise float m = above ? mantissa * 0.5 : mantissa;
@@ -61,6 +61,12 @@ float power(float x, float y) {
   precise float series = kLog2Series[4];
   for (int k = 3; k >= 0; --k) series = kLog2Series[k] + s2 * series;
   precise float log2x = float(e) + s * series;
+  return log2x;
+}
+
+float power(float x, float y) {
+  bool positive = x > 0.0;
+  precise float log2x = log2Of(positive ? x : 1.0);
 
   precise float product = y * log2x;
   bool inRange = product >= -126.0;  // false for NaN

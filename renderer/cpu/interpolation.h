@@ -9,6 +9,8 @@
 #include <emmintrin.h>
 #endif
 
+#include <glm/vec4.hpp>
+
 #include "cpu/clipper.h"
 #include "cpu/plane_equations.h"
 
@@ -39,6 +41,19 @@ class Interpolation {
   void varyingsAt(int px, int py, float* out) const {
     const float w = 1.0f / oneOverW_.at(px, py);
     for (int k = 0; k < count_; ++k) out[k] = varying_[static_cast<std::size_t>(k)].at(px, py) * w;
+  }
+
+  // Varying k at pixel (px, py), by the operations of varyingsAt.
+  float varyingAt(int k, int px, int py) const { return varying_[static_cast<std::size_t>(k)].at(px, py) * (1.0f / oneOverW_.at(px, py)); }
+
+  // dFdx and dFdy of varyings k, k + 1 as llvmpipe computes them
+  // (PIPELINE.md, section 8): differences within the pixel's 2×2 quad, per
+  // row for x and per column for y, at pixels inside the triangle or not.
+  // (d(k)/dx, d(k+1)/dx, d(k)/dy, d(k+1)/dy).
+  glm::vec4 quadDerivatives(int k, int px, int py) const {
+    const int qx = px & ~1, qy = py & ~1;
+    return {varyingAt(k, qx + 1, py) - varyingAt(k, qx, py), varyingAt(k + 1, qx + 1, py) - varyingAt(k + 1, qx, py),
+            varyingAt(k, px, qy + 1) - varyingAt(k, px, qy), varyingAt(k + 1, px, qy + 1) - varyingAt(k + 1, px, qy)};
   }
 
 #if defined(__SSE2__)

@@ -38,7 +38,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
   std::uint32_t current = kNoTriangle;
   Interpolation* in = nullptr;
   const CourseMaterial* material = nullptr;
-  const Image* texture = nullptr;
+  const Texture* texture = nullptr;
   bool colored = false;
   int used = 0;  // varyings set up for the triangle: a prefix of the layout
   bool back = false;
@@ -59,7 +59,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
         material = &frame.materials[static_cast<std::size_t>(instance.material)];
         texture = material->baseColorTexture >= 0 && !mesh.texcoords.empty()
-                      ? &scene.textures[static_cast<std::size_t>(material->baseColorTexture)].image
+                      ? &scene.textures[static_cast<std::size_t>(material->baseColorTexture)]
                       : nullptr;
         colored = !mesh.colors.empty();
         used = colored ? layout.count : (kMode == ShadingMode::Flat && !texture ? 0 : layout.color);
@@ -87,7 +87,8 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
       // O_d = factor · COLOR_0 · texel (PIPELINE.md, section 8)
       glm::vec3 baseColor = material->baseColor;
       if (colored) baseColor *= glm::vec3(v[layout.color], v[layout.color + 1], v[layout.color + 2]);
-      if (texture) baseColor *= sampleBaseColor(*texture, {v[layout.uv], v[layout.uv + 1]});
+      if (texture)
+        baseColor *= sampleTexture(*texture, material->baseColorSampler, {v[layout.uv], v[layout.uv + 1]}, in->quadDerivatives(layout.uv, px, py));
       glm::vec3 color;
       if constexpr (kMode == ShadingMode::Phong) {
         // N is normalized (and negated on a back face, two-sided lighting) in the batch

@@ -62,11 +62,11 @@ inline constexpr float kExp2Series[10] = {1.0f,           0.693147182f,    0.240
                                           0.00133335579f, 0.000154035297f, 1.52527336e-05f, 1.32154867e-06f, 1.01780863e-07f};
 inline constexpr float kSqrtTwo = 1.41421354f;
 
+// log2(x) for x > 0 by the series above (x ≤ 0 or NaN: not defined here; power guards it).
 template <class F>
-F power(F x, F y) {
+F log2Of(F x) {
   using I = IntOf<F>;
-  const auto positive = x > F(0.0f);
-  const I bits = bitsOf(select(positive, x, F(1.0f)));
+  const I bits = bitsOf(x);
   const F mantissa = floatOfBits((bits & I(0x007FFFFF)) | I(0x3F800000));
   const auto above = mantissa > F(kSqrtTwo);
   const F m = select(above, mantissa * F(0.5f), mantissa);
@@ -75,7 +75,14 @@ F power(F x, F y) {
   const F s2 = s * s;
   F series = F(kLog2Series[4]);
   for (int k = 3; k >= 0; --k) series = F(kLog2Series[k]) + s2 * series;
-  const F log2x = toFloat(e) + s * series;
+  return toFloat(e) + s * series;
+}
+
+template <class F>
+F power(F x, F y) {
+  using I = IntOf<F>;
+  const auto positive = x > F(0.0f);
+  const F log2x = log2Of(select(positive, x, F(1.0f)));
 
   const F product = y * log2x;
   const auto inRange = product >= F(-126.0f);  // false for NaN

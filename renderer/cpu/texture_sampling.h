@@ -1,21 +1,34 @@
 #pragma once
-// Base colour texture lookup (renderer/PIPELINE.md, section 8).
+// Texture lookup: mipmap level of detail, the sampler's filters and wraps
+// (renderer/PIPELINE.md, section 8).
 // Mirror: shaders/texture.glsl — same functions, same order.
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "image/image.h"
+#include "scene/scene.h"
 
 namespace facet::cpu {
 
 // REPEAT: i mod size in [0, size), with % only on non-negative operands.
 inline int wrap(int i, int size) { return i >= 0 ? i % size : size - 1 - (-1 - i) % size; }
 
+// The texel index i on an axis of `size` texels under `mode`.
+int wrapIndex(int i, int size, Wrap mode);
+
 // a + t·(b - a), written out on both sides (GLSL's mix may round as a·(1 - t) + b·t).
 glm::vec3 lerp(glm::vec3 a, glm::vec3 b, float t);
 
-// Bilinear from four texels, REPEAT wrap, no mipmaps; t = 0 is the top of the
-// glTF image and facet::Image stores the bottom row first.
-glm::vec3 sampleBaseColor(const Image& image, glm::vec2 st);
+// One level: NEAREST or LINEAR at texture coordinates st (t = 0 is the top
+// of the glTF image; facet::Image stores the bottom row first), linear RGB.
+glm::vec3 sampleLevel(const Image& level, bool linear, Wrap wrapS, Wrap wrapT, glm::vec2 st);
+
+// ρ² of section 8 from derivatives (ds/dx, dt/dx, ds/dy, dt/dy) and level 0's size.
+float footprintSquared(glm::vec4 derivatives, int width, int height);
+
+// The texture through `sampler` at st, derivatives as dFdx(st), dFdy(st)
+// (Interpolation::quadDerivatives), linear RGB.
+glm::vec3 sampleTexture(const Texture& texture, const Sampler& sampler, glm::vec2 st, glm::vec4 derivatives);
 
 }  // namespace facet::cpu

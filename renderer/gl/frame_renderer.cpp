@@ -186,6 +186,7 @@ bool GlFrameRenderer::preparePrograms(const FrameInputs& frame) {
                                          .shininess = at("material.shininess"),
                                          .metallic = at("material.metallic"),
                                          .baseColorFactor = at("baseColorFactor"),
+                                         .baseColorSampler = at("baseColorSampler"),
                                          .program = std::move(program)});
     compiled = true;
   }
@@ -287,6 +288,12 @@ void GlFrameRenderer::drawInstance(const LitProgram& lit, const FrameInputs& fra
   gl_.glProgramUniform1f(program, lit.shininess, material.shininess);
   gl_.glProgramUniform1f(program, lit.metallic, material.metallic);
   gl_.glProgramUniform3fv(program, lit.baseColorFactor, 1, glm::value_ptr(material.baseColor));
+  const Sampler& sampler = material.baseColorSampler;
+  static_assert(static_cast<int>(MagFilter::Linear) == 1 && static_cast<int>(MinFilter::NearestMipmapNearest) == 2 &&
+                    static_cast<int>(MinFilter::LinearMipmapLinear) == 5 && static_cast<int>(Wrap::MirroredRepeat) == 2,
+                "shaders/texture.glsl reads these values");
+  gl_.glProgramUniform4i(program, lit.baseColorSampler, static_cast<GLint>(sampler.mag), static_cast<GLint>(sampler.min),
+                         static_cast<GLint>(sampler.wrapS), static_cast<GLint>(sampler.wrapT));
   gl_.glBindTextureUnit(kBaseColorTextureUnit, textured ? scene_.texture(material.baseColorTexture) : 0);
 
   if (flat) {

@@ -59,6 +59,7 @@ class GlFrameRenderer {
     GLint clipFromModel, worldFromModel, normalMatrix;
     GLint emissive, ka, kd, ks, shininess, metallic;
     GLint baseColorFactor;
+    GLint baseColorSampler;
     ShaderProgram program;
   };
   struct DepthProgram {

@@ -65,12 +65,14 @@ namespace facet::gl {
   X(PFNGLNAMEDBUFFERSUBDATAPROC, glNamedBufferSubData)                        \
   X(PFNGLNAMEDFRAMEBUFFERDRAWBUFFERPROC, glNamedFramebufferDrawBuffer)        \
   X(PFNGLNAMEDFRAMEBUFFERREADBUFFERPROC, glNamedFramebufferReadBuffer)        \
+  X(PFNGLNAMEDFRAMEBUFFERDRAWBUFFERSPROC, glNamedFramebufferDrawBuffers)      \
   X(PFNGLNAMEDFRAMEBUFFERRENDERBUFFERPROC, glNamedFramebufferRenderbuffer)    \
   X(PFNGLNAMEDFRAMEBUFFERTEXTURELAYERPROC, glNamedFramebufferTextureLayer)    \
   X(PFNGLNAMEDRENDERBUFFERSTORAGEPROC, glNamedRenderbufferStorage)            \
   X(PFNGLPIXELSTOREIPROC, glPixelStorei)                                      \
   X(PFNGLPROGRAMUNIFORM1FPROC, glProgramUniform1f)                            \
   X(PFNGLPROGRAMUNIFORM1IPROC, glProgramUniform1i)                            \
+  X(PFNGLPROGRAMUNIFORM4IPROC, glProgramUniform4i)                            \
   X(PFNGLPROGRAMUNIFORM1UIPROC, glProgramUniform1ui)                          \
   X(PFNGLPROGRAMUNIFORM3FVPROC, glProgramUniform3fv)                          \
   X(PFNGLPROGRAMUNIFORMMATRIX3FVPROC, glProgramUniformMatrix3fv)              \

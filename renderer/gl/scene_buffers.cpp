@@ -48,16 +48,21 @@ MeshBuffers uploadMesh(const GlFunctions& gl, const Mesh& mesh) {
   return buffers;
 }
 
-GlObject uploadTexture(const GlFunctions& gl, const Image& image) {
+GlObject uploadTexture(const GlFunctions& gl, const Texture& texture) {
+  const Image& image = texture.image;
   if (image.empty()) return {};
   // Unsigned integer texels: the shader turns bytes into [0,1] itself (shaders/texture.glsl says why).
-  GlObject texture = createTexture(gl, GL_TEXTURE_2D);
-  gl.glTextureStorage2D(texture.id(), 1, GL_RGBA8UI, image.width(), image.height());
-  // Read with texelFetch only; integer textures are complete only with NEAREST.
-  gl.glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  gl.glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  gl.glTextureSubImage2D(texture.id(), 0, 0, 0, image.width(), image.height(), GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, image.data());
-  return texture;
+  GlObject object = createTexture(gl, GL_TEXTURE_2D);
+  gl.glTextureStorage2D(object.id(), texture.levelCount(), GL_RGBA8UI, image.width(), image.height());
+  // Read with texelFetch only; integer textures are complete only with NEAREST filters.
+  gl.glTextureParameteri(object.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+  gl.glTextureParameteri(object.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  // The levels the loader built (image/mipmap.h), as they are: both backends read the same bytes.
+  for (int k = 0; k < texture.levelCount(); ++k) {
+    const Image& level = texture.level(k);
+    gl.glTextureSubImage2D(object.id(), k, 0, 0, level.width(), level.height(), GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, level.data());
+  }
+  return object;
 }
 
 }  // namespace
@@ -68,7 +73,7 @@ SceneBuffers::SceneBuffers(const GlFunctions& gl, const Scene& scene) {
   meshes_.reserve(scene.meshes.size());
   for (const Mesh& mesh : scene.meshes) meshes_.push_back(uploadMesh(gl, mesh));
   textures_.reserve(scene.textures.size());
-  for (const Texture& texture : scene.textures) textures_.push_back(uploadTexture(gl, texture.image));
+  for (const Texture& texture : scene.textures) textures_.push_back(uploadTexture(gl, texture));
 }
 
 const MeshBuffers& SceneBuffers::mesh(int index) const {

@@ -1,10 +1,12 @@
 #include "pipeline/frame_checks.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "common/error.h"
 #include "common/quote.h"
+#include "image/mipmap.h"
 #include "scene/memory_budget.h"
 
 namespace facet {
@@ -79,6 +81,15 @@ void checkScene(const Scene& scene) {
                   std::to_string(scene.meshes.size()) + ")");
   }
   for (std::size_t m = 0; m < scene.meshes.size(); ++m) checkMesh(scene, m);
+  // Both backends read a texture's levels by mipLevels' sizes.
+  for (std::size_t t = 0; t < scene.textures.size(); ++t) {
+    const Texture& texture = scene.textures[t];
+    bool laidOut = texture.mips.size() == static_cast<std::size_t>(texture.image.empty() ? 0 : mipLevelCount(texture.image.width(), texture.image.height()));
+    for (int k = 1; laidOut && k < texture.levelCount(); ++k)
+      laidOut = texture.level(k).width() == std::max(1, texture.level(k - 1).width() / 2) &&
+                texture.level(k).height() == std::max(1, texture.level(k - 1).height() / 2);
+    if (!laidOut) throw Error("texture " + std::to_string(t) + " '" + texture.name + "': its mipmaps are not image/mipmap.h's levels of its image");
+  }
   for (std::size_t m = 0; m < scene.materials.size(); ++m) {
     const int texture = scene.materials[m].baseColorTexture;
     if (texture < -1 || texture >= static_cast<int>(scene.textures.size()) ||

@@ -11,6 +11,8 @@
 #include "math/projection.h"
 #include "math/viewport.h"
 #include "pipeline/frame_checks.h"
+#include "pipeline/material_coefficients.h"
+#include "pipeline/texture_filter.h"
 #include "pipeline/view_setup.h"
 
 namespace facet {
@@ -42,7 +44,12 @@ FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings)
   f.clipFromWorld = f.clipFromEye * f.eyeFromWorld;
   f.windowFromNdc = viewportMatrix(f.width, f.height);
 
-  for (const Material& m : scene.materials) f.materials.push_back(courseMaterial(m, settings.material));
+  for (const Material& m : scene.materials) {
+    CourseMaterial course = courseMaterial(m, settings.material);
+    if (course.baseColorTexture >= 0 && static_cast<std::size_t>(course.baseColorTexture) < scene.textures.size())  // else refused by checkFrame
+      course.baseColorSampler = filteredSampler(scene.textures[static_cast<std::size_t>(course.baseColorTexture)].sampler, settings.textures.filter);
+    f.materials.push_back(course);
+  }
   f.materials.push_back(courseMaterial(Material{}, settings.material));  // glTF's default material
   const int defaultMaterial = static_cast<int>(f.materials.size() - 1);
 

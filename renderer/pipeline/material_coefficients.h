@@ -13,6 +13,7 @@ namespace facet {
 struct CourseMaterial {
   glm::vec3 baseColor{1.0f};  // O_d, linear RGB (multiplied by the texture when there is one)
   int baseColorTexture = -1;  // index into Scene::textures, -1 = none
+  Sampler baseColorSampler;   // its sampler with textures.filter applied (pipeline/texture_filter.h)
   glm::vec3 emissive{0.0f};   // k_e, linear RGB
   float ka = 0, kd = 0, ks = 0;
   float shininess = 1;        // n

@@ -8,6 +8,7 @@
 
 #include "common/error.h"
 #include "common/quote.h"
+#include "scene/gltf_sampler.h"
 
 namespace facet {
 namespace {
@@ -236,6 +237,60 @@ void checkTextureSamplers(const json& document) {
   }
 }
 
+// glTF 2.0, 5.26 "sampler": magFilter, minFilter, wrapS and wrapT are GL
+// enums from short lists; another number is a broken file, named here,
+// rather than a filter quietly chosen for it.
+template <std::size_t N>
+void checkSamplerKey(const json& sampler, const std::string& name, const char* key, const std::array<GlEnum, N>& codes) {
+  const auto it = sampler.find(key);
+  if (it == sampler.end()) return;
+  std::uint64_t value = 0;
+  if (nonNegativeInteger(*it, value) && value < 65536 && enumIndex(codes, static_cast<long long>(value))) return;
+  std::string allowed;
+  for (const GlEnum& e : codes) allowed += (allowed.empty() ? "" : ", ") + std::string(e.name) + " (" + std::to_string(e.code) + ")";
+  throw Error(name + ": " + key + " " + show(it->dump()) + " is not one of " + allowed);
+}
+
+void checkSamplers(const json& document) {
+  const json& samplers = arrayOf(document, "samplers");
+  for (std::size_t i = 0; i < samplers.size(); ++i) {
+    if (!samplers[i].is_object()) continue;
+    const std::string name = named("samplers", i, samplers[i]);
+    checkSamplerKey(samplers[i], name, "magFilter", kMagFilterCodes);
+    checkSamplerKey(samplers[i], name, "minFilter", kMinFilterCodes);
+    checkSamplerKey(samplers[i], name, "wrapS", kWrapCodes);
+    checkSamplerKey(samplers[i], name, "wrapT", kWrapCodes);
+  }
+}
+
+// glTF 2.0, 5.23 "textureInfo.index": a material's texture (base colour,
+// metallic-roughness, normal, occlusion, emissive) is one that exists.
+void checkMaterialTextures(const json& document) {
+  const json& materials = arrayOf(document, "materials");
+  const std::size_t textures = arrayOf(document, "textures").size();
+  const auto check = [&](std::size_t m, const json& owner, const char* key, const std::string& path) {
+    if (!owner.is_object()) return;
+    const auto info = owner.find(key);
+    if (info == owner.end() || !info->is_object()) return;
+    const auto index = info->find("index");
+    std::uint64_t t = 0;
+    if (index == info->end())
+      throw Error(named("materials", m, materials[m]) + ": " + path + " has no index");
+    if (!nonNegativeInteger(*index, t) || t >= textures)
+      throw Error(named("materials", m, materials[m]) + ": " + path + ".index " + show(index->dump()) +
+                  " does not exist (UNRESOLVED_REFERENCE: the file has " + countOf(textures, "texture") + ")");
+  };
+  for (std::size_t m = 0; m < materials.size(); ++m) {
+    const json& material = materials[m];
+    if (!material.is_object()) continue;
+    if (const auto pbr = material.find("pbrMetallicRoughness"); pbr != material.end()) {
+      check(m, *pbr, "baseColorTexture", "pbrMetallicRoughness.baseColorTexture");
+      check(m, *pbr, "metallicRoughnessTexture", "pbrMetallicRoughness.metallicRoughnessTexture");
+    }
+    for (const char* key : {"normalTexture", "occlusionTexture", "emissiveTexture"}) check(m, material, key, key);
+  }
+}
+
 // KHR_lights_punctual: "type" is one of directional, point, spot; a spot
 // light has a "spot" object whose angles satisfy
 // 0 ≤ innerConeAngle < outerConeAngle ≤ π/2 (defaults 0 and π/4).
@@ -278,6 +333,8 @@ void checkGltfDocument(const std::string& path, const nlohmann::json& document, 
     checkBufferUris(document, folder, maxFileBytes);
     checkNodeHierarchy(document);
     checkTextureSamplers(document);
+    checkSamplers(document);
+    checkMaterialTextures(document);
     checkLights(document);
   } catch (const Error& e) {
     throw Error(path + ": " + e.what());

@@ -28,10 +28,12 @@
 #include "common/error.h"
 #include "common/json_text.h"
 #include "common/quote.h"
+#include "image/mipmap.h"
 #include "math/transforms.h"
 #include "scene/gltf_accessor.h"
 #include "scene/gltf_document_checks.h"
 #include "scene/gltf_file_checks.h"
+#include "scene/gltf_sampler.h"
 #include "scene/memory_budget.h"
 #include "scene/vertex_normals.h"
 #include "settings/render_settings.h"
@@ -178,8 +180,7 @@ bool loadImage(tinygltf::Image* image, const int index, std::string* err, std::s
   if (w <= 0 || h <= 0 || w > kMaxTextureSide || h > kMaxTextureSide)
     return skip("image size " + std::to_string(w) + "x" + std::to_string(h) + " is out of range");
   try {  // from the header, before anything is decoded
-    loading.budget->charge(static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h) * 4,
-                           name + ": " + std::to_string(w) + "x" + std::to_string(h) + " RGBA pixels");
+    loading.budget->charge(mipChainPixels(w, h) * 4, name + ": " + std::to_string(w) + "x" + std::to_string(h) + " RGBA pixels and their mipmaps");
   } catch (const Error& e) {
     loading.failure = e;
     if (err) *err += e.what();
@@ -221,6 +222,16 @@ glm::vec3 vec3Of(const std::vector<double>& v, glm::vec3 fallback) {
 
 float clamp01(double v, float fallback) { return std::isfinite(v) ? std::clamp(static_cast<float>(v), 0.0f, 1.0f) : fallback; }
 
+// A sampler's codes, checked by checkGltfDocument (an absent key keeps facet's choice).
+Sampler samplerOf(const tinygltf::Sampler& in) {
+  Sampler out;
+  if (const auto k = enumIndex(kMagFilterCodes, in.magFilter)) out.mag = static_cast<MagFilter>(*k);
+  if (const auto k = enumIndex(kMinFilterCodes, in.minFilter)) out.min = static_cast<MinFilter>(*k);
+  if (const auto k = enumIndex(kWrapCodes, in.wrapS)) out.wrapS = static_cast<Wrap>(*k);
+  if (const auto k = enumIndex(kWrapCodes, in.wrapT)) out.wrapT = static_cast<Wrap>(*k);
+  return out;
+}
+
 // Each texture gets its image's pixels, decoded once: the last texture to
 // use an image takes them over, any other gets a copy, priced against the budget.
 void convertTextures(const tinygltf::Model& model, const std::map<int, std::string>& encoded, MemoryBudget& budget, Scene& scene,
@@ -231,7 +242,7 @@ void convertTextures(const tinygltf::Model& model, const std::map<int, std::stri
     const int source = model.textures[t].source;
     if (source >= 0 && static_cast<std::size_t>(source) < model.images.size() && lastUse[source] != t && encoded.count(source)) {
       const tinygltf::Image& image = model.images[static_cast<std::size_t>(source)];
-      budget.charge(static_cast<std::uint64_t>(image.width) * static_cast<std::uint64_t>(image.height) * 4,
+      budget.charge(mipChainPixels(image.width, image.height) * 4,
                     at("textures", t) + ": another copy of the " + std::to_string(image.width) + "x" + std::to_string(image.height) +
                         " pixels of " + at("images", static_cast<std::size_t>(source)));
     }
@@ -253,6 +264,9 @@ void convertTextures(const tinygltf::Model& model, const std::map<int, std::stri
         texture.image = image->second;
       }
     }
+    texture.mips = mipLevels(texture.image);
+    if (const int s = model.textures[t].sampler; s >= 0 && static_cast<std::size_t>(s) < model.samplers.size())
+      texture.sampler = samplerOf(model.samplers[static_cast<std::size_t>(s)]);
     scene.textures.push_back(std::move(texture));
   }
 }

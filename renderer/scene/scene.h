@@ -47,9 +47,26 @@ struct Material {
   bool doubleSided = false;
 };
 
+// A glTF sampler (5.26); its absence means REPEAT and filters of the
+// renderer's choice, which for facet are bilinear and trilinear.
+enum class MagFilter { Nearest, Linear };
+enum class MinFilter { Nearest, Linear, NearestMipmapNearest, LinearMipmapNearest, NearestMipmapLinear, LinearMipmapLinear };
+enum class Wrap { Repeat, ClampToEdge, MirroredRepeat };
+struct Sampler {
+  MagFilter mag = MagFilter::Linear;
+  MinFilter min = MinFilter::LinearMipmapLinear;
+  Wrap wrapS = Wrap::Repeat, wrapT = Wrap::Repeat;
+  friend bool operator==(const Sampler&, const Sampler&) = default;
+};
+
 struct Texture {
   std::string name;
-  Image image;                     // RGBA8, sRGB-encoded as glTF stores base colour
+  Image image;                     // level 0: RGBA8, sRGB-encoded as glTF stores base colour
+  std::vector<Image> mips;         // levels 1 .. down to 1×1 (image/mipmap.h), built once by the loader
+  Sampler sampler;
+
+  int levelCount() const { return 1 + static_cast<int>(mips.size()); }
+  const Image& level(int k) const { return k == 0 ? image : mips[static_cast<std::size_t>(k - 1)]; }
 };
 
 enum class ProjectionKind { Perspective, Parallel, Count };

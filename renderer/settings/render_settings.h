@@ -55,6 +55,17 @@ inline constexpr std::array<std::string_view, static_cast<int>(ProjectionKind::C
 enum class Source { Auto, Manual, Count };
 inline constexpr std::array<std::string_view, static_cast<int>(Source::Count)> kSourceNames = {"auto", "manual"};
 
+// auto: each texture's glTF sampler (REPEAT, bilinear and trilinear where
+// the file gives none); nearest, bilinear, trilinear: that filter for every
+// texture, magnified and minified (wraps stay the sampler's).
+enum class TextureFilter { Auto, Nearest, Bilinear, Trilinear, Count };
+inline constexpr std::array<std::string_view, static_cast<int>(TextureFilter::Count)> kTextureFilterNames = {"auto", "nearest", "bilinear",
+                                                                                                            "trilinear"};
+
+struct TextureSettings {
+  TextureFilter filter = TextureFilter::Auto;
+};
+
 struct CameraSettings {
   Source source = Source::Auto;
   glm::vec3 eye{0.0f, 1.0f, 5.0f};        // P_eye, world space (manual)
@@ -101,6 +112,7 @@ struct RenderSettings {
   bool cullBackFaces = true;
   MaterialOverrides material;
   ShadowSettings shadows;
+  TextureSettings textures;
   glm::vec3 background{0.02f, 0.025f, 0.035f};  // linear RGB
 };
 

@@ -72,6 +72,9 @@ void visitSettings(Visitor& v, RenderSettings& s) {
     v.field({"biasMin", "b_min of bias = max(b_slope (1 - N.L), b_min)", 0, 1}, sh.biasMin);
     v.field({"pcfRadius", "r: PCF over (2r+1)^2 samples, 0 = hard", 0, kMaxPcfRadius}, sh.pcfRadius);
   });
+  v.group("textures", [&] {
+    v.choice({"filter", "auto (each texture's sampler), nearest, bilinear or trilinear (mipmapped)"}, s.textures.filter, kTextureFilterNames);
+  });
   v.field({"background", "linear RGB of empty pixels, each in [0, 1]", 0, 1, FieldKind::Color}, s.background);
 }
 

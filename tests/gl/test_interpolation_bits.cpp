@@ -1,6 +1,8 @@
-// Depth and attribute interpolation (renderer/PIPELINE.md, section 6): the
-// CPU's plane equations (renderer/cpu/plane_equations.h) against what
-// llvmpipe writes, bit for bit, on random triangles.
+// Depth and attribute interpolation (renderer/PIPELINE.md, section 6) and
+// the derivatives textures take their level of detail from (section 8): the
+// CPU's plane equations (renderer/cpu/plane_equations.h) and quad
+// differences (cpu::Interpolation::quadDerivatives) against what llvmpipe
+// writes, bit for bit, on random triangles.
 #include <cmath>
 #include <cstring>
 #include <optional>
@@ -11,6 +13,7 @@
 #include <doctest/doctest.h>
 
 #include "cpu/clipper.h"
+#include "cpu/interpolation.h"
 #include "cpu/plane_equations.h"
 #include "cpu/rasterize.h"
 #include "cpu/triangle_setup.h"
@@ -29,12 +32,14 @@ bool sameBits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 }  // namespace
 
-TEST_CASE("llvmpipe's depth and perspective-correct attributes equal the CPU's plane equations bit for bit") {
+TEST_CASE("llvmpipe's depth, perspective-correct attributes and dFdx/dFdy equal the CPU's plane equations and quad differences bit for bit") {
   test::GlHarness harness;
   const gl::GlFunctions& gl = harness.gl;
   const std::string vert = "#version 450 core\nlayout(location = 0) in vec4 clipPosition;\nlayout(location = 1) in vec4 vertexValue;\n"
                            "out vec4 value;\nvoid main() { gl_Position = clipPosition; value = vertexValue; }\n";
-  const std::string frag = "#version 450 core\nin vec4 value;\nlayout(location = 0) out vec4 color;\nvoid main() { color = value; }\n";
+  const std::string frag =
+      "#version 450 core\nin vec4 value;\nlayout(location = 0) out vec4 color;\nlayout(location = 1) out vec4 derivatives;\n"
+      "void main() { color = value; derivatives = vec4(dFdx(value.xy), dFdy(value.xy)); }\n";
   const gl::ShaderProgram program = gl::buildProgram(gl, {"probe.vert", "probe.frag"}, "", [&](std::string_view name) {
     if (name == "probe.vert") return std::optional<std::string_view>(vert);
     if (name == "probe.frag") return std::optional<std::string_view>(frag);
@@ -43,11 +48,16 @@ TEST_CASE("llvmpipe's depth and perspective-correct attributes equal the CPU's p
 
   const gl::GlObject color = gl::createRenderbuffer(gl);
   gl.glNamedRenderbufferStorage(color.id(), GL_RGBA32F, kWidth, kHeight);
+  const gl::GlObject derivative = gl::createRenderbuffer(gl);
+  gl.glNamedRenderbufferStorage(derivative.id(), GL_RGBA32F, kWidth, kHeight);
   const gl::GlObject depth = gl::createRenderbuffer(gl);
   gl.glNamedRenderbufferStorage(depth.id(), GL_DEPTH_COMPONENT32F, kWidth, kHeight);
   const gl::GlObject framebuffer = gl::createFramebuffer(gl);
   gl.glNamedFramebufferRenderbuffer(framebuffer.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color.id());
+  gl.glNamedFramebufferRenderbuffer(framebuffer.id(), GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, derivative.id());
   gl.glNamedFramebufferRenderbuffer(framebuffer.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth.id());
+  const GLenum drawBuffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  gl.glNamedFramebufferDrawBuffers(framebuffer.id(), 2, drawBuffers);
   const gl::GlObject buffer = gl::createBuffer(gl);
   gl.glNamedBufferStorage(buffer.id(), 3 * 8 * sizeof(float), nullptr, GL_DYNAMIC_STORAGE_BIT);
   const gl::GlObject vertexArray = gl::createVertexArray(gl);
@@ -68,8 +78,8 @@ TEST_CASE("llvmpipe's depth and perspective-correct attributes equal the CPU's p
 
   std::mt19937 random(174);
   std::uniform_real_distribution<float> unit(-1.0f, 1.0f), wRange(0.3f, 4.0f), values(-100.0f, 100.0f);
-  std::vector<float> colors(4 * kWidth * kHeight), depths(kWidth * kHeight);
-  long pixels = 0, depthMismatches = 0, attributeMismatches = 0, coverageMismatches = 0;
+  std::vector<float> colors(4 * kWidth * kHeight), derivatives(4 * kWidth * kHeight), depths(kWidth * kHeight);
+  long pixels = 0, depthMismatches = 0, attributeMismatches = 0, derivativeMismatches = 0, coverageMismatches = 0;
   std::string firstMismatch;
   const float halfWidth = 0.5f * kWidth, halfHeight = 0.5f * kHeight;
   for (int t = 0; t < 600; ++t) {
@@ -87,7 +97,10 @@ TEST_CASE("llvmpipe's depth and perspective-correct attributes equal the CPU's p
     const float one = 1.0f;
     gl.glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &one);
     gl.glDrawArrays(GL_TRIANGLES, 0, 3);
+    gl.glNamedFramebufferReadBuffer(framebuffer.id(), GL_COLOR_ATTACHMENT0);
     gl.glReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_FLOAT, colors.data());
+    gl.glNamedFramebufferReadBuffer(framebuffer.id(), GL_COLOR_ATTACHMENT1);
+    gl.glReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_FLOAT, derivatives.data());
     gl.glReadPixels(0, 0, kWidth, kHeight, GL_DEPTH_COMPONENT, GL_FLOAT, depths.data());
     REQUIRE(gl.glGetError() == GL_NO_ERROR);
 
@@ -104,6 +117,7 @@ TEST_CASE("llvmpipe's depth and perspective-correct attributes equal the CPU's p
     // Per pixel: the planes of the fan triangle that covers it (one at most: a fan covers each pixel once).
     struct Planes {
       cpu::Plane z, oneOverW, attribute[4];
+      cpu::Interpolation interpolation;  // the renderer's own, for the derivatives
     };
     std::vector<Planes> fanPlanes;
     std::vector<int> coveredBy(kWidth * kHeight, -1);
@@ -122,6 +136,11 @@ TEST_CASE("llvmpipe's depth and perspective-correct attributes equal the CPU's p
       p.oneOverW = cpu::planeOf(s, a.invW, b.invW, c.invW);
       for (std::size_t k = 0; k < 4; ++k)
         p.attribute[k] = cpu::planeOf(s, a.varyings[k] * a.invW, b.varyings[k] * b.invW, c.varyings[k] * c.invW);
+      const cpu::InterpolationVertex corners[3] = {{a.x, a.y, a.z, a.invW, a.varyings.data()},
+                                                   {b.x, b.y, b.z, b.invW, b.varyings.data()},
+                                                   {c.x, c.y, c.z, c.invW, c.varyings.data()}};
+      p.interpolation = cpu::Interpolation(corners[0], corners[1], corners[2]);
+      p.interpolation.setUpVaryings(4);
       const int index = static_cast<int>(fanPlanes.size());
       fanPlanes.push_back(p);
       cpu::rasterize(snapped, box, [&](int px, int py) { coveredBy[static_cast<std::size_t>(py * kWidth + px)] = index; });
@@ -156,12 +175,22 @@ TEST_CASE("llvmpipe's depth and perspective-correct attributes equal the CPU's p
             ++attributeMismatches;
           }
         }
+        const glm::vec4 expectedDerivatives = p->interpolation.quadDerivatives(0, px, py);
+        for (int k = 0; k < 4; ++k)
+          if (!sameBits(derivatives[4 * i + static_cast<std::size_t>(k)], expectedDerivatives[k])) {
+            if (firstMismatch.empty())
+              firstMismatch = "triangle " + std::to_string(t) + " pixel " + std::to_string(px) + "," + std::to_string(py) + ": derivative " +
+                              std::to_string(derivatives[4 * i + static_cast<std::size_t>(k)]) + " vs " + std::to_string(expectedDerivatives[k]);
+            ++derivativeMismatches;
+          }
       }
   }
   CAPTURE(firstMismatch);
-  MESSAGE(pixels << " pixels: " << depthMismatches << " depth and " << attributeMismatches << " attribute mismatches");
+  MESSAGE(pixels << " pixels: " << depthMismatches << " depth, " << attributeMismatches << " attribute and " << derivativeMismatches
+                 << " derivative mismatches");
   CHECK(pixels > 100000);
   CHECK(coverageMismatches == 0);
   CHECK(depthMismatches == 0);
   CHECK(attributeMismatches == 0);
+  CHECK(derivativeMismatches == 0);
 }

@@ -355,14 +355,15 @@ TEST_CASE("glTF bad input: memory is priced from counts and image headers before
                        doctest::Contains("zeros_accessor_2p26.gltf: meshes[0].primitives[0]: 67108864 vertices (accessors[0]) and 67108864 "
                                          "indices need 1.88 GB, more than the scene budget of 1 GiB"),
                        Error);
-  // Three 16384² images: the second is refused from its header; nothing is decoded (only headers exist here).
+  // 8192² images take 358 MB with their mipmaps: three fit, the fourth is refused from its header;
+  // nothing is decoded (only headers exist here).
   nlohmann::json j = triangle();
-  for (int i = 0; i < 3; ++i) {
-    j["images"].push_back({{"uri", dataUri(pngHeader(16384, 16384))}});
+  for (int i = 0; i < 4; ++i) {
+    j["images"].push_back({{"uri", dataUri(pngHeader(8192, 8192))}});
     j["textures"].push_back({{"source", i}});
   }
-  CHECK_THROWS_WITH_AS(loadJson(j), doctest::Contains("bad.gltf: images[1]: 16384x16384 RGBA pixels need 1 GiB, which with the 1 GiB counted before is "
-                                                      "more than the scene budget of 1 GiB"),
+  CHECK_THROWS_WITH_AS(loadJson(j), doctest::Contains("bad.gltf: images[3]: 8192x8192 RGBA pixels and their mipmaps need 358 MB, which with the 1.07 GB "
+                                                      "counted before is more than the scene budget of 1 GiB"),
                        Error);
   // Textures sharing one image: each copy beyond the first is priced too.
   nlohmann::json shared = triangle();
@@ -550,6 +551,60 @@ TEST_CASE("glTF bad input: a texture whose sampler does not exist is refused") {
   j["textures"][0]["sampler"] = 0;
   CHECK_NOTHROW(loadJson(j));
   j["textures"][0].erase("sampler");  // no sampler: repeat wrapping, auto filtering
+  CHECK_NOTHROW(loadJson(j));
+}
+
+TEST_CASE("glTF samplers: filters and wraps are read per texture, an absent key keeps REPEAT / LINEAR / LINEAR_MIPMAP_LINEAR") {
+  const Scene scene = loadGltf(kData + "/materials/textured_wraps.gltf");
+  REQUIRE(scene.textures.size() == 3);
+  CHECK(scene.textures[0].sampler == Sampler{MagFilter::Nearest, MinFilter::Nearest, Wrap::Repeat, Wrap::Repeat});
+  CHECK(scene.textures[1].sampler == Sampler{MagFilter::Linear, MinFilter::Linear, Wrap::ClampToEdge, Wrap::ClampToEdge});
+  CHECK(scene.textures[2].sampler == Sampler{MagFilter::Linear, MinFilter::Linear, Wrap::MirroredRepeat, Wrap::MirroredRepeat});
+  // Each texture has its mipmaps: 8x8 -> 4x4, 2x2, 1x1.
+  for (const Texture& t : scene.textures) {
+    REQUIRE(t.levelCount() == 4);
+    CHECK(t.level(3).width() == 1);
+  }
+  const Scene box = loadGltf(kModels + "/BoxTextured-glTF/BoxTextured.gltf");
+  CHECK(box.textures[0].sampler == Sampler{MagFilter::Linear, MinFilter::NearestMipmapLinear, Wrap::MirroredRepeat, Wrap::ClampToEdge});
+  nlohmann::json j = triangle();
+  j["images"] = {{{"uri", dataUri(pngHeader(4, 4))}}};
+  j["samplers"] = {{{"wrapS", 33071}}};
+  j["textures"] = {{{"source", 0}, {"sampler", 0}}, {{"source", 0}}};
+  j["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 1}}}}}}};
+  const Scene partial = loadJson(j);
+  CHECK(partial.textures[0].sampler == Sampler{MagFilter::Linear, MinFilter::LinearMipmapLinear, Wrap::ClampToEdge, Wrap::Repeat});
+  CHECK(partial.textures[1].sampler == Sampler{});
+}
+
+TEST_CASE("glTF bad input: a sampler code outside glTF's lists, or a material's texture that does not exist, is refused by name") {
+  nlohmann::json j = triangle();
+  j["images"] = {{{"uri", dataUri(pngHeader(4, 4))}}};
+  j["textures"] = {{{"source", 0}, {"sampler", 0}}};
+  j["samplers"] = {{{"magFilter", 9987}}};
+  CHECK_THROWS_WITH_AS(loadJson(j), "bad.gltf: samplers[0]: magFilter '9987' is not one of NEAREST (9728), LINEAR (9729)", Error);
+  j["samplers"] = {{{"name", "edge"}, {"wrapT", "REPEAT"}}};
+  CHECK_THROWS_WITH_AS(loadJson(j), "bad.gltf: samplers[0] 'edge': wrapT '\"REPEAT\"' is not one of REPEAT (10497), CLAMP_TO_EDGE (33071), MIRRORED_REPEAT (33648)",
+                       Error);
+  j["samplers"] = {{{"minFilter", -9729}}};
+  CHECK_THROWS_WITH_AS(loadJson(j), doctest::Contains("samplers[0]: minFilter '-9729' is not one of NEAREST (9728), LINEAR (9729), NEAREST_MIPMAP_NEAREST"), Error);
+  j["samplers"] = {{{"minFilter", 9986}, {"magFilter", 9728}, {"wrapS", 33648}, {"wrapT", 10497}}};
+  CHECK_NOTHROW(loadJson(j));
+  // A material naming texture 3 of a file with one, in each of the five places a material names a texture.
+  for (const char* where : {"baseColorTexture", "metallicRoughnessTexture"}) {
+    j["materials"] = {{{"pbrMetallicRoughness", {{where, {{"index", 3}}}}}}};
+    const std::string message =
+        "bad.gltf: materials[0]: pbrMetallicRoughness." + std::string(where) + ".index '3' does not exist (UNRESOLVED_REFERENCE: the file has 1 texture)";
+    CHECK_THROWS_WITH_AS(loadJson(j), message.c_str(), Error);
+  }
+  for (const char* where : {"normalTexture", "occlusionTexture", "emissiveTexture"}) {
+    j["materials"] = {{{"name", "m"}, {where, {{"index", 1}}}}};
+    const std::string message = "bad.gltf: materials[0] 'm': " + std::string(where) + ".index '1' does not exist (UNRESOLVED_REFERENCE: the file has 1 texture)";
+    CHECK_THROWS_WITH_AS(loadJson(j), message.c_str(), Error);
+  }
+  j["materials"] = {{{"emissiveTexture", nlohmann::json::object()}}};
+  CHECK_THROWS_WITH_AS(loadJson(j), "bad.gltf: materials[0]: emissiveTexture has no index", Error);
+  j["materials"] = {{{"emissiveTexture", {{"index", 0}}}}};
   CHECK_NOTHROW(loadJson(j));
 }
 

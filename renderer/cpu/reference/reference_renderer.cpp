@@ -44,8 +44,9 @@ struct Target {
   std::vector<std::uint32_t>* ids = nullptr;  // or which triangle it came from
 };
 
-// The fragment stage: the pixel's interpolated varyings and the side seen -> linear colour.
-using FragmentShader = std::function<glm::vec3(const float* varyings, bool frontFacing)>;
+// The fragment stage: the pixel's interpolated varyings, the side seen, and
+// the triangle's planes at the pixel (for the texture derivatives) -> linear colour.
+using FragmentShader = std::function<glm::vec3(const float* varyings, bool frontFacing, const Interpolation& planes, int px, int py)>;
 
 // One triangle, its three vertices after the vertex stage, to the z-buffer.
 void drawTriangle(const ClipVertex (&vertex)[3], int varyingCount, bool cullBackFaces, std::uint32_t id, Target& target,
@@ -79,7 +80,7 @@ void drawTriangle(const ClipVertex (&vertex)[3], int varyingCount, bool cullBack
       if (!target.image) return;
       float varyings[kMaxVaryings];
       planes.varyingsAt(px, py, varyings);
-      target.image->at(px, py) = encodePixel(shade(varyings, snapped.frontFacing));
+      target.image->at(px, py) = encodePixel(shade(varyings, snapped.frontFacing, planes, px, py));
     });
   }
 }
@@ -122,10 +123,12 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
     const bool textured = material.baseColorTexture >= 0 && !mesh.texcoords.empty();
     const bool colored = !mesh.colors.empty();
     // O_d = factor · COLOR_0 · texel, each factor only where the mesh has it.
-    const auto baseColor = [&](const float* v) {
+    const auto baseColor = [&](const float* v, const Interpolation& planes, int px, int py) {
       glm::vec3 O = material.baseColor;
       if (colored) O = O * glm::vec3(v[color], v[color + 1], v[color + 2]);
-      if (textured) O = O * sampleBaseColor(scene.textures[static_cast<std::size_t>(material.baseColorTexture)].image, {v[uv], v[uv + 1]});
+      if (textured)
+        O = O * sampleTexture(scene.textures[static_cast<std::size_t>(material.baseColorTexture)], material.baseColorSampler, {v[uv], v[uv + 1]},
+                              planes.quadDerivatives(uv, px, py));
       return O;
     };
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
@@ -162,18 +165,18 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
         if (!instance.cullBackFaces) flat[1] = illuminate(frame, maps, laneMaterial(material), centroid, -N, V);
       }
       // Fragment stage.
-      const FragmentShader fragment = [&](const float* f, bool front) -> glm::vec3 {
+      const FragmentShader fragment = [&](const float* f, bool front, const Interpolation& planes, int px, int py) -> glm::vec3 {
         if (frame.shading == ShadingMode::Phong) {
           const glm::vec3 P{f[0], f[1], f[2]};
           const glm::vec3 unit = normalize3(glm::vec3{f[3], f[4], f[5]});
           const glm::vec3 N = front ? unit : -unit;  // two-sided lighting
-          return shade(illuminate(frame, maps, laneMaterial(material), P, N, viewVector<float>(frame, P)), baseColor(f));
+          return shade(illuminate(frame, maps, laneMaterial(material), P, N, viewVector<float>(frame, P)), baseColor(f, planes, px, py));
         }
         if (frame.shading == ShadingMode::Gouraud) {
           const int side = front ? 0 : 6;
-          return shade(Illumination{{f[side], f[side + 1], f[side + 2]}, {f[side + 3], f[side + 4], f[side + 5]}}, baseColor(f));
+          return shade(Illumination{{f[side], f[side + 1], f[side + 2]}, {f[side + 3], f[side + 4], f[side + 5]}}, baseColor(f, planes, px, py));
         }
-        return shade(front ? flat[0] : flat[1], baseColor(f));
+        return shade(front ? flat[0] : flat[1], baseColor(f, planes, px, py));
       };
       drawTriangle(v, count, instance.cullBackFaces, ++id, target, fragment);
     }
