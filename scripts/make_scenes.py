@@ -6,9 +6,10 @@
 Two sets, each file self-contained (.gltf JSON, its buffer and its PNG
 images embedded as base64 data URIs):
 
-  tests/data/gltf/materials/   feature models: sparse accessors, sampler
-                               wraps, mipmapping (material defaults, COLOR_0
-                               and doubleSided are scripts/make_material_scenes.py's)
+  assets/scenes/               feature models the tests render: sparse
+                               accessors, sampler wraps, mipmapping (material
+                               defaults, COLOR_0 and doubleSided are
+                               scripts/make_material_scenes.py's)
   assets/                      the course tour, one scene per chapter
 
 Units are meters, +y is up. Every scene has a perspective camera looking at
@@ -30,13 +31,14 @@ import struct
 import zlib
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-MATERIALS_DIR = os.path.join(ROOT, "tests", "data", "gltf", "materials")
+MATERIALS_DIR = os.path.join(ROOT, "assets", "scenes")
 ASSETS_DIR = os.path.join(ROOT, "assets")
 
 # glTF 2.0 enumerations
 UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT, FLOAT = 5121, 5123, 5125, 5126
 ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER = 34962, 34963
 NEAREST, LINEAR, LINEAR_MIPMAP_LINEAR = 9728, 9729, 9987
+NEAREST_MIPMAP_NEAREST, LINEAR_MIPMAP_NEAREST, NEAREST_MIPMAP_LINEAR = 9984, 9985, 9986
 REPEAT, CLAMP_TO_EDGE, MIRRORED_REPEAT = 10497, 33071, 33648
 
 COMPONENTS = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4}
@@ -673,6 +675,29 @@ def grazing_checker():
     return g
 
 
+def mipmap_modes():
+    g = Gltf("Four 2 m wide, 80 m long strips of the checker of grazing_checker.gltf (8-texel squares, 25 cm), "
+             "seen from 1.2 m up, one per mipmap min filter, left to right: NEAREST_MIPMAP_NEAREST (bands where "
+             "the level changes, sharp texels), LINEAR_MIPMAP_NEAREST (bands, smooth texels), "
+             "NEAREST_MIPMAP_LINEAR (no bands, sharp texels), LINEAR_MIPMAP_LINEAR (trilinear: no bands, smooth). "
+             "All four fade to grey towards the far end.")
+    image = g.add_image("checker 64x64", png(64, 64, checker(64, 8, (0, 0, 0), (255, 255, 255))))
+    width, length = 2.0, 80.0
+    w, d = width / 2, length / 2
+    strip = Mesh([(-w, 0, d), (w, 0, d), (w, 0, -d), (-w, 0, -d)], [(0, 1, 0)] * 4, quad_indices(0, 1, 2, 3),
+                 [(0, length / 2), (width / 2, length / 2), (width / 2, 0), (0, 0)])
+    for i, (name, min_filter) in enumerate((("NEAREST_MIPMAP_NEAREST", NEAREST_MIPMAP_NEAREST),
+                                            ("LINEAR_MIPMAP_NEAREST", LINEAR_MIPMAP_NEAREST),
+                                            ("NEAREST_MIPMAP_LINEAR", NEAREST_MIPMAP_LINEAR),
+                                            ("LINEAR_MIPMAP_LINEAR", LINEAR_MIPMAP_LINEAR))):
+        texture = g.add_texture(image, g.add_sampler(LINEAR, min_filter, REPEAT, REPEAT))
+        material = g.add_material(name, (1, 1, 1, 1), 0.0, 1.0, texture=texture)
+        g.add_node(name, g.add_mesh(name, g.primitive(strip, material)), translation=(2.1 * (i - 1.5), 0, -d + 1))
+    g.add_camera("camera", (0, 1.2, 2.5), (0, 0.2, -8), yfov_deg=50, zfar=200)
+    g.add_light("sun", "directional", (30, 40, 20), (0, 0, 0), intensity=1.0)
+    return g
+
+
 # ---------------------------------------------------------------- B. the course tour
 
 def transformations():
@@ -831,6 +856,7 @@ SCENES = [
     (MATERIALS_DIR, "sparse.gltf", sparse),
     (MATERIALS_DIR, "textured_wraps.gltf", textured_wraps),
     (MATERIALS_DIR, "grazing_checker.gltf", grazing_checker),
+    (MATERIALS_DIR, "mipmap_modes.gltf", mipmap_modes),
     (ASSETS_DIR, "transformations.gltf", transformations),
     (ASSETS_DIR, "projections.gltf", projections),
     (ASSETS_DIR, "culling.gltf", culling),

@@ -555,7 +555,7 @@ TEST_CASE("glTF bad input: a texture whose sampler does not exist is refused") {
 }
 
 TEST_CASE("glTF samplers: filters and wraps are read per texture, an absent key keeps REPEAT / LINEAR / LINEAR_MIPMAP_LINEAR") {
-  const Scene scene = loadGltf(kData + "/materials/textured_wraps.gltf");
+  const Scene scene = loadGltf(std::string(FACET_ASSETS) + "/scenes/textured_wraps.gltf");
   REQUIRE(scene.textures.size() == 3);
   CHECK(scene.textures[0].sampler == Sampler{MagFilter::Nearest, MinFilter::Nearest, Wrap::Repeat, Wrap::Repeat});
   CHECK(scene.textures[1].sampler == Sampler{MagFilter::Linear, MinFilter::Linear, Wrap::ClampToEdge, Wrap::ClampToEdge});
