@@ -9,6 +9,7 @@
 #include "common/atomic_file.h"
 #include "scene/load_scene.h"
 #include "settings/settings_json.h"
+#include "settings/settings_table.h"
 
 namespace facet {
 
@@ -17,7 +18,13 @@ Command addSettingsCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "settings", "Print the RenderSettings as JSON: the defaults, or with --settings/--set/--size applied for the scene");
   addCommonOptions(*command, *options, "write the JSON to this file instead of standard output");
-  return [options]() {
+  auto keys = std::make_shared<bool>(false);
+  command->add_flag("--keys", *keys, "print every key, its default, range and meaning as a Markdown table (the README's) instead");
+  return [options, keys]() {
+    if (*keys) {
+      std::fputs(settingsTable().c_str(), stdout);
+      return 0;
+    }
     if (!options->output.empty()) checkOutputFile(options->output, {options->scenePath, options->settingsPath});
     const Scene scene = loadScene(options->scenePath);
     const std::string text = settingsToJson(settingsFor(*options, scene)).dump(2) + "\n";

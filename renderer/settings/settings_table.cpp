@@ -1,0 +1,65 @@
+#include "settings/settings_table.h"
+
+#include <charconv>
+#include <cmath>
+
+#include "settings/settings_fields.h"
+
+namespace facet {
+namespace {
+
+std::string number(double v) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, static_cast<float>(v)).ptr;
+  return std::string(text, end);
+}
+
+std::string vec3(glm::vec3 v) { return "[" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + "]"; }
+
+struct TableWriter {
+  std::string prefix;
+  std::string* out;
+
+  void row(const FieldInfo& f, const std::string& value, const std::string& range) {
+    *out += "| `" + prefix + std::string(f.key) + "` | `" + value + "` | " + range + " | " + std::string(f.help) + " |\n";
+  }
+  std::string range(const FieldInfo& f) const { return f.min == f.max ? "" : number(f.min) + " to " + number(f.max); }
+
+  void field(const FieldInfo& f, float v) { row(f, number(v), range(f)); }
+  void field(const FieldInfo& f, int v) { row(f, std::to_string(v), range(f)); }
+  void field(const FieldInfo& f, bool v) { row(f, v ? "true" : "false", "true, false"); }
+  void field(const FieldInfo& f, glm::vec3 v) { row(f, vec3(v), f.min == f.max ? "" : "each " + range(f)); }
+  void field(const FieldInfo& f, const std::optional<float>& v) { row(f, v ? number(*v) : "null", "null, or " + range(f)); }
+  template <class E, std::size_t N>
+  void choice(const FieldInfo& f, E v, const std::array<std::string_view, N>& names) {
+    std::string choices;
+    for (std::string_view name : names) choices += (choices.empty() ? "" : ", ") + std::string(name);
+    row(f, std::string(names[static_cast<std::size_t>(v)]), choices);
+  }
+  template <class Fn>
+  void group(std::string_view key, Fn fn) {
+    const std::string parent = prefix;
+    prefix += std::string(key) + ".";
+    fn();
+    prefix = parent;
+  }
+  void lights(std::string_view key, std::vector<Light>&) {
+    *out += "| `" + prefix + std::string(key) + "` | `[]` | up to " + std::to_string(kMaxLights) +
+            " | the lights of lightSource = manual, each with the keys below |\n";
+    Light light;
+    TableWriter item{prefix + std::string(key) + ".N.", out};
+    visitLight(item, light);
+  }
+};
+
+}  // namespace
+
+std::string settingsTable() {
+  std::string out = "| key | default | range | meaning |\n| --- | --- | --- | --- |\n";
+  RenderSettings defaults;
+  TableWriter writer{"", &out};
+  visitSettings(writer, defaults);
+  return out;
+}
+
+}  // namespace facet

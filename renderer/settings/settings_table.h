@@ -1,0 +1,12 @@
+#pragma once
+// The field table as the README shows it: one Markdown row per settings key
+// (dotted, as --set takes it), its default, its range or choices, and its
+// help line. `facet settings --keys` prints it; a test holds the README's
+// copy to it.
+#include <string>
+
+namespace facet {
+
+std::string settingsTable();
+
+}  // namespace facet
