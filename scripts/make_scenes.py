@@ -307,8 +307,9 @@ def smooth_normals(positions, indices):
 
 # ---------------------------------------------------------------- PNG
 
-def png(width, height, pixel):
-    """An 8-bit RGB PNG of pixel(x, y) -> (r, g, b), row 0 at the top."""
+def png(width, height, pixel, alpha=False):
+    """An 8-bit RGB PNG of pixel(x, y) -> (r, g, b), or RGBA with `alpha`
+    (pixel -> (r, g, b, a)), row 0 at the top."""
     raw = bytearray()
     for y in range(height):
         raw.append(0)  # filter: none
@@ -318,7 +319,8 @@ def png(width, height, pixel):
     def chunk(kind, data):
         return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
 
-    header = struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)  # 8 bits, RGB, deflate, no filter, no interlace
+    colour_type = 6 if alpha else 2  # RGBA or RGB
+    header = struct.pack(">IIBBBBB", width, height, 8, colour_type, 0, 0, 0)  # 8 bits, deflate, no filter, no interlace
     return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", zlib.compress(bytes(raw), 9)) + chunk(b"IEND", b"")
 
 
@@ -475,9 +477,10 @@ class Gltf:
     def add_mesh(self, name, *primitives):
         return self.append("meshes", {"name": name, "primitives": list(primitives)})
 
-    def add_material(self, name, color, metallic=None, roughness=None, texture=None, double_sided=None, emissive=None):
-        """A material; metallic, roughness and doubleSided left out when None
-        (glTF's defaults: 1, 1 and false)."""
+    def add_material(self, name, color, metallic=None, roughness=None, texture=None, double_sided=None, emissive=None,
+                     alpha_mode=None, alpha_cutoff=None):
+        """A material; metallic, roughness, doubleSided, alphaMode and
+        alphaCutoff left out when None (glTF's defaults: 1, 1, false, OPAQUE, 0.5)."""
         pbr = {"baseColorFactor": nums(color)}
         if metallic is not None:
             pbr["metallicFactor"] = num(metallic)
@@ -490,6 +493,10 @@ class Gltf:
             material["doubleSided"] = double_sided
         if emissive is not None:
             material["emissiveFactor"] = nums(emissive)
+        if alpha_mode is not None:
+            material["alphaMode"] = alpha_mode
+        if alpha_cutoff is not None:
+            material["alphaCutoff"] = num(alpha_cutoff)
         return self.append("materials", material)
 
     # -- textures
@@ -698,6 +705,47 @@ def mipmap_modes():
     return g
 
 
+def leaf_texture(size=64):
+    """A green leaf on a transparent ground: alpha 255 inside an ellipse with
+    a midrib and veins cut out as slits, falling off linearly over the outer
+    fifth, so the cutoff decides how much of the rim stays."""
+    def pixel(x, y):
+        u, v = (x + 0.5) / size * 2 - 1, (y + 0.5) / size * 2 - 1
+        r = math.sqrt((u / 0.6) ** 2 + (v / 0.95) ** 2)
+        a = max(0.0, min(1.0, (1.0 - r) / 0.2))
+        if abs(u) < 0.04 or (abs(u) > 0.1 and abs((v - abs(u) * 0.8) * 6 % 1 - 0.5) < 0.06):
+            a *= 0.25  # veins: a quarter alpha, cut away by cutoffs above it
+        green = int(90 + 100 * (1 - r) if r < 1 else 60)
+        return (40, min(green, 220), 30, int(round(255 * a)))
+    return png(size, size, pixel, alpha=True)
+
+
+def alpha_mask():
+    g = Gltf("alphaMode MASK: three double-sided panels in front of a wall, each cut by its alpha. Left: a leaf "
+             "texture (alpha falling off at the rim, veins at a quarter alpha) with alphaCutoff 0.5: the leaf with its "
+             "veins cut out. Middle: the same leaf with alphaCutoff 0.9: a thinner leaf. Right: an untextured panel "
+             "whose COLOR_0 alpha runs from 0 at the left to 1 at the right, cutoff 0.5: its right half stays. "
+             "Through every cut the wall behind is visible; nothing cut away hides what is behind it.")
+    image = g.add_image("leaf 64x64 RGBA", leaf_texture())
+    texture = g.add_texture(image, g.add_sampler(LINEAR, LINEAR_MIPMAP_LINEAR, CLAMP_TO_EDGE, CLAMP_TO_EDGE))
+    panel = quad(1.2, 1.6)
+    for i, cutoff in enumerate((0.5, 0.9)):
+        material = g.add_material("leaf, cutoff %g" % cutoff, (1, 1, 1, 1), 0.0, 0.6, texture=texture, double_sided=True,
+                                  alpha_mode="MASK", alpha_cutoff=cutoff)
+        g.add_node("leaf, cutoff %g" % cutoff, g.add_mesh("leaf %d" % i, g.primitive(panel, material)),
+                   translation=(1.4 * (i - 1), 1.0, 0))
+    ramp = quad(1.2, 1.6)
+    colors = g.add_accessor([(0.8, 0.25, 0.05, 0.0), (0.8, 0.25, 0.05, 1.0), (0.8, 0.25, 0.05, 1.0), (0.8, 0.25, 0.05, 0.0)], "VEC4")
+    material = g.add_material("alpha ramp, cutoff 0.5", (1, 1, 1, 1), 0.0, 0.6, double_sided=True, alpha_mode="MASK")
+    g.add_node("alpha ramp", g.add_mesh("alpha ramp", g.primitive(ramp, material, colors=colors)), translation=(1.4, 1.0, 0))
+    wall = g.add_material("wall", (0.75, 0.75, 0.8, 1), 0.0, 0.9)
+    g.add_node("wall", g.add_mesh("wall", g.primitive(quad(6, 3), wall)), translation=(0, 1.2, -1.0))
+    add_ground(g, 8, 6)
+    g.add_camera("camera", (0, 1.2, 3.4), (0, 1.0, 0))
+    g.add_light("key", "point", (1.5, 3.0, 3.0), intensity=16)
+    return g
+
+
 # ---------------------------------------------------------------- B. the course tour
 
 def transformations():
@@ -857,6 +905,7 @@ SCENES = [
     (MATERIALS_DIR, "textured_wraps.gltf", textured_wraps),
     (MATERIALS_DIR, "grazing_checker.gltf", grazing_checker),
     (MATERIALS_DIR, "mipmap_modes.gltf", mipmap_modes),
+    (MATERIALS_DIR, "alpha_mask.gltf", alpha_mask),
     (ASSETS_DIR, "transformations.gltf", transformations),
     (ASSETS_DIR, "projections.gltf", projections),
     (ASSETS_DIR, "culling.gltf", culling),

@@ -8,22 +8,41 @@ uniform mat4 worldFromModel;       // TM
 uniform mat3 normalMatrix;         // (TM^T)^-1, upper 3x3
 uniform CourseMaterial material;   // k_e, k_a, k_d, k_s, n
 uniform vec3 baseColorFactor;      // O_d without its texture, linear RGB
+uniform float baseAlpha;           // its alpha
+uniform float alphaCutoff;         // alphaMode MASK: the least alpha a fragment keeps
 uniform ivec4 baseColorSampler;    // its texture's magFilter, minFilter, wrapS, wrapT: scene/scene.h's enum values
 
 layout(binding = 0) uniform sampler2DArray shadowMaps;  // pass 1: one S×S depth layer per light face
 layout(binding = 1) uniform usampler2D baseColorTexture; // sRGB-encoded bytes (GL_RGBA8UI), bottom row first
 
 // O_d = factor · COLOR_0 · texel at texture coordinates st, whose
-// derivatives are (dFdx(st), dFdy(st)) (renderer/PIPELINE.md, section 8).
+// derivatives are (dFdx(st), dFdy(st)), and its alpha
+// (factor.a · COLOR_0.a) · texel.a (renderer/PIPELINE.md, section 8).
 // FACET_COLORED: the draw's mesh has COLOR_0; FACET_TEXTURED: its material
 // has a base colour texture and its mesh TEXCOORD_0.
-vec3 baseColorAt(vec2 st, vec4 stDerivatives, vec3 vertexColor) {
+vec4 baseColorAt(vec2 st, vec4 stDerivatives, vec4 vertexColor) {
   precise vec3 O = baseColorFactor;
+  precise float alpha = baseAlpha;
 #if FACET_COLORED
-  O = O * vertexColor;
+  O = O * vertexColor.rgb;
+  alpha = alpha * vertexColor.a;
 #endif
 #if FACET_TEXTURED
-  O = O * sampleTexture(baseColorTexture, baseColorSampler, st, stDerivatives);
+  vec4 texel = sampleTexture(baseColorTexture, baseColorSampler, st, stDerivatives);
+  O = O * texel.rgb;
+  alpha = alpha * texel.a;
 #endif
-  return O;
+  return vec4(O, alpha);
+}
+
+// alphaMode MASK: a fragment is kept when its alpha is at least the cutoff
+// (NaN discards). Mirror: renderer/cpu/alpha_mask.h. FACET_MASKED: the
+// draw's material is masked; without it nothing is discarded, and the
+// program keeps llvmpipe's early depth test.
+bool alphaKept(float alpha) {
+#if FACET_MASKED
+  return alpha >= alphaCutoff;
+#else
+  return true;
+#endif
 }

@@ -27,7 +27,7 @@ flat out vec3 frontSpecular;
 flat out vec3 backDiffuse;   // Illumination with -N, for back faces where they are not culled
 flat out vec3 backSpecular;
 out vec2 st;                 // a texture still varies O_d per pixel
-out vec3 vertexColor;        // and so do vertex colours
+out vec4 vertexColor;        // and so do vertex colours
 
 vec3 modelPosition(uint v) {
   return vec3(positions[3u * v], positions[3u * v + 1u], positions[3u * v + 2u]);
@@ -60,8 +60,8 @@ void main() {
   st = vec2(0.0);
 #endif
 #if FACET_COLORED
-  vertexColor = vec3(colors[4u * v], colors[4u * v + 1u], colors[4u * v + 2u]);
+  vertexColor = vec4(colors[4u * v], colors[4u * v + 1u], colors[4u * v + 2u], colors[4u * v + 3u]);
 #else
-  vertexColor = vec3(1.0);
+  vertexColor = vec4(1.0);
 #endif
 }

@@ -14,12 +14,14 @@ in vec3 frontSpecular;
 in vec3 backDiffuse;
 in vec3 backSpecular;
 in vec2 st;
-in vec3 vertexColor;
+in vec4 vertexColor;
 
 layout(location = 0) out vec4 color;
 
 void main() {
   vec4 stDerivatives = vec4(dFdx(st), dFdy(st));  // in uniform control flow, before anything can branch
   Illumination I = gl_FrontFacing ? Illumination(frontDiffuse, frontSpecular) : Illumination(backDiffuse, backSpecular);
-  color = encodeSrgb(shade(I, baseColorAt(st, stDerivatives, vertexColor)));
+  vec4 O = baseColorAt(st, stDerivatives, vertexColor);
+  if (!alphaKept(O.a)) discard;  // alpha mask (a no-op unless FACET_MASKED)
+  color = encodeSrgb(shade(I, O.rgb));
 }

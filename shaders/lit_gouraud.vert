@@ -20,7 +20,7 @@ out vec3 frontSpecular;
 out vec3 backDiffuse;    // Illumination with -N, for back faces where they are not culled
 out vec3 backSpecular;
 out vec2 st;
-out vec3 vertexColor;
+out vec4 vertexColor;
 
 void main() {
   gl_Position = transformPoint(clipFromModel, position);
@@ -34,5 +34,5 @@ void main() {
   backDiffuse = back.diffuse;
   backSpecular = back.specular;
   st = texcoord;
-  vertexColor = color0.rgb;
+  vertexColor = color0;
 }

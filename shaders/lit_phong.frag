@@ -12,7 +12,7 @@
 in vec3 worldPosition;
 in vec3 worldNormal;
 in vec2 st;
-in vec3 vertexColor;
+in vec4 vertexColor;
 
 layout(location = 0) out vec4 color;
 
@@ -21,5 +21,7 @@ void main() {
   vec3 P = worldPosition;
   vec3 N = normalize3(worldNormal);
   if (!gl_FrontFacing) N = -N;  // two-sided lighting: a back face is drawn only where it is not culled
-  color = encodeSrgb(shade(illuminate(material, P, N, viewVector(P)), baseColorAt(st, stDerivatives, vertexColor)));
+  vec4 O = baseColorAt(st, stDerivatives, vertexColor);
+  if (!alphaKept(O.a)) discard;  // alpha mask (a no-op unless FACET_MASKED)
+  color = encodeSrgb(shade(illuminate(material, P, N, viewVector(P)), O.rgb));
 }

@@ -16,12 +16,12 @@ layout(location = 3) in vec4 color0;    // COLOR_0, linear RGBA (read only when 
 out vec3 worldPosition;
 out vec3 worldNormal;  // unit at the vertex; renormalized per pixel
 out vec2 st;
-out vec3 vertexColor;
+out vec4 vertexColor;
 
 void main() {
   gl_Position = transformPoint(clipFromModel, position);
   worldPosition = transformPoint(worldFromModel, position).xyz;
   worldNormal = normalize3(transformDirection(normalMatrix, normal));
   st = texcoord;
-  vertexColor = color0.rgb;
+  vertexColor = color0;
 }

@@ -1,13 +1,21 @@
 #version 450 core
 // Shadow pass 1: depth only, from the light, one array layer per light face
-// (renderer/PIPELINE.md, sections 4 and 6).
+// (renderer/PIPELINE.md, sections 4 and 6); an alpha-masked draw also passes
+// what its alpha is made of, so that what the mask cuts away casts no shadow.
 #include "transform.glsl"
 
 uniform mat4 lightClipFromWorld;  // PM·EM of the light's face
 uniform mat4 worldFromModel;      // TM
 
 layout(location = 0) in vec3 position;  // model space
+layout(location = 2) in vec2 texcoord;  // TEXCOORD_0 (read only when masked)
+layout(location = 3) in vec4 color0;    // COLOR_0 (read only when masked)
+
+out vec2 st;
+out vec4 vertexColor;
 
 void main() {
   gl_Position = transformPoint(lightClipFromWorld, transformPoint(worldFromModel, position).xyz);
+  st = texcoord;
+  vertexColor = color0;
 }

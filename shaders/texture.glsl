@@ -13,10 +13,11 @@ const int kMinNearest = 0, kMinLinear = 1;   // MinFilter: no mipmaps
 const int kMinNearestMipmapNearest = 2, kMinLinearMipmapNearest = 3, kMinLinearMipmapLinear = 5;
 const int kWrapClampToEdge = 1, kWrapMirroredRepeat = 2;
 
-// Texel (x, y) of a level, bottom row first, decoded to linear.
-vec3 texel(usampler2D image, int level, int x, int y) {
-  uvec3 c = texelFetch(image, ivec2(x, y), level).rgb;
-  return vec3(decodeSrgb(c.r), decodeSrgb(c.g), decodeSrgb(c.b));
+// Texel (x, y) of a level, bottom row first: colour decoded to linear, alpha as stored.
+vec4 texel(usampler2D image, int level, int x, int y) {
+  uvec4 c = texelFetch(image, ivec2(x, y), level);
+  precise float alpha = float(c.a) / 255.0;
+  return vec4(decodeSrgb(c.r), decodeSrgb(c.g), decodeSrgb(c.b), alpha);
 }
 
 // REPEAT: i mod size in [0, size), with % only on non-negative operands
@@ -42,17 +43,17 @@ int texelIndex(float x0) {
 }
 
 // a + t·(b - a), written out: `precise` keeps the compiler from turning it into mix.
-vec3 lerp(vec3 a, vec3 b, float t) {
-  precise vec3 r = a + t * (b - a);
+vec4 lerp(vec4 a, vec4 b, float t) {
+  precise vec4 r = a + t * (b - a);
   return r;
 }
 
-// One level, NEAREST or LINEAR; t = 0 is the top of the glTF image, and
+// One level, NEAREST or LINEAR: linear RGB and alpha; t = 0 is the top of the glTF image, and
 // facet uploads images bottom row first.
 // The size of a level is level 0's halved, as image/mipmap.h builds them:
 // llvmpipe's textureSize reads one lane's level for all, and `level` varies
 // between the pixels shaded together.
-vec3 sampleLevel(usampler2D image, int level, bool linear, int wrapS, int wrapT, vec2 st) {
+vec4 sampleLevel(usampler2D image, int level, bool linear, int wrapS, int wrapT, vec2 st) {
   ivec2 size0 = textureSize(image, 0);
   ivec2 size = ivec2(max(1, size0.x >> level), max(1, size0.y >> level));
   precise float u = st.x * float(size.x);
@@ -68,8 +69,8 @@ vec3 sampleLevel(usampler2D image, int level, bool linear, int wrapS, int wrapT,
   int ix = texelIndex(x0), iy = texelIndex(y0);
   int ix0 = wrapIndex(ix, size.x, wrapS), ix1 = wrapIndex(ix + 1, size.x, wrapS);
   int iy0 = wrapIndex(iy, size.y, wrapT), iy1 = wrapIndex(iy + 1, size.y, wrapT);
-  vec3 c00 = texel(image, level, ix0, iy0), c10 = texel(image, level, ix1, iy0);
-  vec3 c01 = texel(image, level, ix0, iy1), c11 = texel(image, level, ix1, iy1);
+  vec4 c00 = texel(image, level, ix0, iy0), c10 = texel(image, level, ix1, iy0);
+  vec4 c01 = texel(image, level, ix0, iy1), c11 = texel(image, level, ix1, iy1);
   return lerp(lerp(c00, c10, fx), lerp(c01, c11, fx), fy);
 }
 
@@ -82,7 +83,7 @@ float footprintSquared(vec4 d, ivec2 size) {
 }
 
 // The texture through `sampler` (magFilter, minFilter, wrapS, wrapT) at st.
-vec3 sampleTexture(usampler2D image, ivec4 sampler, vec2 st, vec4 derivatives) {
+vec4 sampleTexture(usampler2D image, ivec4 sampler, vec2 st, vec4 derivatives) {
   ivec2 size = textureSize(image, 0);
   float rho2 = footprintSquared(derivatives, size);
   if (!(rho2 > 1.0)) return sampleLevel(image, 0, sampler.x == kFilterLinear, sampler.z, sampler.w, st);
@@ -99,9 +100,9 @@ vec3 sampleTexture(usampler2D image, ivec4 sampler, vec2 st, vec4 derivatives) {
   }
   precise float whole = floor(lambda);
   int k = whole < float(last) ? int(whole) : last;
-  vec3 above = sampleLevel(image, k, linear, sampler.z, sampler.w, st);
+  vec4 above = sampleLevel(image, k, linear, sampler.z, sampler.w, st);
   if (k == last) return above;
-  vec3 below = sampleLevel(image, k + 1, linear, sampler.z, sampler.w, st);
+  vec4 below = sampleLevel(image, k + 1, linear, sampler.z, sampler.w, st);
   precise float f = lambda - whole;
   return lerp(above, below, f);
 }

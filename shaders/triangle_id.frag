@@ -1,10 +1,22 @@
 #version 450 core
 // 1 + the triangle's index in the frame: the draw's first triangle plus
 // gl_PrimitiveID (the index in the draw, which clipping does not change).
+// A fragment the alpha mask discards keeps no triangle, as in the lit pass.
+#include "frame_block.glsl"
+#include "shading_math.glsl"
+#include "srgb.glsl"
+#include "texture.glsl"
+#include "draw_uniforms.glsl"
+
 uniform uint firstTriangle;
+
+in vec2 st;
+in vec4 vertexColor;
 
 layout(location = 0) out uint id;
 
 void main() {
+  vec4 stDerivatives = vec4(dFdx(st), dFdy(st));
+  if (!alphaKept(baseColorAt(st, stDerivatives, vertexColor).a)) discard;
   id = firstTriangle + uint(gl_PrimitiveID) + 1u;
 }

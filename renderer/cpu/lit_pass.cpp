@@ -8,6 +8,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "cpu/alpha_mask.h"
 #include "cpu/binning.h"
 #include "cpu/interpolation.h"
 #include "cpu/lighting.h"
@@ -25,6 +26,10 @@ namespace {
 
 void put(float* v, int at, glm::vec3 value) {
   for (int k = 0; k < 3; ++k) v[at + k] = value[k];
+}
+
+void put(float* v, int at, glm::vec4 value) {
+  for (int k = 0; k < 4; ++k) v[at + k] = value[k];
 }
 
 
@@ -88,7 +93,8 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
       glm::vec3 baseColor = material->baseColor;
       if (colored) baseColor *= glm::vec3(v[layout.color], v[layout.color + 1], v[layout.color + 2]);
       if (texture)
-        baseColor *= sampleTexture(*texture, material->baseColorSampler, {v[layout.uv], v[layout.uv + 1]}, in->quadDerivatives(layout.uv, px, py));
+        baseColor *= glm::vec3(
+            sampleTexture(*texture, material->baseColorSampler, {v[layout.uv], v[layout.uv + 1]}, in->quadDerivatives(layout.uv, px, py)));
       glm::vec3 color;
       if constexpr (kMode == ShadingMode::Phong) {
         // N is normalized (and negated on a back face, two-sided lighting) in the batch
@@ -134,7 +140,7 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
       const glm::vec2 uv = mesh.texcoords.empty() ? glm::vec2(0.0f) : mesh.texcoords[local];
       varyings[layout.uv] = uv.x;
       varyings[layout.uv + 1] = uv.y;
-      put(varyings, layout.color, mesh.colors.empty() ? glm::vec3(1.0f) : glm::vec3(mesh.colors[local]));
+      put(varyings, layout.color, mesh.colors.empty() ? glm::vec4(1.0f) : mesh.colors[local]);
       if (frame.shading == ShadingMode::Phong) {
         put(varyings, 0, P);
         put(varyings, 3, normalize3(transformDirection(instance.normalMatrix, mesh.normals[local])));
@@ -191,11 +197,31 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
                             // Set up once: the z-buffer reads its depth, shading its weights if it wins a pixel.
                             const auto id = static_cast<std::uint32_t>(scratch.triangles.size());
                             scratch.triangles.push_back({Interpolation(vertices[0], vertices[1], vertices[2]), &bins, index});
-                            const Interpolation& interpolation = scratch.triangles.back().interpolation;
+                            Interpolation& interpolation = scratch.triangles.back().interpolation;
+                            const FrameInstance& instance = frame.instances[t.instance];
+                            const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
+                            if (!material.masked) {
+                              rasterizeBlocks(t.snapped, box, [&](int px, int py) {
+                                const float z = interpolation.depthAt(px, py);
+                                const int k = (py - r.y0) * kTileSize + (px - r.x0);
+                                if (!(z < scratch.depth[k])) return;  // LESS
+                                scratch.depth[k] = z;
+                                scratch.id[k] = id;
+                              });
+                              return;
+                            }
+                            // Alpha mask: the fragment's alpha decides before it writes depth (alpha_mask.h).
+                            const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
+                            const Texture* texture = material.baseColorTexture >= 0 && !mesh.texcoords.empty()
+                                                         ? &scene.textures[static_cast<std::size_t>(material.baseColorTexture)]
+                                                         : nullptr;
+                            const bool colored = !mesh.colors.empty();
+                            interpolation.setUpVaryings(layout.count);
                             rasterizeBlocks(t.snapped, box, [&](int px, int py) {
                               const float z = interpolation.depthAt(px, py);
                               const int k = (py - r.y0) * kTileSize + (px - r.x0);
                               if (!(z < scratch.depth[k])) return;  // LESS
+                              if (!keepsFragment(material, texture, colored, layout, interpolation, px, py)) return;
                               scratch.depth[k] = z;
                               scratch.id[k] = id;
                             });

@@ -2,10 +2,12 @@
 // from the light into an S×S float map, one per face.
 #include <algorithm>
 
+#include "cpu/alpha_mask.h"
 #include "cpu/binning.h"
 #include "cpu/interpolation.h"
 #include "cpu/passes.h"
 #include "cpu/tile_raster.h"
+#include "cpu/varyings.h"
 #include "cpu/vertex_math.h"
 
 namespace facet::cpu {
@@ -18,16 +20,32 @@ void shadowPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, con
   const float half = 0.5f * static_cast<float>(size);
   PassVertices& v = buffers.vertices;
   const std::size_t vertexCount = v.world.size();
-  v.stride = 4;
-  v.window.resize(vertexCount * 4);
+  // An alpha-masked material needs its texture coordinates and vertex alpha
+  // (the flat layout's: uv, RGBA) to decide which fragments cast a shadow.
+  bool anyMasked = false;
+  for (const FrameInstance& instance : frame.instances) anyMasked = anyMasked || frame.materials[static_cast<std::size_t>(instance.material)].masked;
+  const VaryingLayout mask = varyingLayout(ShadingMode::Flat);
+  const int stride = anyMasked ? 4 + mask.count : 4;
+  v.stride = stride;
+  v.window.resize(vertexCount * static_cast<std::size_t>(stride));
 
   // Vertex stage: clip = lightClipFromWorld · (TM · p), both products in the fixed order.
   forEachRange(pool, vertexCount, [&](std::size_t begin, std::size_t end, int) {
+    std::size_t i = 0;
     for (std::size_t g = begin; g < end; ++g) {
       const glm::vec4 clip = transformPoint(lightClipFromWorld, v.world[g]);
       v.clip[g] = clip;
       v.flags[g] = vertexFlags(clip);
-      packWindow(clip, half, half, v.window.data() + 4 * g);
+      float* out = v.window.data() + static_cast<std::size_t>(stride) * g;
+      packWindow(clip, half, half, out);
+      if (!anyMasked) continue;
+      while (g >= v.firstVertex[i + 1]) ++i;
+      const Mesh& mesh = scene.meshes[static_cast<std::size_t>(frame.instances[i].mesh)];
+      const std::size_t local = g - v.firstVertex[i];
+      const glm::vec2 uv = mesh.texcoords.empty() ? glm::vec2(0.0f) : mesh.texcoords[local];
+      const glm::vec4 color = mesh.colors.empty() ? glm::vec4(1.0f) : mesh.colors[local];
+      out[4 + mask.uv] = uv.x, out[4 + mask.uv + 1] = uv.y;
+      for (int c = 0; c < 4; ++c) out[4 + mask.color + c] = color[c];
     }
   });
 
@@ -47,11 +65,27 @@ void shadowPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, con
     forEachTriangleInTile(buffers.workers, v, tile, r,
                           [&](const WorkerBins&, std::uint32_t, const BinnedTriangle& t, const InterpolationVertex (&vertices)[3],
                               const PixelBox& box) {
-                            const Interpolation interpolation(vertices[0], vertices[1], vertices[2]);
+                            Interpolation interpolation(vertices[0], vertices[1], vertices[2]);
+                            const FrameInstance& instance = frame.instances[t.instance];
+                            const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
+                            if (!material.masked) {
+                              rasterizeBlocks(t.snapped, box, [&](int px, int py) {
+                                const float z = interpolation.depthAt(px, py);
+                                float& stored = depth[static_cast<std::size_t>(py) * static_cast<std::size_t>(size) + static_cast<std::size_t>(px)];
+                                if (z < stored) stored = z;
+                              });
+                              return;
+                            }
+                            const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
+                            const Texture* texture = material.baseColorTexture >= 0 && !mesh.texcoords.empty()
+                                                         ? &scene.textures[static_cast<std::size_t>(material.baseColorTexture)]
+                                                         : nullptr;
+                            const bool colored = !mesh.colors.empty();
+                            interpolation.setUpVaryings(mask.count);
                             rasterizeBlocks(t.snapped, box, [&](int px, int py) {
                               const float z = interpolation.depthAt(px, py);
                               float& stored = depth[static_cast<std::size_t>(py) * static_cast<std::size_t>(size) + static_cast<std::size_t>(px)];
-                              if (z < stored) stored = z;
+                              if (z < stored && keepsFragment(material, texture, colored, mask, interpolation, px, py)) stored = z;
                             });
                           });
   });

@@ -9,11 +9,11 @@
 namespace facet::cpu {
 namespace {
 
-// The texel (x, y), bottom row first, decoded to linear by the shared table.
-glm::vec3 texel(const Image& image, int x, int y) {
+// The texel (x, y), bottom row first: colour decoded to linear by the shared table, alpha as stored.
+glm::vec4 texel(const Image& image, int x, int y) {
   const float* decoded = srgbTables().decoded.data();
   const Rgba8 c = image.at(x, y);
-  return {decoded[c.r], decoded[c.g], decoded[c.b]};
+  return {decoded[c.r], decoded[c.g], decoded[c.b], static_cast<float>(c.a) / 255.0f};
 }
 
 // floor(x) as a texel index: beyond ±2^24 every float is a whole number, and
@@ -33,9 +33,9 @@ int wrapIndex(int i, int size, Wrap mode) {
   return wrap(i, size);
 }
 
-glm::vec3 lerp(glm::vec3 a, glm::vec3 b, float t) { return a + t * (b - a); }
+glm::vec4 lerp(glm::vec4 a, glm::vec4 b, float t) { return a + t * (b - a); }
 
-glm::vec3 sampleLevel(const Image& level, bool linear, Wrap wrapS, Wrap wrapT, glm::vec2 st) {
+glm::vec4 sampleLevel(const Image& level, bool linear, Wrap wrapS, Wrap wrapT, glm::vec2 st) {
   const int w = level.width(), h = level.height();
   const float u = st.x * static_cast<float>(w);
   const float v = (1.0f - st.y) * static_cast<float>(h);
@@ -50,8 +50,8 @@ glm::vec3 sampleLevel(const Image& level, bool linear, Wrap wrapS, Wrap wrapT, g
   const int ix = texelIndex(x0), iy = texelIndex(y0);
   const int ix0 = wrapIndex(ix, w, wrapS), ix1 = wrapIndex(ix + 1, w, wrapS);
   const int iy0 = wrapIndex(iy, h, wrapT), iy1 = wrapIndex(iy + 1, h, wrapT);
-  const glm::vec3 c00 = texel(level, ix0, iy0), c10 = texel(level, ix1, iy0);
-  const glm::vec3 c01 = texel(level, ix0, iy1), c11 = texel(level, ix1, iy1);
+  const glm::vec4 c00 = texel(level, ix0, iy0), c10 = texel(level, ix1, iy0);
+  const glm::vec4 c01 = texel(level, ix0, iy1), c11 = texel(level, ix1, iy1);
   return lerp(lerp(c00, c10, fx), lerp(c01, c11, fx), fy);
 }
 
@@ -62,7 +62,7 @@ float footprintSquared(glm::vec4 d, int width, int height) {
   return alongX > alongY ? alongX : alongY;
 }
 
-glm::vec3 sampleTexture(const Texture& texture, const Sampler& sampler, glm::vec2 st, glm::vec4 derivatives) {
+glm::vec4 sampleTexture(const Texture& texture, const Sampler& sampler, glm::vec2 st, glm::vec4 derivatives) {
   const float rho2 = footprintSquared(derivatives, texture.image.width(), texture.image.height());
   if (!(rho2 > 1.0f)) return sampleLevel(texture.image, sampler.mag == MagFilter::Linear, sampler.wrapS, sampler.wrapT, st);
   const bool linear = linearWithin(sampler.min);
@@ -78,9 +78,9 @@ glm::vec3 sampleTexture(const Texture& texture, const Sampler& sampler, glm::vec
   }
   const float whole = std::floor(lambda);
   const int k = whole < static_cast<float>(last) ? static_cast<int>(whole) : last;
-  const glm::vec3 above = sampleLevel(texture.level(k), linear, sampler.wrapS, sampler.wrapT, st);
+  const glm::vec4 above = sampleLevel(texture.level(k), linear, sampler.wrapS, sampler.wrapT, st);
   if (k == last) return above;
-  const glm::vec3 below = sampleLevel(texture.level(k + 1), linear, sampler.wrapS, sampler.wrapT, st);
+  const glm::vec4 below = sampleLevel(texture.level(k + 1), linear, sampler.wrapS, sampler.wrapT, st);
   return lerp(above, below, lambda - whole);
 }
 

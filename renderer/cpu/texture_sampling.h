@@ -18,17 +18,18 @@ inline int wrap(int i, int size) { return i >= 0 ? i % size : size - 1 - (-1 - i
 int wrapIndex(int i, int size, Wrap mode);
 
 // a + t·(b - a), written out on both sides (GLSL's mix may round as a·(1 - t) + b·t).
-glm::vec3 lerp(glm::vec3 a, glm::vec3 b, float t);
+glm::vec4 lerp(glm::vec4 a, glm::vec4 b, float t);
 
 // One level: NEAREST or LINEAR at texture coordinates st (t = 0 is the top
-// of the glTF image; facet::Image stores the bottom row first), linear RGB.
-glm::vec3 sampleLevel(const Image& level, bool linear, Wrap wrapS, Wrap wrapT, glm::vec2 st);
+// of the glTF image; facet::Image stores the bottom row first): linear RGB
+// and alpha (the byte / 255, not decoded).
+glm::vec4 sampleLevel(const Image& level, bool linear, Wrap wrapS, Wrap wrapT, glm::vec2 st);
 
 // ρ² of section 8 from derivatives (ds/dx, dt/dx, ds/dy, dt/dy) and level 0's size.
 float footprintSquared(glm::vec4 derivatives, int width, int height);
 
 // The texture through `sampler` at st, derivatives as dFdx(st), dFdy(st)
-// (Interpolation::quadDerivatives), linear RGB.
-glm::vec3 sampleTexture(const Texture& texture, const Sampler& sampler, glm::vec2 st, glm::vec4 derivatives);
+// (Interpolation::quadDerivatives): linear RGB and alpha.
+glm::vec4 sampleTexture(const Texture& texture, const Sampler& sampler, glm::vec2 st, glm::vec4 derivatives);
 
 }  // namespace facet::cpu

@@ -2,10 +2,11 @@
 // What the lit pass interpolates per shading mode, after a window vertex's
 // x, y, z, 1/w: the fast renderer's packed vertices and the reference's
 // clip vertices lay them out alike.
-//   Phong:   world position 0-2, normal 3-5, texture coordinates 6-7, vertex colour 8-10
+//   Phong:   world position 0-2, normal 3-5, texture coordinates 6-7, vertex colour 8-11
 //   Gouraud: front diffuse 0-2, front specular 3-5, back diffuse 6-8,
-//            back specular 9-11, texture coordinates 12-13, vertex colour 14-16
-//   flat:    texture coordinates 0-1, vertex colour 2-4 (the illumination is per triangle)
+//            back specular 9-11, texture coordinates 12-13, vertex colour 14-17
+//   flat:    texture coordinates 0-1, vertex colour 2-5 (the illumination is per triangle)
+// The vertex colour is RGBA: its alpha is the alpha mask's.
 // The vertex colour comes last so that a mesh without one sets up only the
 // planes before it.
 #include "cpu/clipper.h"
@@ -16,14 +17,14 @@ namespace facet::cpu {
 struct VaryingLayout {
   int count = 0;  // varyings in use
   int uv = 0;     // the first texture coordinate
-  int color = 0;  // the vertex colour's red (COLOR_0: R, G, B); count = color + 3
+  int color = 0;  // the vertex colour's red (COLOR_0: R, G, B, A); count = color + 4
 };
 
 constexpr VaryingLayout varyingLayout(ShadingMode mode) {
   switch (mode) {
-    case ShadingMode::Phong: return {11, 6, 8};
-    case ShadingMode::Gouraud: return {17, 12, 14};
-    default: return {5, 0, 2};
+    case ShadingMode::Phong: return {12, 6, 8};
+    case ShadingMode::Gouraud: return {18, 12, 14};
+    default: return {6, 0, 2};
   }
 }
 static_assert(varyingLayout(ShadingMode::Gouraud).count <= kMaxVaryings && varyingLayout(ShadingMode::Phong).count <= kMaxVaryings &&

@@ -107,10 +107,19 @@ Image GlFrameRenderer::readImage() const {
 }
 
 std::vector<std::uint32_t> GlFrameRenderer::drawTriangleIds(const FrameInputs& frame) {
-  if (!triangleIdProgram_) triangleIdProgram_.emplace(buildProgram(gl_, {"triangle_id.vert", "triangle_id.frag"}));
-  const GLuint program = triangleIdProgram_->id();
-  const GLint clipFromModel = uniformLocation(gl_, *triangleIdProgram_, "clipFromModel");
-  const GLint firstTriangle = uniformLocation(gl_, *triangleIdProgram_, "firstTriangle");
+  const auto idVariant = [&](const FrameInstance& instance) { return maskVariant(frame, instance); };
+  for (const FrameInstance& instance : frame.instances) {
+    const DrawVariant variant = idVariant(instance);
+    if (triangleIdPrograms_.count(variant.index())) continue;
+    ShaderProgram program = buildProgram(gl_, {"triangle_id.vert", "triangle_id.frag"}, drawVariantDefines(variant));
+    const auto at = [&](const char* name) { return uniformLocation(gl_, program, name); };
+    triangleIdPrograms_.emplace(variant.index(), TriangleIdProgram{.clipFromModel = at("clipFromModel"),
+                                                                   .firstTriangle = at("firstTriangle"),
+                                                                   .baseColorSampler = at("baseColorSampler"),
+                                                                   .baseAlpha = at("baseAlpha"),
+                                                                   .alphaCutoff = at("alphaCutoff"),
+                                                                   .program = std::move(program)});
+  }
   idTarget_.resize(gl_, frame.width, frame.height);
   gl_.glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   gl_.glFrontFace(GL_CCW);
@@ -126,13 +135,20 @@ std::vector<std::uint32_t> GlFrameRenderer::drawTriangleIds(const FrameInputs& f
   gl_.glEnable(GL_DEPTH_TEST);
   gl_.glDepthFunc(GL_LESS);
   gl_.glCullFace(GL_BACK);
-  gl_.glUseProgram(program);
+  gl_.glBindBufferBase(GL_UNIFORM_BUFFER, kSrgbBlockBinding, srgbUniforms_.id());
   GLuint first = 0;
   for (const FrameInstance& instance : frame.instances) {
     const MeshBuffers& mesh = scene_.mesh(instance.mesh);
+    const DrawVariant variant = idVariant(instance);
+    const TriangleIdProgram& id = triangleIdPrograms_.at(variant.index());
+    const GLuint program = id.program.id();
+    gl_.glUseProgram(program);
     setCulling(instance.cullBackFaces);
-    gl_.glProgramUniformMatrix4fv(program, clipFromModel, 1, GL_FALSE, glm::value_ptr(instance.clipFromModel));
-    gl_.glProgramUniform1ui(program, firstTriangle, first);
+    gl_.glProgramUniformMatrix4fv(program, id.clipFromModel, 1, GL_FALSE, glm::value_ptr(instance.clipFromModel));
+    gl_.glProgramUniform1ui(program, id.firstTriangle, first);
+    if (variant.masked)
+      setBaseColorUniforms(program, id.baseColorSampler, id.baseAlpha, id.alphaCutoff, frame.materials[static_cast<std::size_t>(instance.material)],
+                           variant.textured);
     if (mesh.indexCount > 0) {
       gl_.glBindVertexArray(mesh.vertexArray.id());
       gl_.glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
@@ -150,7 +166,13 @@ std::vector<std::uint32_t> GlFrameRenderer::drawTriangleIds(const FrameInputs& f
 
 DrawVariant GlFrameRenderer::drawVariant(const FrameInputs& frame, const FrameInstance& instance) const {
   const MeshBuffers& mesh = scene_.mesh(instance.mesh);
-  return {frame.materials[static_cast<std::size_t>(instance.material)].baseColorTexture >= 0 && mesh.texcoords, static_cast<bool>(mesh.colors)};
+  const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
+  return {material.baseColorTexture >= 0 && mesh.texcoords, static_cast<bool>(mesh.colors), material.masked};
+}
+
+DrawVariant GlFrameRenderer::maskVariant(const FrameInputs& frame, const FrameInstance& instance) const {
+  const DrawVariant v = drawVariant(frame, instance);
+  return v.masked ? v : DrawVariant{};  // one program for every unmasked draw
 }
 
 void GlFrameRenderer::setCulling(bool cull) {
@@ -187,14 +209,23 @@ bool GlFrameRenderer::preparePrograms(const FrameInputs& frame) {
                                          .metallic = at("material.metallic"),
                                          .baseColorFactor = at("baseColorFactor"),
                                          .baseColorSampler = at("baseColorSampler"),
+                                         .baseAlpha = at("baseAlpha"),
+                                         .alphaCutoff = at("alphaCutoff"),
                                          .program = std::move(program)});
     compiled = true;
   }
-  if (shadows && !depthProgram_) {
-    ShaderProgram program = buildProgram(gl_, {"shadow_depth.vert", "shadow_depth.frag"});
-    depthProgram_.emplace(DepthProgram{.lightClipFromWorld = uniformLocation(gl_, program, "lightClipFromWorld"),
-                                       .worldFromModel = uniformLocation(gl_, program, "worldFromModel"),
-                                       .program = std::move(program)});
+  for (const FrameInstance& instance : frame.instances) {
+    if (!shadows) break;
+    const DrawVariant variant = maskVariant(frame, instance);
+    if (depthPrograms_.count(variant.index())) continue;
+    ShaderProgram program = buildProgram(gl_, {"shadow_depth.vert", "shadow_depth.frag"}, drawVariantDefines(variant));
+    const auto at = [&](const char* name) { return uniformLocation(gl_, program, name); };
+    depthPrograms_.emplace(variant.index(), DepthProgram{.lightClipFromWorld = at("lightClipFromWorld"),
+                                                         .worldFromModel = at("worldFromModel"),
+                                                         .baseColorSampler = at("baseColorSampler"),
+                                                         .baseAlpha = at("baseAlpha"),
+                                                         .alphaCutoff = at("alphaCutoff"),
+                                                         .program = std::move(program)});
     compiled = true;
   }
   if (!backgroundProgram_) {
@@ -206,26 +237,32 @@ bool GlFrameRenderer::preparePrograms(const FrameInputs& frame) {
 
 void GlFrameRenderer::shadowPass(const FrameInputs& frame) {
   shadowMaps_.resize(gl_, frame.shadows.mapSize, frame.shadowLayerCount);
-  const GLuint program = depthProgram_->program.id();
   gl_.glBindFramebuffer(GL_FRAMEBUFFER, shadowMaps_.framebuffer());
   gl_.glViewport(0, 0, shadowMaps_.size(), shadowMaps_.size());
-  gl_.glUseProgram(program);
   gl_.glDisable(GL_CULL_FACE);  // every triangle casts a shadow
   gl_.glEnable(GL_DEPTH_TEST);
   gl_.glDepthFunc(GL_LESS);
   gl_.glDepthMask(GL_TRUE);
+  gl_.glBindTextureUnit(kShadowMapsUnit, 0);  // the maps are the target here
   const float farDepth = 1.0f;
   for (const FrameLight& light : frame.lights) {
     if (!light.hasShadowMap) continue;
     for (int face = 0; face < light.frustum.faceCount; ++face) {
       shadowMaps_.attachLayer(gl_, light.shadowLayer + face);
       gl_.glClearNamedFramebufferfv(shadowMaps_.framebuffer(), GL_DEPTH, 0, &farDepth);
-      gl_.glProgramUniformMatrix4fv(program, depthProgram_->lightClipFromWorld, 1, GL_FALSE,
-                                    glm::value_ptr(light.frustum.clipFromWorld[static_cast<std::size_t>(face)]));
       for (const FrameInstance& instance : frame.instances) {
         const MeshBuffers& mesh = scene_.mesh(instance.mesh);
         if (mesh.indexCount == 0) continue;
-        gl_.glProgramUniformMatrix4fv(program, depthProgram_->worldFromModel, 1, GL_FALSE, glm::value_ptr(instance.worldFromModel));
+        const DrawVariant variant = maskVariant(frame, instance);
+        const DepthProgram& depth = depthPrograms_.at(variant.index());
+        const GLuint program = depth.program.id();
+        gl_.glUseProgram(program);
+        gl_.glProgramUniformMatrix4fv(program, depth.lightClipFromWorld, 1, GL_FALSE,
+                                      glm::value_ptr(light.frustum.clipFromWorld[static_cast<std::size_t>(face)]));
+        gl_.glProgramUniformMatrix4fv(program, depth.worldFromModel, 1, GL_FALSE, glm::value_ptr(instance.worldFromModel));
+        if (variant.masked)
+          setBaseColorUniforms(program, depth.baseColorSampler, depth.baseAlpha, depth.alphaCutoff,
+                               frame.materials[static_cast<std::size_t>(instance.material)], variant.textured);
         gl_.glBindVertexArray(mesh.vertexArray.id());
         gl_.glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
       }
@@ -288,13 +325,7 @@ void GlFrameRenderer::drawInstance(const LitProgram& lit, const FrameInputs& fra
   gl_.glProgramUniform1f(program, lit.shininess, material.shininess);
   gl_.glProgramUniform1f(program, lit.metallic, material.metallic);
   gl_.glProgramUniform3fv(program, lit.baseColorFactor, 1, glm::value_ptr(material.baseColor));
-  const Sampler& sampler = material.baseColorSampler;
-  static_assert(static_cast<int>(MagFilter::Linear) == 1 && static_cast<int>(MinFilter::NearestMipmapNearest) == 2 &&
-                    static_cast<int>(MinFilter::LinearMipmapLinear) == 5 && static_cast<int>(Wrap::MirroredRepeat) == 2,
-                "shaders/texture.glsl reads these values");
-  gl_.glProgramUniform4i(program, lit.baseColorSampler, static_cast<GLint>(sampler.mag), static_cast<GLint>(sampler.min),
-                         static_cast<GLint>(sampler.wrapS), static_cast<GLint>(sampler.wrapT));
-  gl_.glBindTextureUnit(kBaseColorTextureUnit, textured ? scene_.texture(material.baseColorTexture) : 0);
+  setBaseColorUniforms(program, lit.baseColorSampler, lit.baseAlpha, lit.alphaCutoff, material, textured);
 
   if (flat) {
     gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshIndicesBinding, mesh.indices.id());
@@ -308,6 +339,19 @@ void GlFrameRenderer::drawInstance(const LitProgram& lit, const FrameInputs& fra
     gl_.glBindVertexArray(mesh.vertexArray.id());
     gl_.glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
   }
+}
+
+void GlFrameRenderer::setBaseColorUniforms(GLuint program, GLint samplerLocation, GLint baseAlpha, GLint alphaCutoff, const CourseMaterial& material,
+                                           bool textured) {
+  gl_.glProgramUniform1f(program, baseAlpha, material.baseAlpha);
+  gl_.glProgramUniform1f(program, alphaCutoff, material.alphaCutoff);
+  const Sampler& sampler = material.baseColorSampler;
+  static_assert(static_cast<int>(MagFilter::Linear) == 1 && static_cast<int>(MinFilter::NearestMipmapNearest) == 2 &&
+                    static_cast<int>(MinFilter::LinearMipmapLinear) == 5 && static_cast<int>(Wrap::MirroredRepeat) == 2,
+                "shaders/texture.glsl reads these values");
+  gl_.glProgramUniform4i(program, samplerLocation, static_cast<GLint>(sampler.mag), static_cast<GLint>(sampler.min), static_cast<GLint>(sampler.wrapS),
+                         static_cast<GLint>(sampler.wrapT));
+  gl_.glBindTextureUnit(kBaseColorTextureUnit, textured ? scene_.texture(material.baseColorTexture) : 0);
 }
 
 void GlFrameRenderer::checkError(const char* where) const {

@@ -60,10 +60,12 @@ class GlFrameRenderer {
     GLint emissive, ka, kd, ks, shininess, metallic;
     GLint baseColorFactor;
     GLint baseColorSampler;
+    GLint baseAlpha, alphaCutoff;
     ShaderProgram program;
   };
   struct DepthProgram {
     GLint lightClipFromWorld, worldFromModel;
+    GLint baseColorSampler, baseAlpha, alphaCutoff;
     ShaderProgram program;
   };
 
@@ -73,6 +75,10 @@ class GlFrameRenderer {
   const LitProgram* litProgram(const FrameInputs& frame, DrawVariant variant) const;
   // What the instance's draw reads: a base colour texture, vertex colours.
   DrawVariant drawVariant(const FrameInputs& frame, const FrameInstance& instance) const;
+  // What the shadow pass and the triangle-id pass draw `instance` with: only an alpha mask changes them.
+  DrawVariant maskVariant(const FrameInputs& frame, const FrameInstance& instance) const;
+  // The base colour texture, its sampler and the alpha mask's uniforms of `material` on `program`.
+  void setBaseColorUniforms(GLuint program, GLint sampler, GLint baseAlpha, GLint alphaCutoff, const CourseMaterial& material, bool textured);
   // Back-face culling as the instance asks (FrameInstance::cullBackFaces).
   void setCulling(bool cull);
   void shadowPass(const FrameInputs& frame);
@@ -85,9 +91,14 @@ class GlFrameRenderer {
   // Lit programs by shading mode and specialization (gl/shader_variant.h),
   // kept while the frame's lights and settings keep asking for them.
   std::map<std::string, LitProgram> litPrograms_;
-  std::optional<DepthProgram> depthProgram_;
+  std::map<int, DepthProgram> depthPrograms_;  // by DrawVariant::index(); only masked draws differ
   std::optional<ShaderProgram> backgroundProgram_;
-  std::optional<ShaderProgram> triangleIdProgram_;
+  struct TriangleIdProgram {
+    GLint clipFromModel, firstTriangle;
+    GLint baseColorSampler, baseAlpha, alphaCutoff;
+    ShaderProgram program;
+  };
+  std::map<int, TriangleIdProgram> triangleIdPrograms_;  // by DrawVariant::index(); only masked draws differ
   GlObject frameUniforms_;     // the Frame block (FrameBlock), binding 0
   GlObject srgbUniforms_;      // the SrgbTables block (SrgbBlock), binding 1, written once
   GlObject emptyVertexArray_;  // for draws that read no attributes (background, flat shading)

@@ -17,10 +17,16 @@ std::string perLight(const FrameInputs& frame, Value value) {
 
 }  // namespace
 
-std::string litShaderDefines(const FrameInputs& frame, DrawVariant variant) {
+std::string drawVariantDefines(DrawVariant variant) {
   std::string d;
   d += "#define FACET_TEXTURED " + std::string(variant.textured ? "1" : "0") + "\n";
   d += "#define FACET_COLORED " + std::string(variant.colored ? "1" : "0") + "\n";
+  d += "#define FACET_MASKED " + std::string(variant.masked ? "1" : "0") + "\n";
+  return d;
+}
+
+std::string litShaderDefines(const FrameInputs& frame, DrawVariant variant) {
+  std::string d = drawVariantDefines(variant);
   d += "#define FACET_SPECULAR_MODEL " + std::to_string(static_cast<int>(frame.specular)) + "\n";
   d += "#define FACET_PCF_RADIUS " + std::to_string(frame.shadows.pcfRadius) + "\n";
   d += "#define FACET_LIGHT_COUNT " + std::to_string(frame.lights.size()) + "\n";

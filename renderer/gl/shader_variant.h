@@ -2,7 +2,7 @@
 // Lit-pass programs specialized per frame: what the shaders would otherwise
 // decide per pixel from uniforms (light count and kinds, which lights have
 // shadow maps, the specular model, the PCF radius, whether the draw is
-// textured or has vertex colours) becomes #defines compiled in. llvmpipe evaluates both sides of
+// textured, has vertex colours or is alpha-masked) becomes #defines compiled in. llvmpipe evaluates both sides of
 // every `if` with per-pixel masks, so a texture path or a shadow lookup that
 // a uniform turns off still costs its full price on every pixel; compiled
 // out, it costs nothing. Only dead branches go: the arithmetic of the path
@@ -17,10 +17,15 @@ namespace facet::gl {
 struct DrawVariant {
   bool textured = false;  // a base colour texture, through TEXCOORD_0
   bool colored = false;   // COLOR_0
-  static constexpr int kCount = 4;
-  int index() const { return (textured ? 1 : 0) + (colored ? 2 : 0); }
-  static DrawVariant of(int index) { return {(index & 1) != 0, (index & 2) != 0}; }
+  bool masked = false;    // alphaMode MASK: fragments below the cutoff are discarded
+  static constexpr int kCount = 8;
+  int index() const { return (textured ? 1 : 0) + (colored ? 2 : 0) + (masked ? 4 : 0); }
+  static DrawVariant of(int index) { return {(index & 1) != 0, (index & 2) != 0, (index & 4) != 0}; }
 };
+
+// The #define lines of a variant's draw-specific macros (FACET_TEXTURED,
+// FACET_COLORED, FACET_MASKED): the lit programs' and the triangle-id pass's.
+std::string drawVariantDefines(DrawVariant variant);
 
 // The #define lines (one per macro, each ending in a newline) of the lit
 // programs for `frame`, for draws of `variant`. Equal strings mean the same

@@ -12,6 +12,9 @@ CourseMaterial courseMaterial(const Material& material, const MaterialOverrides&
   const float f0 = 0.04f * (1.0f - m) + 0.9f * m;
   CourseMaterial out;
   out.baseColor = glm::vec3(material.baseColor);
+  out.baseAlpha = material.baseColor.a;
+  out.masked = material.alphaMode == AlphaMode::Mask;
+  out.alphaCutoff = material.alphaCutoff;
   out.baseColorTexture = material.baseColorTexture;
   out.emissive = material.emissive;
   out.kd = overrides.kd.value_or(1.0f - 0.6f * m);

@@ -19,6 +19,11 @@ struct CourseMaterial {
   float shininess = 1;        // n
   float metallic = 0;         // m in O_s = (1 - m) + m·O_d, in [0, 1]
   bool doubleSided = false;
+  // Alpha mask (PIPELINE.md, section 8): α = factor·COLOR_0.a·texel.a, each where present;
+  // with `masked`, a fragment is kept when α ≥ alphaCutoff (NaN discards).
+  float baseAlpha = 1.0f;     // the base colour factor's alpha
+  bool masked = false;
+  float alphaCutoff = 0.5f;
 };
 
 // The smallest derived exponent: (cos θ)^8 falls to half at θ = 23.6°, a

@@ -264,7 +264,8 @@ void checkSamplers(const json& document) {
 }
 
 // glTF 2.0, 5.23 "textureInfo.index": a material's texture (base colour,
-// metallic-roughness, normal, occlusion, emissive) is one that exists.
+// metallic-roughness, normal, occlusion, emissive) is one that exists; and
+// its alphaMode is one of glTF's three, its alphaCutoff a number ≥ 0.
 void checkMaterialTextures(const json& document) {
   const json& materials = arrayOf(document, "materials");
   const std::size_t textures = arrayOf(document, "textures").size();
@@ -283,6 +284,16 @@ void checkMaterialTextures(const json& document) {
   for (std::size_t m = 0; m < materials.size(); ++m) {
     const json& material = materials[m];
     if (!material.is_object()) continue;
+    // glTF 2.0, 5.19 "material.alphaMode" and "alphaCutoff" (minimum 0).
+    if (const auto mode = material.find("alphaMode"); mode != material.end()) {
+      const std::string text = mode->is_string() ? mode->get<std::string>() : "";
+      if (text != "OPAQUE" && text != "MASK" && text != "BLEND")
+        throw Error(named("materials", m, material) + ": alphaMode " + show(mode->dump()) + " is not one of OPAQUE, MASK, BLEND");
+    }
+    if (const auto cutoff = material.find("alphaCutoff"); cutoff != material.end()) {
+      if (!cutoff->is_number() || !(cutoff->get<double>() >= 0.0) || !std::isfinite(cutoff->get<double>()))
+        throw Error(named("materials", m, material) + ": alphaCutoff " + show(cutoff->dump()) + " is not a finite number of at least 0");
+    }
     if (const auto pbr = material.find("pbrMetallicRoughness"); pbr != material.end()) {
       check(m, *pbr, "baseColorTexture", "pbrMetallicRoughness.baseColorTexture");
       check(m, *pbr, "metallicRoughnessTexture", "pbrMetallicRoughness.metallicRoughnessTexture");

@@ -290,6 +290,14 @@ void convertMaterials(const tinygltf::Model& model, Scene& scene, Warnings& warn
       if (std::isfinite(s) && s >= 0) material.emissive *= static_cast<float>(s);
     }
     material.doubleSided = src.doubleSided;
+    // alphaMode and alphaCutoff are checked by checkGltfDocument.
+    if (src.alphaMode == "MASK") {
+      material.alphaMode = AlphaMode::Mask;
+      material.alphaCutoff = static_cast<float>(src.alphaCutoff);
+    } else if (src.alphaMode == "BLEND") {
+      material.alphaMode = AlphaMode::Blend;
+      warnings.push_back(at("materials", m) + ": alphaMode BLEND is drawn opaque (facet does not blend yet)");
+    }
     const int texture = pbr.baseColorTexture.index;
     if (texture >= 0) {
       if (static_cast<std::size_t>(texture) >= scene.textures.size()) {

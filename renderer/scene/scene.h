@@ -35,6 +35,10 @@ struct MeshInstance {
   glm::mat4 worldFromModel{1.0f};          // TM
 };
 
+// glTF 2.0's alphaMode. BLEND is read and drawn as OPAQUE (with a warning)
+// until blending lands; MASK discards fragments below alphaCutoff.
+enum class AlphaMode { Opaque, Mask, Blend };
+
 // glTF metallic-roughness material; the course coefficients k_a, k_d, k_s, n
 // are derived from it in pipeline/material_coefficients.
 struct Material {
@@ -45,6 +49,8 @@ struct Material {
   float metallic = 1.0f;          // glTF default
   float roughness = 1.0f;         // glTF default
   bool doubleSided = false;
+  AlphaMode alphaMode = AlphaMode::Opaque;
+  float alphaCutoff = 0.5f;       // MASK: a fragment whose alpha is below it is discarded
 };
 
 // A glTF sampler (5.26); its absence means REPEAT and filters of the

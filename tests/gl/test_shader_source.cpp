@@ -81,7 +81,12 @@ TEST_CASE("every shader file is embedded, and every program of the backend compi
         INFO(name, "\n", defines);
         CHECK_NOTHROW(buildProgram(harness.gl, {"lit_" + name + ".vert", "lit_" + name + ".frag"}, defines));
       }
-  CHECK_NOTHROW(buildProgram(harness.gl, {"shadow_depth.vert", "shadow_depth.frag"}));
+  for (int variant = 0; variant < DrawVariant::kCount; ++variant) {
+    const std::string defines = drawVariantDefines(DrawVariant::of(variant));
+    INFO(defines);
+    CHECK_NOTHROW(buildProgram(harness.gl, {"shadow_depth.vert", "shadow_depth.frag"}, defines));
+    CHECK_NOTHROW(buildProgram(harness.gl, {"triangle_id.vert", "triangle_id.frag"}, defines));
+  }
   CHECK_NOTHROW(buildProgram(harness.gl, {"background.vert", "background.frag"}));
 }
 

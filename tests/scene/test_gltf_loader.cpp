@@ -608,6 +608,28 @@ TEST_CASE("glTF bad input: a sampler code outside glTF's lists, or a material's 
   CHECK_NOTHROW(loadJson(j));
 }
 
+TEST_CASE("glTF alphaMode: MASK and its cutoff are read, BLEND is drawn opaque with a warning, other values are refused by name") {
+  const Scene scene = loadGltf(std::string(FACET_ASSETS) + "/scenes/alpha_mask.gltf");
+  REQUIRE(scene.materials.size() >= 3);
+  CHECK(scene.materials[0].alphaMode == AlphaMode::Mask);
+  CHECK(scene.materials[0].alphaCutoff == 0.5f);
+  CHECK(scene.materials[1].alphaCutoff == 0.9f);
+  CHECK(scene.materials[2].alphaMode == AlphaMode::Mask);  // the ramp: glTF's default cutoff
+  CHECK(scene.materials[2].alphaCutoff == 0.5f);
+  CHECK(scene.textures[0].image.at(0, 0).a == 0);  // the leaf's corner is transparent
+  nlohmann::json j = triangle();
+  j["materials"] = {{{"name", "glass"}, {"alphaMode", "BLEND"}}};
+  const Scene blend = loadJson(j);
+  CHECK(blend.materials[0].alphaMode == AlphaMode::Blend);
+  CHECK(hasWarning(blend, "materials[0]: alphaMode BLEND is drawn opaque (facet does not blend yet)"));
+  j["materials"] = {{{"name", "glass"}, {"alphaMode", "mask"}}};
+  CHECK_THROWS_WITH_AS(loadJson(j), "bad.gltf: materials[0] 'glass': alphaMode '\"mask\"' is not one of OPAQUE, MASK, BLEND", Error);
+  j["materials"] = {{{"alphaMode", "MASK"}, {"alphaCutoff", -0.5}}};
+  CHECK_THROWS_WITH_AS(loadJson(j), "bad.gltf: materials[0]: alphaCutoff '-0.5' is not a finite number of at least 0", Error);
+  j["materials"] = {{{"alphaMode", "MASK"}, {"alphaCutoff", "half"}}};
+  CHECK_THROWS_WITH_AS(loadJson(j), doctest::Contains("alphaCutoff '\"half\"' is not a finite number"), Error);
+}
+
 TEST_CASE("glTF bad input: positions that cannot be framed are dropped, naming the accessor, and the rest is framed") {
   // Triangle 0 at the origin, triangle 1 at 3e19 (its bounding radius overflowed float: an empty image), triangle 2 with a NaN.
   const float nan = std::numeric_limits<float>::quiet_NaN();

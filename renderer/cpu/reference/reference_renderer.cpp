@@ -19,6 +19,7 @@
 #include <functional>
 #include <vector>
 
+#include "cpu/alpha_mask.h"
 #include "cpu/clipper.h"
 #include "cpu/interpolation.h"
 #include "cpu/lighting.h"
@@ -48,9 +49,12 @@ struct Target {
 // the triangle's planes at the pixel (for the texture derivatives) -> linear colour.
 using FragmentShader = std::function<glm::vec3(const float* varyings, bool frontFacing, const Interpolation& planes, int px, int py)>;
 
+// Whether a fragment that passed the z-test is kept (the alpha mask), before it writes depth.
+using FragmentTest = std::function<bool(const Interpolation& planes, int px, int py)>;
+
 // One triangle, its three vertices after the vertex stage, to the z-buffer.
 void drawTriangle(const ClipVertex (&vertex)[3], int varyingCount, bool cullBackFaces, std::uint32_t id, Target& target,
-                  const FragmentShader& shade) {
+                  const FragmentShader& shade, const FragmentTest& keep = nullptr) {
   const float halfWidth = 0.5f * static_cast<float>(target.width), halfHeight = 0.5f * static_cast<float>(target.height);
   // Clipping: the triangle itself when it lies inside the view volume, else the clipped polygon as a fan.
   WindowVertex window[3];
@@ -75,6 +79,7 @@ void drawTriangle(const ClipVertex (&vertex)[3], int varyingCount, bool cullBack
       const std::size_t pixel = static_cast<std::size_t>(py) * static_cast<std::size_t>(target.width) + static_cast<std::size_t>(px);
       const float z = planes.depthAt(px, py);
       if (!(z < target.depth[pixel])) return;
+      if (keep && !keep(planes, px, py)) return;
       target.depth[pixel] = z;
       if (target.ids) (*target.ids)[pixel] = id;
       if (!target.image) return;
@@ -95,13 +100,29 @@ ShadowMaps shadowPass(const Scene& scene, const FrameInputs& frame) {
       Target target{maps.size, maps.size, std::vector<float>(static_cast<std::size_t>(maps.size) * static_cast<std::size_t>(maps.size), 1.0f)};
       for (const FrameInstance& instance : frame.instances) {
         const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
+        // An alpha-masked material casts a shadow only where its fragments are kept: it
+        // interpolates texture coordinates and vertex alpha, in the flat layout's places.
+        const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
+        const VaryingLayout mask = varyingLayout(ShadingMode::Flat);
+        const Texture* texture = material.baseColorTexture >= 0 && !mesh.texcoords.empty()
+                                     ? &scene.textures[static_cast<std::size_t>(material.baseColorTexture)]
+                                     : nullptr;
+        const bool colored = !mesh.colors.empty();
+        const FragmentTest keep = [&](const Interpolation& planes, int px, int py) {
+          return keepsFragment(material, texture, colored, mask, planes, px, py);
+        };
         for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
           ClipVertex v[3];
           for (std::size_t k = 0; k < 3; ++k) {
-            const glm::vec3 world = glm::vec3(transformPoint(instance.worldFromModel, mesh.positions[mesh.indices[t + k]]));
+            const std::uint32_t i = mesh.indices[t + k];
+            const glm::vec3 world = glm::vec3(transformPoint(instance.worldFromModel, mesh.positions[i]));
             v[k].clip = transformPoint(light.frustum.clipFromWorld[static_cast<std::size_t>(face)], world);
+            const glm::vec2 st = mesh.texcoords.empty() ? glm::vec2(0.0f) : mesh.texcoords[i];
+            const glm::vec4 rgba = colored ? mesh.colors[i] : glm::vec4(1.0f);
+            v[k].varyings[static_cast<std::size_t>(mask.uv)] = st.x, v[k].varyings[static_cast<std::size_t>(mask.uv + 1)] = st.y;
+            for (int c = 0; c < 4; ++c) v[k].varyings[static_cast<std::size_t>(mask.color + c)] = rgba[c];
           }
-          drawTriangle(v, 0, false, 0, target, nullptr);
+          drawTriangle(v, material.masked ? mask.count : 0, false, 0, target, nullptr, material.masked ? keep : nullptr);
         }
       }
       std::copy(target.depth.begin(), target.depth.end(), maps.layer(light.shadowLayer + face));
@@ -127,9 +148,13 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
       glm::vec3 O = material.baseColor;
       if (colored) O = O * glm::vec3(v[color], v[color + 1], v[color + 2]);
       if (textured)
-        O = O * sampleTexture(scene.textures[static_cast<std::size_t>(material.baseColorTexture)], material.baseColorSampler, {v[uv], v[uv + 1]},
-                              planes.quadDerivatives(uv, px, py));
+        O = O * glm::vec3(sampleTexture(scene.textures[static_cast<std::size_t>(material.baseColorTexture)], material.baseColorSampler,
+                                        {v[uv], v[uv + 1]}, planes.quadDerivatives(uv, px, py)));
       return O;
+    };
+    const Texture* texture = textured ? &scene.textures[static_cast<std::size_t>(material.baseColorTexture)] : nullptr;
+    const FragmentTest keep = [&](const Interpolation& planes, int px, int py) {
+      return keepsFragment(material, texture, colored, layout, planes, px, py);
     };
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
       // Vertex stage.
@@ -143,8 +168,8 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
         float* out = v[k].varyings.data();
         const glm::vec2 st = mesh.texcoords.empty() ? glm::vec2(0.0f) : mesh.texcoords[i];
         out[uv] = st.x, out[uv + 1] = st.y;
-        const glm::vec3 rgb = colored ? glm::vec3(mesh.colors[i]) : glm::vec3(1.0f);
-        for (int c = 0; c < 3; ++c) out[color + c] = rgb[c];
+        const glm::vec4 rgba = colored ? mesh.colors[i] : glm::vec4(1.0f);
+        for (int c = 0; c < 4; ++c) out[color + c] = rgba[c];
         if (frame.shading == ShadingMode::Phong) {
           for (int c = 0; c < 3; ++c) out[c] = world[k][c], out[3 + c] = N[c];
         } else if (frame.shading == ShadingMode::Gouraud) {  // the illumination equation at the vertex, both sides
@@ -178,7 +203,7 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
         }
         return shade(front ? flat[0] : flat[1], baseColor(f, planes, px, py));
       };
-      drawTriangle(v, count, instance.cullBackFaces, ++id, target, fragment);
+      drawTriangle(v, count, instance.cullBackFaces, ++id, target, fragment, material.masked ? keep : nullptr);
     }
   }
 }
