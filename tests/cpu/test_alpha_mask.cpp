@@ -73,7 +73,7 @@ TEST_CASE("the alpha mask keeps a fragment when (factor.a * COLOR_0.a) * texel.a
   CHECK_FALSE(cpu::alphaKept(m, std::numeric_limits<float>::quiet_NaN()));
 }
 
-TEST_CASE("a masked-away fragment shows what is behind it and casts no shadow; the kept part draws and shadows as opaque") {
+TEST_CASE("a masked-away fragment shows what is behind it and casts no shadow, and the kept part draws and shadows as opaque") {
   for (const bool reference : {false, true}) {
     CAPTURE(reference);
     const Scene scene = maskedQuadScene(AlphaMode::Mask);
