@@ -1,7 +1,7 @@
 // The uniforms of one draw of the lit pass (one mesh instance), set by
 // renderer/gl/frame_renderer.cpp from FrameInputs::instances and ::materials,
 // and the two textures the lit pass reads (with texelFetch only).
-// Needs frame_block.glsl, srgb.glsl and texture.glsl before it.
+// Needs frame_block.glsl, srgb.glsl, texture.glsl and procedural.glsl before it.
 
 uniform mat4 clipFromModel;        // PM·EM·TM
 uniform mat4 worldFromModel;       // TM
@@ -17,17 +17,21 @@ layout(binding = 1) uniform usampler2D baseColorTexture; // sRGB-encoded bytes (
 
 // O_d = factor · COLOR_0 · texel at texture coordinates st, whose
 // derivatives are (dFdx(st), dFdy(st)), and its alpha
-// (factor.a · COLOR_0.a) · texel.a (renderer/PIPELINE.md, section 8).
+// (factor.a · COLOR_0.a) · texel.a (renderer/PIPELINE.md, section 8); with
+// FACET_PROCEDURAL, the texel is the pattern's at modelPoint.
 // FACET_COLORED: the draw's mesh has COLOR_0; FACET_TEXTURED: its material
 // has a base colour texture and its mesh TEXCOORD_0.
-vec4 baseColorAt(vec2 st, vec4 stDerivatives, vec4 vertexColor) {
+vec4 baseColorAt(vec2 st, vec4 stDerivatives, vec4 vertexColor, vec3 modelPoint) {
   precise vec3 O = baseColorFactor;
   precise float alpha = baseAlpha;
 #if FACET_COLORED
   O = O * vertexColor.rgb;
   alpha = alpha * vertexColor.a;
 #endif
-#if FACET_TEXTURED
+#if defined(FACET_PROCEDURAL) && FACET_PROCEDURAL
+  // A procedural texture in place of the base colour texture (grey, alpha 1); frame.ambient.y is its scale k.
+  O = O * proceduralGrey(FACET_PROCEDURAL, modelPoint, frame.ambient.y);
+#elif FACET_TEXTURED
   vec4 texel = sampleTexture(baseColorTexture, baseColorSampler, st, stDerivatives);
   O = O * texel.rgb;
   alpha = alpha * texel.a;

@@ -14,6 +14,7 @@
 #include "shading_math.glsl"
 #include "srgb.glsl"
 #include "texture.glsl"
+#include "procedural.glsl"
 #include "draw_uniforms.glsl"
 #include "lighting.glsl"
 
@@ -28,6 +29,7 @@ flat out vec3 backDiffuse;   // Illumination with -N, for back faces where they 
 flat out vec3 backSpecular;
 out vec2 st;                 // a texture still varies O_d per pixel
 out vec4 vertexColor;        // and so do vertex colours
+out vec3 modelPoint;      // and procedural textures
 
 vec3 modelPosition(uint v) {
   return vec3(positions[3u * v], positions[3u * v + 1u], positions[3u * v + 2u]);
@@ -59,6 +61,7 @@ void main() {
 #else
   st = vec2(0.0);
 #endif
+  modelPoint = modelPosition(v);
 #if FACET_COLORED
   vertexColor = vec4(colors[4u * v], colors[4u * v + 1u], colors[4u * v + 2u], colors[4u * v + 3u]);
 #else

@@ -6,6 +6,7 @@
 #include "shading_math.glsl"
 #include "srgb.glsl"
 #include "texture.glsl"
+#include "procedural.glsl"
 #include "draw_uniforms.glsl"
 #include "lighting.glsl"
 
@@ -15,13 +16,14 @@ in vec3 backDiffuse;
 in vec3 backSpecular;
 in vec2 st;
 in vec4 vertexColor;
+in vec3 modelPoint;
 
 layout(location = 0) out vec4 color;
 
 void main() {
   vec4 stDerivatives = vec4(dFdx(st), dFdy(st));  // in uniform control flow, before anything can branch
   Illumination I = gl_FrontFacing ? Illumination(frontDiffuse, frontSpecular) : Illumination(backDiffuse, backSpecular);
-  vec4 O = baseColorAt(st, stDerivatives, vertexColor);
+  vec4 O = baseColorAt(st, stDerivatives, vertexColor, modelPoint);
   if (!alphaKept(O.a)) discard;  // alpha mask (a no-op unless FACET_MASKED)
   color = encodeSrgb(shade(I, O.rgb));
 }

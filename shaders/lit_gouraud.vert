@@ -7,6 +7,7 @@
 #include "shading_math.glsl"
 #include "srgb.glsl"
 #include "texture.glsl"
+#include "procedural.glsl"
 #include "draw_uniforms.glsl"
 #include "lighting.glsl"
 
@@ -21,6 +22,7 @@ out vec3 backDiffuse;    // Illumination with -N, for back faces where they are 
 out vec3 backSpecular;
 out vec2 st;
 out vec4 vertexColor;
+out vec3 modelPoint;      // procedural textures
 
 void main() {
   gl_Position = transformPoint(clipFromModel, position);
@@ -35,4 +37,5 @@ void main() {
   backSpecular = back.specular;
   st = texcoord;
   vertexColor = color0;
+  modelPoint = position;
 }

@@ -6,6 +6,7 @@
 #include "shading_math.glsl"
 #include "srgb.glsl"
 #include "texture.glsl"
+#include "procedural.glsl"
 #include "draw_uniforms.glsl"
 #include "lighting.glsl"
 
@@ -13,6 +14,7 @@ in vec3 worldPosition;
 in vec3 worldNormal;
 in vec2 st;
 in vec4 vertexColor;
+in vec3 modelPoint;
 
 layout(location = 0) out vec4 color;
 
@@ -21,7 +23,7 @@ void main() {
   vec3 P = worldPosition;
   vec3 N = normalize3(worldNormal);
   if (!gl_FrontFacing) N = -N;  // two-sided lighting: a back face is drawn only where it is not culled
-  vec4 O = baseColorAt(st, stDerivatives, vertexColor);
+  vec4 O = baseColorAt(st, stDerivatives, vertexColor, modelPoint);
   if (!alphaKept(O.a)) discard;  // alpha mask (a no-op unless FACET_MASKED)
   color = encodeSrgb(shade(illuminate(material, P, N, viewVector(P)), O.rgb));
 }

@@ -6,6 +6,7 @@
 #include "shading_math.glsl"
 #include "srgb.glsl"
 #include "texture.glsl"
+#include "procedural.glsl"
 #include "draw_uniforms.glsl"
 
 layout(location = 0) in vec3 position;  // model space
@@ -17,6 +18,7 @@ out vec3 worldPosition;
 out vec3 worldNormal;  // unit at the vertex; renormalized per pixel
 out vec2 st;
 out vec4 vertexColor;
+out vec3 modelPoint;      // procedural textures
 
 void main() {
   gl_Position = transformPoint(clipFromModel, position);
@@ -24,4 +26,5 @@ void main() {
   worldNormal = normalize3(transformDirection(normalMatrix, normal));
   st = texcoord;
   vertexColor = color0;
+  modelPoint = position;
 }

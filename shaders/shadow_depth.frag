@@ -5,6 +5,7 @@
 #include "shading_math.glsl"
 #include "srgb.glsl"
 #include "texture.glsl"
+#include "procedural.glsl"
 #include "draw_uniforms.glsl"
 
 in vec2 st;
@@ -12,5 +13,5 @@ in vec4 vertexColor;
 
 void main() {
   vec4 stDerivatives = vec4(dFdx(st), dFdy(st));
-  if (!alphaKept(baseColorAt(st, stDerivatives, vertexColor).a)) discard;
+  if (!alphaKept(baseColorAt(st, stDerivatives, vertexColor, vec3(0.0)).a)) discard;
 }

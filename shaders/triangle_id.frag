@@ -6,6 +6,7 @@
 #include "shading_math.glsl"
 #include "srgb.glsl"
 #include "texture.glsl"
+#include "procedural.glsl"
 #include "draw_uniforms.glsl"
 
 uniform uint firstTriangle;
@@ -17,6 +18,6 @@ layout(location = 0) out uint id;
 
 void main() {
   vec4 stDerivatives = vec4(dFdx(st), dFdy(st));
-  if (!alphaKept(baseColorAt(st, stDerivatives, vertexColor).a)) discard;
+  if (!alphaKept(baseColorAt(st, stDerivatives, vertexColor, vec3(0.0)).a)) discard;
   id = firstTriangle + uint(gl_PrimitiveID) + 1u;
 }

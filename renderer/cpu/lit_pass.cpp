@@ -14,6 +14,7 @@
 #include "cpu/lighting.h"
 #include "cpu/passes.h"
 #include "cpu/phong_batch.h"
+#include "cpu/procedural.h"
 #include "cpu/srgb_table.h"
 #include "cpu/texture_sampling.h"
 #include "cpu/tile_raster.h"
@@ -46,6 +47,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
   const Texture* texture = nullptr;
   bool colored = false;
   int used = 0;  // varyings set up for the triangle: a prefix of the layout
+  const bool procedural = frame.procedural != Procedural::None;
   bool back = false;
   const Illumination* flat = nullptr;
   PhongBatch batch(frame, maps, image.data());  // Phong: four pixels' illumination at a time
@@ -63,11 +65,9 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         const FrameInstance& instance = frame.instances[t.instance];
         const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
         material = &frame.materials[static_cast<std::size_t>(instance.material)];
-        texture = material->baseColorTexture >= 0 && !mesh.texcoords.empty()
-                      ? &scene.textures[static_cast<std::size_t>(material->baseColorTexture)]
-                      : nullptr;
+        texture = baseColorTextureOf(scene, frame, *material, mesh);
         colored = !mesh.colors.empty();
-        used = colored ? layout.count : (kMode == ShadingMode::Flat && !texture ? 0 : layout.color);
+        used = procedural ? layout.count : colored ? layout.model : (kMode == ShadingMode::Flat && !texture ? 0 : layout.color);
         back = !t.snapped.frontFacing;
         if (used) in->setUpVaryings(used);
         if constexpr (kMode == ShadingMode::Flat) flat = &bins.flat[2 * index];
@@ -76,7 +76,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
       if constexpr (kMode == ShadingMode::Phong) {
         // Four pixels of one untextured, uncoloured triangle in a row: interpolation on four lanes, straight into the batch.
         const std::uint32_t* row = &scratch.id[(py - ty0) * kTileSize + (px - tx0)];
-        if (!texture && !colored && px + 3 <= tx1 && row[1] == id && row[2] == id && row[3] == id) {
+        if (!texture && !colored && !procedural && px + 3 <= tx1 && row[1] == id && row[2] == id && row[3] == id) {
           const __m128 w = in->inverseW4(px, py);
           const __m128 P[3] = {in->varying4(0, px, py, w), in->varying4(1, px, py, w), in->varying4(2, px, py, w)};
           const __m128 N[3] = {in->varying4(3, px, py, w), in->varying4(4, px, py, w), in->varying4(5, px, py, w)};
@@ -92,7 +92,9 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
       // O_d = factor · COLOR_0 · texel (PIPELINE.md, section 8)
       glm::vec3 baseColor = material->baseColor;
       if (colored) baseColor *= glm::vec3(v[layout.color], v[layout.color + 1], v[layout.color + 2]);
-      if (texture)
+      if (procedural)
+        baseColor *= proceduralGrey(frame.procedural, {v[layout.model], v[layout.model + 1], v[layout.model + 2]}, frame.proceduralScale);
+      else if (texture)
         baseColor *= glm::vec3(
             sampleTexture(*texture, material->baseColorSampler, {v[layout.uv], v[layout.uv + 1]}, in->quadDerivatives(layout.uv, px, py)));
       glm::vec3 color;
@@ -120,8 +122,9 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
   const float halfWidth = 0.5f * static_cast<float>(frame.width), halfHeight = 0.5f * static_cast<float>(frame.height);
   PassVertices& v = buffers.vertices;
   const std::size_t vertexCount = v.world.size();
-  const auto stride = static_cast<std::size_t>(4 + layout.count);
-  v.stride = 4 + layout.count;
+  const int packed = layout.packed(frame.procedural);
+  const auto stride = static_cast<std::size_t>(4 + packed);
+  v.stride = 4 + packed;
   v.window.resize(vertexCount * stride);
 
   // Vertex stage.
@@ -141,6 +144,7 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
       varyings[layout.uv] = uv.x;
       varyings[layout.uv + 1] = uv.y;
       put(varyings, layout.color, mesh.colors.empty() ? glm::vec4(1.0f) : mesh.colors[local]);
+      if (packed == layout.count) put(varyings, layout.model, mesh.positions[local]);
       if (frame.shading == ShadingMode::Phong) {
         put(varyings, 0, P);
         put(varyings, 3, normalize3(transformDirection(instance.normalMatrix, mesh.normals[local])));
@@ -212,11 +216,9 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
                             }
                             // Alpha mask: the fragment's alpha decides before it writes depth (alpha_mask.h).
                             const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
-                            const Texture* texture = material.baseColorTexture >= 0 && !mesh.texcoords.empty()
-                                                         ? &scene.textures[static_cast<std::size_t>(material.baseColorTexture)]
-                                                         : nullptr;
+                            const Texture* texture = baseColorTextureOf(scene, frame, material, mesh);
                             const bool colored = !mesh.colors.empty();
-                            interpolation.setUpVaryings(layout.count);
+                            interpolation.setUpVaryings(layout.model);
                             rasterizeBlocks(t.snapped, box, [&](int px, int py) {
                               const float z = interpolation.depthAt(px, py);
                               const int k = (py - r.y0) * kTileSize + (px - r.x0);

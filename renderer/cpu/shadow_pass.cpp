@@ -6,6 +6,7 @@
 #include "cpu/binning.h"
 #include "cpu/interpolation.h"
 #include "cpu/passes.h"
+#include "cpu/texture_sampling.h"
 #include "cpu/tile_raster.h"
 #include "cpu/varyings.h"
 #include "cpu/vertex_math.h"
@@ -77,9 +78,7 @@ void shadowPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, con
                               return;
                             }
                             const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
-                            const Texture* texture = material.baseColorTexture >= 0 && !mesh.texcoords.empty()
-                                                         ? &scene.textures[static_cast<std::size_t>(material.baseColorTexture)]
-                                                         : nullptr;
+                            const Texture* texture = baseColorTextureOf(scene, frame, material, mesh);
                             const bool colored = !mesh.colors.empty();
                             interpolation.setUpVaryings(mask.count);
                             rasterizeBlocks(t.snapped, box, [&](int px, int py) {

@@ -7,9 +7,18 @@
 #include <glm/vec4.hpp>
 
 #include "image/image.h"
+#include "pipeline/frame_inputs.h"
 #include "scene/scene.h"
 
 namespace facet::cpu {
+
+// The base colour texture a draw of `mesh` with `material` samples: none when
+// the material has none, the mesh has no TEXCOORD_0, or a procedural texture
+// takes its place (PIPELINE.md, section 8).
+inline const Texture* baseColorTextureOf(const Scene& scene, const FrameInputs& frame, const CourseMaterial& material, const Mesh& mesh) {
+  if (frame.procedural != Procedural::None || material.baseColorTexture < 0 || mesh.texcoords.empty()) return nullptr;
+  return &scene.textures[static_cast<std::size_t>(material.baseColorTexture)];
+}
 
 // REPEAT: i mod size in [0, size), with % only on non-negative operands.
 inline int wrap(int i, int size) { return i >= 0 ? i % size : size - 1 - (-1 - i) % size; }

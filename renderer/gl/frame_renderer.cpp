@@ -167,7 +167,8 @@ std::vector<std::uint32_t> GlFrameRenderer::drawTriangleIds(const FrameInputs& f
 DrawVariant GlFrameRenderer::drawVariant(const FrameInputs& frame, const FrameInstance& instance) const {
   const MeshBuffers& mesh = scene_.mesh(instance.mesh);
   const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
-  return {material.baseColorTexture >= 0 && mesh.texcoords, static_cast<bool>(mesh.colors), material.masked};
+  // A procedural texture takes the base colour texture's place (renderer/cpu/texture_sampling.h, baseColorTextureOf).
+  return {frame.procedural == Procedural::None && material.baseColorTexture >= 0 && mesh.texcoords, static_cast<bool>(mesh.colors), material.masked};
 }
 
 DrawVariant GlFrameRenderer::maskVariant(const FrameInputs& frame, const FrameInstance& instance) const {

@@ -93,6 +93,8 @@ FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings)
 
   f.ambient = settings.ambient;
   f.shading = settings.shading;
+  f.procedural = settings.material.procedural;
+  f.proceduralScale = settings.material.proceduralScale;
   f.specular = settings.specular;
   f.cullBackFaces = settings.cullBackFaces;
   f.shadows = settings.shadows;

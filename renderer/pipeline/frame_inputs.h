@@ -65,6 +65,8 @@ struct FrameInputs {
   ShadowSettings shadows;
   int shadowLayerCount = 0;       // S×S depth maps over all lights: one per face
   glm::vec3 background{0.0f};    // linear RGB
+  Procedural procedural = Procedural::None;  // a pattern in place of every base colour texture
+  float proceduralScale = 1.0f;              // k: cells per model unit
 
   std::vector<std::string> warnings;  // what building the frame dropped (lights beyond kMaxLights)
 };

@@ -78,6 +78,11 @@ struct CameraSettings {
   float far = 100.0f;                     // F, eye-space distance
 };
 
+// The course's procedural mapping (renderer/PIPELINE.md, section 8): a
+// pattern of the model-space surface point in place of every base colour texture.
+enum class Procedural { None, Checker, Noise, Count };
+inline constexpr std::array<std::string_view, static_cast<int>(Procedural::Count)> kProceduralNames = {"none", "checker", "noise"};
+
 // glTF materials carry no k_a, k_d, k_s, n; pipeline/material_coefficients
 // derives them. A value set here overrides the derived one for every material.
 struct MaterialOverrides {
@@ -85,6 +90,8 @@ struct MaterialOverrides {
   std::optional<float> kd;
   std::optional<float> ks;
   std::optional<float> shininess;  // n
+  Procedural procedural = Procedural::None;
+  float proceduralScale = 4.0f;     // k: pattern cells per model unit
 };
 
 struct ShadowSettings {

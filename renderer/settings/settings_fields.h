@@ -63,6 +63,9 @@ void visitSettings(Visitor& v, RenderSettings& s) {
     v.field({"kd", "k_d for every material (null: derived from glTF)", 0, 1}, m.kd);
     v.field({"ks", "k_s for every material (null: derived from glTF)", 0, 1}, m.ks);
     v.field({"shininess", "n for every material (null: derived from glTF)", 1, 4096}, m.shininess);
+    v.choice({"procedural", "none, or a checker or noise pattern of the model-space point in place of every base colour texture"}, m.procedural,
+             kProceduralNames);
+    v.field({"proceduralScale", "k: the pattern's cells per model unit", 0.01, 1000}, m.proceduralScale);
   });
   v.group("shadows", [&] {
     ShadowSettings& sh = s.shadows;

@@ -88,7 +88,7 @@ TEST_CASE("makeFrameBlock copies FrameInputs into the block's slots") {
   const FrameInputs frame = buildFrameInputs(scene, test::smallSettings(ShadingMode::Gouraud));
   const FrameBlock block = makeFrameBlock(frame);
   CHECK(block.eyePosition == glm::vec4(frame.eyePosition, 1.0f));  // w = 1: perspective
-  CHECK(block.ambient == glm::vec4(frame.ambient, 0.0f, 0.0f, 0.0f));
+  CHECK(block.ambient == glm::vec4(frame.ambient, frame.proceduralScale, 0.0f, 0.0f));
   CHECK(block.shadowParams == glm::vec4(frame.shadows.biasSlope, frame.shadows.biasMin, 512.0f, 0.0f));
   const FrameLight& light = frame.lights[0];
   CHECK(block.lights[0].position == glm::vec4(light.light.position, 1.0f));

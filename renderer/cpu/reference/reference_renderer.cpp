@@ -21,6 +21,7 @@
 
 #include "cpu/alpha_mask.h"
 #include "cpu/clipper.h"
+#include "cpu/procedural.h"
 #include "cpu/interpolation.h"
 #include "cpu/lighting.h"
 #include "cpu/rasterize.h"
@@ -104,9 +105,7 @@ ShadowMaps shadowPass(const Scene& scene, const FrameInputs& frame) {
         // interpolates texture coordinates and vertex alpha, in the flat layout's places.
         const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
         const VaryingLayout mask = varyingLayout(ShadingMode::Flat);
-        const Texture* texture = material.baseColorTexture >= 0 && !mesh.texcoords.empty()
-                                     ? &scene.textures[static_cast<std::size_t>(material.baseColorTexture)]
-                                     : nullptr;
+        const Texture* texture = baseColorTextureOf(scene, frame, material, mesh);
         const bool colored = !mesh.colors.empty();
         const FragmentTest keep = [&](const Interpolation& planes, int px, int py) {
           return keepsFragment(material, texture, colored, mask, planes, px, py);
@@ -136,23 +135,24 @@ ShadowMaps shadowPass(const Scene& scene, const FrameInputs& frame) {
 // illumination of both sides; all: texture coordinates and vertex colour).
 void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, Target& target) {
   const VaryingLayout layout = varyingLayout(frame.shading);
-  const int count = layout.count, uv = layout.uv, color = layout.color;
+  const int count = layout.packed(frame.procedural), uv = layout.uv, color = layout.color, model = layout.model;
   std::uint32_t id = 0;
   for (const FrameInstance& instance : frame.instances) {
     const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
     const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
-    const bool textured = material.baseColorTexture >= 0 && !mesh.texcoords.empty();
+    const Texture* texture = baseColorTextureOf(scene, frame, material, mesh);
     const bool colored = !mesh.colors.empty();
-    // O_d = factor · COLOR_0 · texel, each factor only where the mesh has it.
+    // O_d = factor · COLOR_0 · texel, each factor only where the mesh has it; the texel is a
+    // procedural texture's grey where the frame has one.
     const auto baseColor = [&](const float* v, const Interpolation& planes, int px, int py) {
       glm::vec3 O = material.baseColor;
       if (colored) O = O * glm::vec3(v[color], v[color + 1], v[color + 2]);
-      if (textured)
-        O = O * glm::vec3(sampleTexture(scene.textures[static_cast<std::size_t>(material.baseColorTexture)], material.baseColorSampler,
-                                        {v[uv], v[uv + 1]}, planes.quadDerivatives(uv, px, py)));
+      if (frame.procedural != Procedural::None)
+        O = O * proceduralGrey(frame.procedural, {v[model], v[model + 1], v[model + 2]}, frame.proceduralScale);
+      else if (texture)
+        O = O * glm::vec3(sampleTexture(*texture, material.baseColorSampler, {v[uv], v[uv + 1]}, planes.quadDerivatives(uv, px, py)));
       return O;
     };
-    const Texture* texture = textured ? &scene.textures[static_cast<std::size_t>(material.baseColorTexture)] : nullptr;
     const FragmentTest keep = [&](const Interpolation& planes, int px, int py) {
       return keepsFragment(material, texture, colored, layout, planes, px, py);
     };
@@ -170,6 +170,8 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
         out[uv] = st.x, out[uv + 1] = st.y;
         const glm::vec4 rgba = colored ? mesh.colors[i] : glm::vec4(1.0f);
         for (int c = 0; c < 4; ++c) out[color + c] = rgba[c];
+        if (count == layout.count)
+          for (int c = 0; c < 3; ++c) out[model + c] = mesh.positions[i][c];
         if (frame.shading == ShadingMode::Phong) {
           for (int c = 0; c < 3; ++c) out[c] = world[k][c], out[3 + c] = N[c];
         } else if (frame.shading == ShadingMode::Gouraud) {  // the illumination equation at the vertex, both sides
