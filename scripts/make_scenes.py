@@ -746,6 +746,68 @@ def alpha_mask():
     return g
 
 
+def cube_direction(face, s, t):
+    """The direction that OpenGL's cube-map table sends to (s, t) of `face`
+    (+x -x +y -y +z -z; t = 0 at the face's top row): renderer/PIPELINE.md,
+    section 8, run backwards."""
+    a, b = 2 * s - 1, 2 * t - 1
+    return [(1, -b, -a), (-1, -b, a), (a, 1, b), (a, -1, -b), (a, -b, 1), (-a, -b, -1)][face]
+
+
+def sky_cube(n=64):
+    """A cube strip (6n x n) of an outdoor scene: a sky from pale at the
+    horizon to deep blue overhead, a sun towards (+x, +y, +z), and below the
+    horizon a grey-green ground of 1 m tiles seen from 1.5 m up, so a
+    reflection shows which way is up and where the sun is."""
+    sun = [c / math.sqrt(3 * 0.8) for c in (0.6, 1.2, 0.6)]
+    def colour(d):
+        length = math.sqrt(sum(c * c for c in d))
+        x, y, z = (c / length for c in d)
+        if y > 0:
+            k = y ** 0.5
+            r, g, b = 200 - 150 * k, 220 - 120 * k, 245 - 45 * k
+            if x * sun[0] + y * sun[1] + z * sun[2] > 0.995:
+                r, g, b = 255, 245, 210
+        else:
+            distance = 1.5 / max(-y, 1e-3)
+            gx, gz = x * distance, z * distance
+            tile = (math.floor(gx) + math.floor(gz)) % 2
+            fade = min(1.0, distance / 40.0)
+            base = (90, 110, 80) if tile else (130, 140, 115)
+            r, g, b = (c * (1 - fade) + 150 * fade for c in base)
+        return tuple(int(round(max(0, min(255, c)))) for c in (r, g, b))
+    def pixel(x, y):
+        face, fx = divmod(x, n)
+        return colour(cube_direction(face, (fx + 0.5) / n, (y + 0.5) / n))
+    return png(6 * n, n, pixel)
+
+
+def environment():
+    g = Gltf("Environment mapping, with --set environment.map=assets/environment/sky_cube.png: a chrome sphere (metal, "
+             "white), a gold sphere (metal: the reflection takes its colour) and a red plastic torus (dielectric: a "
+             "faint untinted reflection over its own colour), all reflecting the sky above and the tiled ground below "
+             "the horizon, which the background also shows.")
+    ball = uv_sphere(0.5, 48, 24)
+    ring = torus(0.45, 0.16, 48, 24)
+    chrome = g.add_material("chrome", (0.95, 0.95, 0.95, 1), 1.0, 0.15)
+    gold = g.add_material("gold", (1.0, 0.76, 0.33, 1), 1.0, 0.25)
+    plastic = g.add_material("red plastic", (0.8, 0.08, 0.06, 1), 0.0, 0.3)
+    g.add_node("chrome sphere", g.add_mesh("chrome sphere", g.primitive(ball, chrome)), translation=(-1.15, 0.5, 0))
+    g.add_node("gold sphere", g.add_mesh("gold sphere", g.primitive(ball, gold)), translation=(0.0, 0.5, 0))
+    g.add_node("red torus", g.add_mesh("red torus", g.primitive(ring, plastic)), translation=(1.2, 0.5, 0),
+               rotation=axis_angle((1, 0, 0), 60))
+    g.add_camera("camera", (0, 1.1, 3.6), (0, 0.5, 0))
+    g.add_light("sun", "directional", (3, 6, 3), (0, 0, 0), intensity=1.2)
+    return g
+
+
+def write_png(path, png_bytes):
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "wb") as out:
+        out.write(png_bytes)
+    print("%-45s %7d bytes" % (os.path.relpath(path, ROOT), os.path.getsize(path)))
+
+
 # ---------------------------------------------------------------- B. the course tour
 
 def transformations():
@@ -914,12 +976,14 @@ SCENES = [
     (ASSETS_DIR, "shading.gltf", shading),
     (ASSETS_DIR, "shadows.gltf", shadows),
     (ASSETS_DIR, "texture.gltf", texture),
+    (ASSETS_DIR, "environment.gltf", environment),
 ]
 
 
 def main():
     for folder, name, build in SCENES:
         build().write(os.path.join(folder, name))
+    write_png(os.path.join(ASSETS_DIR, "environment", "sky_cube.png"), sky_cube())
 
 
 if __name__ == "__main__":

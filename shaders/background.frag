@@ -1,10 +1,16 @@
 #version 450 core
-// The background, encoded exactly as a lit pixel is.
+// The background, encoded exactly as a lit pixel is: the background colour,
+// or the environment map in the pixel's view direction.
 #include "frame_block.glsl"
+#include "shading_math.glsl"
 #include "srgb.glsl"
+#include "texture.glsl"
+#include "environment.glsl"
+
+uniform vec2 viewportSize;  // W, H
 
 layout(location = 0) out vec4 color;
 
 void main() {
-  color = encodeSrgb(frame.background.rgb);
+  color = encodeSrgb(backgroundAt(gl_FragCoord.xy, viewportSize));
 }

@@ -29,14 +29,6 @@ float specularTerm(vec3 N, vec3 L, vec3 V, float shininess, int model) {
   return power(maxZero(dot3(N, H)), shininess);
 }
 
-// Face of a point light's cube for P - P_light: largest |component|, ties to x, then y, then z.
-int cubeFace(vec3 d) {
-  vec3 a = abs(d);
-  if (a.x >= a.y && a.x >= a.z) return d.x >= 0.0 ? 0 : 1;
-  if (a.y >= a.z) return d.y >= 0.0 ? 2 : 3;
-  return d.z >= 0.0 ? 4 : 5;
-}
-
 // S of light i at P: PCF over (2r+1)² texels read with texelFetch; in shadow
 // when z - bias > depth, bias = max(b_slope·(1 - N·L), b_min); outside the
 // map or beyond its far plane counts as lit.
@@ -110,6 +102,11 @@ Illumination illuminate(CourseMaterial material, vec3 P, vec3 N, vec3 V) {
     diffuse = diffuse + addDiffuse;
     highlights = highlights + addSpecular;
   }
+#if defined(FACET_ENVIRONMENT) && FACET_ENVIRONMENT
+  // Environment mapping: the course's k_r·I_r, I_r = env(R), R = 2(N·V)N - V, joins the highlights (PIPELINE.md, section 8).
+  precise vec3 R = (2.0 * dot3(N, V)) * N - V;
+  highlights = highlights + frame.environment.x * environmentAt(R);
+#endif
   precise vec3 tinted = diffuse + material.metallic * highlights;
   precise vec3 specular = material.emissive + (1.0 - material.metallic) * highlights;
   return Illumination(tinted, specular);

@@ -16,6 +16,7 @@
 #include "texture.glsl"
 #include "procedural.glsl"
 #include "draw_uniforms.glsl"
+#include "environment.glsl"
 #include "lighting.glsl"
 
 layout(std430, binding = 0) readonly buffer MeshIndices { uint indices[]; };      // three per triangle

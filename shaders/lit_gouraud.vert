@@ -9,6 +9,7 @@
 #include "texture.glsl"
 #include "procedural.glsl"
 #include "draw_uniforms.glsl"
+#include "environment.glsl"
 #include "lighting.glsl"
 
 layout(location = 0) in vec3 position;  // model space

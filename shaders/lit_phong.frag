@@ -8,6 +8,7 @@
 #include "texture.glsl"
 #include "procedural.glsl"
 #include "draw_uniforms.glsl"
+#include "environment.glsl"
 #include "lighting.glsl"
 
 in vec3 worldPosition;

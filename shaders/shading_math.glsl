@@ -79,3 +79,11 @@ float power(float x, float y) {
   precise float r = positive && inRange ? exp2f * scale : 0.0;
   return r;
 }
+
+// Face of a cube (a point light's for P - P_light, an environment map's for a direction): largest |component|, ties to x, then y, then z.
+int cubeFace(vec3 d) {
+  vec3 a = abs(d);
+  if (a.x >= a.y && a.x >= a.z) return d.x >= 0.0 ? 0 : 1;
+  if (a.y >= a.z) return d.y >= 0.0 ? 2 : 3;
+  return d.z >= 0.0 ? 4 : 5;
+}

@@ -48,30 +48,36 @@ vec4 lerp(vec4 a, vec4 b, float t) {
   return r;
 }
 
-// One level, NEAREST or LINEAR: linear RGB and alpha; t = 0 is the top of the glTF image, and
-// facet uploads images bottom row first.
-// The size of a level is level 0's halved, as image/mipmap.h builds them:
-// llvmpipe's textureSize reads one lane's level for all, and `level` varies
-// between the pixels shaded together.
-vec4 sampleLevel(usampler2D image, int level, bool linear, int wrapS, int wrapT, vec2 st) {
-  ivec2 size0 = textureSize(image, 0);
-  ivec2 size = ivec2(max(1, size0.x >> level), max(1, size0.y >> level));
+// sampleLevel over the size.x × size.y texels from `origin` of a level, as
+// if they were an image of their own (a face of an environment cube strip).
+vec4 sampleRegion(usampler2D image, int level, ivec2 origin, ivec2 size, bool linear, int wrapS, int wrapT, vec2 st) {
   precise float u = st.x * float(size.x);
   precise float v = (1.0 - st.y) * float(size.y);
   if (!linear) {
-    if (isinf(u) || isnan(u) || isinf(v) || isnan(v)) return texel(image, level, 0, 0);
-    return texel(image, level, wrapIndex(texelIndex(floor(u)), size.x, wrapS), wrapIndex(texelIndex(floor(v)), size.y, wrapT));
+    if (isinf(u) || isnan(u) || isinf(v) || isnan(v)) return texel(image, level, origin.x, origin.y);
+    return texel(image, level, origin.x + wrapIndex(texelIndex(floor(u)), size.x, wrapS), origin.y + wrapIndex(texelIndex(floor(v)), size.y, wrapT));
   }
   precise float x = u - 0.5, y = v - 0.5;
-  if (isinf(x) || isnan(x) || isinf(y) || isnan(y)) return texel(image, level, 0, 0);
+  if (isinf(x) || isnan(x) || isinf(y) || isnan(y)) return texel(image, level, origin.x, origin.y);
   precise float x0 = floor(x), y0 = floor(y);
   precise float fx = x - x0, fy = y - y0;
   int ix = texelIndex(x0), iy = texelIndex(y0);
-  int ix0 = wrapIndex(ix, size.x, wrapS), ix1 = wrapIndex(ix + 1, size.x, wrapS);
-  int iy0 = wrapIndex(iy, size.y, wrapT), iy1 = wrapIndex(iy + 1, size.y, wrapT);
+  int ix0 = origin.x + wrapIndex(ix, size.x, wrapS), ix1 = origin.x + wrapIndex(ix + 1, size.x, wrapS);
+  int iy0 = origin.y + wrapIndex(iy, size.y, wrapT), iy1 = origin.y + wrapIndex(iy + 1, size.y, wrapT);
   vec4 c00 = texel(image, level, ix0, iy0), c10 = texel(image, level, ix1, iy0);
   vec4 c01 = texel(image, level, ix0, iy1), c11 = texel(image, level, ix1, iy1);
   return lerp(lerp(c00, c10, fx), lerp(c01, c11, fx), fy);
+}
+
+// One level, NEAREST or LINEAR: linear RGB and alpha; t = 0 is the top of
+// the glTF image, and facet uploads images bottom row first. The size of a
+// level is level 0's halved, as image/mipmap.h builds them: llvmpipe's
+// textureSize reads one lane's level for all, and `level` varies between
+// the pixels shaded together.
+vec4 sampleLevel(usampler2D image, int level, bool linear, int wrapS, int wrapT, vec2 st) {
+  ivec2 size0 = textureSize(image, 0);
+  ivec2 size = ivec2(max(1, size0.x >> level), max(1, size0.y >> level));
+  return sampleRegion(image, level, ivec2(0, 0), size, linear, wrapS, wrapT, st);
 }
 
 // ρ² from derivatives (ds/dx, dt/dx, ds/dy, dt/dy) and level 0's size.

@@ -106,6 +106,17 @@ class PanelVisitor {
     tooltip(info);
   }
 
+  // A file name: edited as text, taken when Enter is pressed.
+  void field(const FieldInfo& info, std::string& value) {
+    char text[kMaxSettingsPathBytes + 1] = {};
+    value.copy(text, std::min(value.size(), kMaxSettingsPathBytes));
+    if (ImGui::InputText(label(info), text, sizeof text, ImGuiInputTextFlags_EnterReturnsTrue)) {
+      value = text;
+      changed(info.key);
+    }
+    tooltip(info);
+  }
+
   template <class Enum, std::size_t N>
   void choice(const FieldInfo& info, Enum& value, const std::array<std::string_view, N>& names) {
     static_assert(N == static_cast<std::size_t>(Enum::Count), "a names table must name every value");

@@ -15,6 +15,7 @@
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
+#include "scene/environment_map.h"
 #include "common/error.h"
 #include "gl/gl_renderer.h"
 #include "image/png.h"
@@ -84,7 +85,22 @@ struct DrawnFrame {
   Image image;                         // what render() read back
   double milliseconds = 0;             // the frame's passes (upload, shadow, lit; not the read-back), when it last ran
   std::string error;                   // why the newest settings could not be drawn; the last good image stays
+  // The viewer's scene with the settings' environment map loaded, while the map and the scene stay.
+  std::shared_ptr<const Scene> environmentBase, withEnvironment;
 };
+
+// The scene a frame of `state` draws: its own when the settings name the map
+// it holds (or none), else a copy with that map, loaded once per map name.
+std::shared_ptr<const Scene> sceneFor(const ViewerState& state, DrawnFrame& drawn) {
+  if (state.scene->environment.path == state.settings.environment.map) return state.scene;
+  if (drawn.withEnvironment && drawn.environmentBase == state.scene && drawn.withEnvironment->environment.path == state.settings.environment.map)
+    return drawn.withEnvironment;
+  auto copy = std::make_shared<Scene>(*state.scene);
+  useEnvironment(*copy, state.settings.environment);
+  drawn.environmentBase = state.scene;
+  drawn.withEnvironment = copy;
+  return copy;
+}
 
 // Draws the 3D frame when the scene or the settings changed since the last
 // one (or always, with force); true when it tried. The renderer uploads a
@@ -93,13 +109,14 @@ bool drawChangedFrame(Renderer& renderer, const ViewerState& state, DrawnFrame& 
   const std::string key = frameKey(state);
   if (key == drawn.key && !force) return false;
   try {
-    FrameInputs frame = buildFrameInputs(*state.scene, state.settings);
-    RenderResult result = renderer.render(*state.scene, frame);
+    const std::shared_ptr<const Scene> scene = sceneFor(state, drawn);
+    FrameInputs frame = buildFrameInputs(*scene, state.settings);
+    RenderResult result = renderer.render(*scene, frame);
     drawn.milliseconds = 0;
     for (const PassTiming& t : result.timings)
       if (t.pass != "read-back") drawn.milliseconds += t.milliseconds;
     if (key != drawn.key || drawn.version == 0) ++drawn.version;
-    drawn.scene = state.scene;
+    drawn.scene = scene;
     drawn.frame = std::move(frame);
     drawn.image = std::move(result.image);
     drawn.error.clear();

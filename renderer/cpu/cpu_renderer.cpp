@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "common/quote.h"
+#include "cpu/environment_mapping.h"
 #include "cpu/frame_buffers.h"
 #include "cpu/lighting.h"
 #include "cpu/passes.h"
@@ -39,6 +40,12 @@ class CpuRenderer final : public Renderer {
 
     const auto start = std::chrono::steady_clock::now();
     result.image = Image(frame.width, frame.height, encodePixel(frame.background));
+    if (cpu::showsEnvironment(frame))  // the map behind everything, in each pixel's view direction
+      cpu::forEachRange(pool_, static_cast<std::size_t>(frame.height), [&](std::size_t begin, std::size_t end, int) {
+        for (std::size_t y = begin; y < end; ++y)
+          for (int x = 0; x < frame.width; ++x)
+            result.image.at(x, static_cast<int>(y)) = encodePixel(cpu::backgroundAt(frame, x, static_cast<int>(y)));
+      });
     cpu::litPass(pool_, buffers_, scene, frame, maps_, result.image);
     result.timings.push_back({"lit pass", millisecondsSince(start)});
     return result;

@@ -16,6 +16,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "cpu/environment_mapping.h"
 #include "cpu/lanes.h"
 #include "cpu/shading_math.h"
 #include "cpu/shadow_maps.h"
@@ -121,6 +122,22 @@ inline Float4 shadowFactorLanes(const ShadowMaps& maps, const FrameLight& light,
 }
 #endif
 
+// env(R) for one lane or four (the map is read one pixel at a time, as shadow maps are).
+inline glm::vec3 environmentLanes(const EnvironmentMap& map, glm::vec3 R) { return environmentAt(map, R); }
+#if defined(__SSE2__)
+inline Vec3x4 environmentLanes(const EnvironmentMap& map, const Vec3x4& R) {
+  alignas(16) float r[3][4], out[3][4];
+  _mm_store_ps(r[0], R.x.v);
+  _mm_store_ps(r[1], R.y.v);
+  _mm_store_ps(r[2], R.z.v);
+  for (int k = 0; k < 4; ++k) {
+    const glm::vec3 c = environmentAt(map, {r[0][k], r[1][k], r[2][k]});
+    out[0][k] = c.x, out[1][k] = c.y, out[2][k] = c.z;
+  }
+  return Vec3x4(Float4(_mm_load_ps(out[0])), Float4(_mm_load_ps(out[1])), Float4(_mm_load_ps(out[2])));
+}
+#endif
+
 template <class F>
 MaskOf<F> allLanes() {
   return F(0.0f) <= F(0.0f);
@@ -158,6 +175,11 @@ IlluminationOf<F> illuminate(const FrameInputs& frame, const ShadowMaps& maps, c
     const Vec3 specular = (S * fAtt) * ((material.ks * specularTerm(N, L, V, material.shininess, frame.specular)) * Ip);
     I.diffuse = select(active, I.diffuse + diffuse, I.diffuse);
     highlights = select(active, highlights + specular, highlights);
+  }
+  // Environment mapping: the course's k_r·I_r, I_r = env(R), R = 2(N·V)N - V, joins the highlights (PIPELINE.md, section 8).
+  if (frame.environment.map) {
+    const Vec3 R = (F(2.0f) * dot3(N, V)) * N - V;
+    highlights = highlights + F(frame.environment.reflectivity) * environmentLanes(*frame.environment.map, R);
   }
   I.diffuse = I.diffuse + material.metallic * highlights;
   I.specular = material.emissive + (F(1.0f) - material.metallic) * highlights;

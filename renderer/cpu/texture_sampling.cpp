@@ -36,22 +36,27 @@ int wrapIndex(int i, int size, Wrap mode) {
 glm::vec4 lerp(glm::vec4 a, glm::vec4 b, float t) { return a + t * (b - a); }
 
 glm::vec4 sampleLevel(const Image& level, bool linear, Wrap wrapS, Wrap wrapT, glm::vec2 st) {
-  const int w = level.width(), h = level.height();
+  return sampleRegion(level, {0, 0}, {level.width(), level.height()}, linear, wrapS, wrapT, st);
+}
+
+glm::vec4 sampleRegion(const Image& image, glm::ivec2 origin, glm::ivec2 size, bool linear, Wrap wrapS, Wrap wrapT, glm::vec2 st) {
+  const int w = size.x, h = size.y;
+  const auto at = [&](int x, int y) { return texel(image, origin.x + x, origin.y + y); };
   const float u = st.x * static_cast<float>(w);
   const float v = (1.0f - st.y) * static_cast<float>(h);
   if (!linear) {
-    if (!std::isfinite(u) || !std::isfinite(v)) return texel(level, 0, 0);
-    return texel(level, wrapIndex(texelIndex(std::floor(u)), w, wrapS), wrapIndex(texelIndex(std::floor(v)), h, wrapT));
+    if (!std::isfinite(u) || !std::isfinite(v)) return at(0, 0);
+    return at(wrapIndex(texelIndex(std::floor(u)), w, wrapS), wrapIndex(texelIndex(std::floor(v)), h, wrapT));
   }
   const float x = u - 0.5f, y = v - 0.5f;
-  if (!std::isfinite(x) || !std::isfinite(y)) return texel(level, 0, 0);
+  if (!std::isfinite(x) || !std::isfinite(y)) return at(0, 0);
   const float x0 = std::floor(x), y0 = std::floor(y);
   const float fx = x - x0, fy = y - y0;
   const int ix = texelIndex(x0), iy = texelIndex(y0);
   const int ix0 = wrapIndex(ix, w, wrapS), ix1 = wrapIndex(ix + 1, w, wrapS);
   const int iy0 = wrapIndex(iy, h, wrapT), iy1 = wrapIndex(iy + 1, h, wrapT);
-  const glm::vec4 c00 = texel(level, ix0, iy0), c10 = texel(level, ix1, iy0);
-  const glm::vec4 c01 = texel(level, ix0, iy1), c11 = texel(level, ix1, iy1);
+  const glm::vec4 c00 = at(ix0, iy0), c10 = at(ix1, iy0);
+  const glm::vec4 c01 = at(ix0, iy1), c11 = at(ix1, iy1);
   return lerp(lerp(c00, c10, fx), lerp(c01, c11, fx), fy);
 }
 

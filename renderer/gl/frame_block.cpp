@@ -22,6 +22,11 @@ FrameBlock makeFrameBlock(const FrameInputs& frame) {
   block.eyePosition = glm::vec4(frame.eyePosition, frame.perspective ? 1.0f : 0.0f);
   block.towardEye = glm::vec4(frame.towardEye, 0.0f);
   block.ambient = glm::vec4(frame.ambient, frame.proceduralScale, 0.0f, 0.0f);
+  const FrameInputs::Environment& e = frame.environment;
+  block.environment = glm::vec4(e.reflectivity, e.map ? 1.0f : 0.0f, e.map && e.background ? 1.0f : 0.0f, 0.0f);
+  block.backgroundForward = glm::vec4(e.forward, 0.0f);
+  block.backgroundRight = glm::vec4(e.right, 0.0f);
+  block.backgroundUp = glm::vec4(e.up, 0.0f);
   block.shadowParams = glm::vec4(frame.shadows.biasSlope, frame.shadows.biasMin, static_cast<float>(frame.shadows.mapSize), 0.0f);
   block.background = glm::vec4(frame.background, 1.0f);
   for (std::size_t i = 0; i < frame.lights.size(); ++i) {

@@ -37,6 +37,8 @@ struct FrameBlock {
   glm::vec4 shadowParams;    // x: b_slope; y: b_min; z: map size S
   glm::vec4 background;      // rgb: linear background
   std::array<LightBlock, facet::kMaxLights> lights;
+  glm::vec4 environment;     // x: k_r; y: 1 with a map; z: 1 when empty pixels show it
+  glm::vec4 backgroundForward, backgroundRight, backgroundUp;  // xyz: D = (F + x·X) + y·Y
 };
 
 // SrgbTables in srgb.glsl: image/srgb.h's tables, four floats (or bytes
@@ -66,7 +68,9 @@ static_assert(offsetof(FrameBlock, shadowParams) == 48);
 static_assert(offsetof(FrameBlock, background) == 64);
 static_assert(offsetof(FrameBlock, lights) == 80);
 static_assert(kSrgbBuckets <= 2033 * 16);
-static_assert(sizeof(FrameBlock) == 80 + facet::kMaxLights * sizeof(LightBlock));
+static_assert(offsetof(FrameBlock, environment) == 80 + facet::kMaxLights * sizeof(LightBlock));
+static_assert(offsetof(FrameBlock, backgroundUp) == offsetof(FrameBlock, environment) + 48);
+static_assert(sizeof(FrameBlock) == 80 + facet::kMaxLights * sizeof(LightBlock) + 64);
 
 // The block's values for one frame, from FrameInputs only (checkFrame has
 // held its light count to kMaxLights).

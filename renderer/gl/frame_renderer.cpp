@@ -19,6 +19,7 @@ constexpr GLuint kFrameBlockBinding = 0;      // uniform block Frame
 constexpr GLuint kSrgbBlockBinding = 1;       // uniform block SrgbTables (srgb.glsl)
 constexpr GLuint kShadowMapsUnit = 0;         // sampler2DArray shadowMaps
 constexpr GLuint kBaseColorTextureUnit = 1;   // usampler2D baseColorTexture
+constexpr GLuint kEnvironmentUnit = 2;        // usampler2D environmentMap (environment.glsl)
 constexpr GLuint kMeshIndicesBinding = 0;     // storage buffers of lit_flat.vert
 constexpr GLuint kMeshPositionsBinding = 1;
 constexpr GLuint kMeshTexcoordsBinding = 2;
@@ -282,7 +283,10 @@ void GlFrameRenderer::litPass(const FrameInputs& frame) {
   // The background over every pixel, through the same encoding as lit pixels; depth stays 1.
   gl_.glDisable(GL_DEPTH_TEST);
   gl_.glDisable(GL_CULL_FACE);
+  gl_.glBindTextureUnit(kEnvironmentUnit, scene_.environment());
   gl_.glUseProgram(backgroundProgram_->id());
+  gl_.glProgramUniform2f(backgroundProgram_->id(), uniformLocation(gl_, *backgroundProgram_, "viewportSize"), static_cast<float>(frame.width),
+                         static_cast<float>(frame.height));
   gl_.glBindVertexArray(emptyVertexArray_.id());
   gl_.glDrawArrays(GL_TRIANGLES, 0, 3);
 

@@ -73,6 +73,7 @@ namespace facet::gl {
   X(PFNGLPROGRAMUNIFORM1FPROC, glProgramUniform1f)                            \
   X(PFNGLPROGRAMUNIFORM1IPROC, glProgramUniform1i)                            \
   X(PFNGLPROGRAMUNIFORM4IPROC, glProgramUniform4i)                            \
+  X(PFNGLPROGRAMUNIFORM2FPROC, glProgramUniform2f)                            \
   X(PFNGLPROGRAMUNIFORM1UIPROC, glProgramUniform1ui)                          \
   X(PFNGLPROGRAMUNIFORM3FVPROC, glProgramUniform3fv)                          \
   X(PFNGLPROGRAMUNIFORMMATRIX3FVPROC, glProgramUniformMatrix3fv)              \

@@ -74,6 +74,11 @@ SceneBuffers::SceneBuffers(const GlFunctions& gl, const Scene& scene) {
   for (const Mesh& mesh : scene.meshes) meshes_.push_back(uploadMesh(gl, mesh));
   textures_.reserve(scene.textures.size());
   for (const Texture& texture : scene.textures) textures_.push_back(uploadTexture(gl, texture));
+  if (!scene.environment.empty()) {
+    Texture strip;  // one level: the faces are sampled at level 0 only
+    strip.image = scene.environment.faces;
+    environment_ = uploadTexture(gl, strip);
+  }
 }
 
 const MeshBuffers& SceneBuffers::mesh(int index) const {

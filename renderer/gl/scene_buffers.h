@@ -34,10 +34,13 @@ class SceneBuffers {
   // Throw facet::Error for an index the uploaded scene does not have.
   const MeshBuffers& mesh(int index) const;
   GLuint texture(int index) const;
+  // The scene's environment cube strip (GL_RGBA8UI, one level); 0 when it has none.
+  GLuint environment() const { return environment_ ? environment_.id() : 0; }
 
  private:
   std::vector<MeshBuffers> meshes_;
   std::vector<GlObject> textures_;  // GL_RGBA8UI: the sRGB-encoded bytes as stored, bottom row first
+  GlObject environment_;
 };
 
 }  // namespace facet::gl

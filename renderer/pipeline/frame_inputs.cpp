@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 #include <glm/trigonometric.hpp>
 
 #include "common/error.h"
@@ -43,6 +44,31 @@ FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings)
                                 : parallel(c.parallelWidth, c.parallelWidth / aspect, c.near, c.far);
   f.clipFromWorld = f.clipFromEye * f.eyeFromWorld;
   f.windowFromNdc = viewportMatrix(f.width, f.height);
+
+  if (settings.environment.map != scene.environment.path)
+    throw Error("environment.map: '" + settings.environment.map + "' is not the scene's loaded map (useEnvironment loads it)");
+  if (!scene.environment.empty()) {
+    FrameInputs::Environment& e = f.environment;
+    e.map = &scene.environment;
+    e.reflectivity = settings.environment.reflectivity;
+    e.background = settings.environment.background;
+    // The view rays through NDC (x, y), from the inverse of the course's PM·EM (in double): at a
+    // fixed NDC depth, a ray's world point minus the eye is linear in x and y.
+    const glm::dmat4 worldFromClip = glm::inverse(glm::dmat4(f.clipFromWorld));
+    const auto at = [&](double x, double y, double z) {
+      const glm::dvec4 p = worldFromClip * glm::dvec4(x, y, z, 1.0);
+      return glm::dvec3(p) / p.w;
+    };
+    if (f.perspective) {
+      const glm::dvec3 eye(c.eye), centre = at(0, 0, 0.5) - eye;
+      const double scale = 1.0 / glm::length(centre);  // F of unit length, X and Y to match
+      e.forward = glm::vec3(centre * scale);
+      e.right = glm::vec3((at(1, 0, 0.5) - at(0, 0, 0.5)) * scale);
+      e.up = glm::vec3((at(0, 1, 0.5) - at(0, 0, 0.5)) * scale);
+    } else {
+      e.forward = glm::vec3(glm::normalize(at(0, 0, 1) - at(0, 0, 0)));
+    }
+  }
 
   for (const Material& m : scene.materials) {
     CourseMaterial course = courseMaterial(m, settings.material);

@@ -65,6 +65,15 @@ struct FrameInputs {
   ShadowSettings shadows;
   int shadowLayerCount = 0;       // S×S depth maps over all lights: one per face
   glm::vec3 background{0.0f};    // linear RGB
+  // Environment mapping (PIPELINE.md, section 8). `map` points into the Scene
+  // the frame was built from (its environment), null when there is none.
+  struct Environment {
+    const EnvironmentMap* map = nullptr;
+    float reflectivity = 0.0f;  // k_r
+    bool background = false;    // empty pixels show env(D)
+    // D at pixel (x, y) in NDC: (forward + x·right) + y·up (right = up = 0 under parallel projection).
+    glm::vec3 forward{0.0f, 0.0f, -1.0f}, right{0.0f}, up{0.0f};
+  } environment;
   Procedural procedural = Procedural::None;  // a pattern in place of every base colour texture
   float proceduralScale = 1.0f;              // k: cells per model unit
 

@@ -75,6 +75,15 @@ struct Texture {
   const Image& level(int k) const { return k == 0 ? image : mips[static_cast<std::size_t>(k - 1)]; }
 };
 
+// A cube map for environment mapping (scene/environment_map.h): six square
+// faces side by side in one image, +x -x +y -y +z -z; empty when none.
+struct EnvironmentMap {
+  std::string path;  // the file it was read from, as the settings name it
+  Image faces;       // 6N × N, sRGB-encoded, bottom row first
+  bool empty() const { return faces.empty(); }
+  int faceSize() const { return faces.height(); }
+};
+
 enum class ProjectionKind { Perspective, Parallel, Count };
 
 // A camera as a scene file gives it. Its angle of view is vertical, as in
@@ -142,6 +151,7 @@ struct Scene {
   std::vector<Texture> textures;
   std::vector<Light> lights;
   std::vector<SceneCamera> cameras;
+  EnvironmentMap environment;        // the settings' environment.map, once loaded
   std::vector<std::string> warnings; // what a loader skipped or repaired
 
   std::size_t triangleCount() const;  // over all instances

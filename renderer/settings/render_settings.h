@@ -6,6 +6,7 @@
 // command line, the viewer, the tests and the benchmarks all go through it.
 #include <array>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -61,6 +62,14 @@ inline constexpr std::array<std::string_view, static_cast<int>(Source::Count)> k
 enum class TextureFilter { Auto, Nearest, Bilinear, Trilinear, Count };
 inline constexpr std::array<std::string_view, static_cast<int>(TextureFilter::Count)> kTextureFilterNames = {"auto", "nearest", "bilinear",
                                                                                                             "trilinear"};
+
+// The course's environment (reflection) mapping (renderer/PIPELINE.md, section 8).
+inline constexpr std::size_t kMaxSettingsPathBytes = 4096;  // a file name a setting holds
+struct EnvironmentSettings {
+  std::string map;             // a cube map PNG (six square faces side by side); empty: none
+  float reflectivity = 0.25f;  // k_r of k_r·I_r
+  bool background = true;      // empty pixels show the map in their view direction
+};
 
 struct TextureSettings {
   TextureFilter filter = TextureFilter::Auto;
@@ -120,6 +129,7 @@ struct RenderSettings {
   MaterialOverrides material;
   ShadowSettings shadows;
   TextureSettings textures;
+  EnvironmentSettings environment;
   glm::vec3 background{0.02f, 0.025f, 0.035f};  // linear RGB
 };
 

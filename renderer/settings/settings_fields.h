@@ -19,7 +19,7 @@ struct FieldInfo {
 };
 
 // Visitor interface (duck-typed): v.field(info, T& value) for float, int,
-// bool, glm::vec3, std::optional<float> and enums with a names table
+// bool, glm::vec3, std::optional<float>, std::string (a file path) and enums with a names table
 // (v.choice(info, Enum& value, names)); v.group(key, fn) for nested objects;
 // v.lights(key, std::vector<Light>&) for the light list, whose elements
 // visitLight describes.
@@ -77,6 +77,12 @@ void visitSettings(Visitor& v, RenderSettings& s) {
   });
   v.group("textures", [&] {
     v.choice({"filter", "auto (each texture's sampler), nearest, bilinear or trilinear (mipmapped)"}, s.textures.filter, kTextureFilterNames);
+  });
+  v.group("environment", [&] {
+    EnvironmentSettings& e = s.environment;
+    v.field({"map", "a cube map PNG, six square faces side by side (+x -x +y -y +z -z); empty: none"}, e.map);
+    v.field({"reflectivity", "k_r of the reflection k_r I_r, I_r the map in direction R = 2(N.V)N - V", 0, 1}, e.reflectivity);
+    v.field({"background", "empty pixels show the map in their view direction"}, e.background);
   });
   v.field({"background", "linear RGB of empty pixels, each in [0, 1]", 0, 1, FieldKind::Color}, s.background);
 }

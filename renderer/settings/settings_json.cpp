@@ -46,6 +46,7 @@ struct JsonWriter {
   void field(const FieldInfo& f, bool v) { (*out)[std::string(f.key)] = v; }
   void field(const FieldInfo& f, glm::vec3 v) { (*out)[std::string(f.key)] = {shortest(v.x), shortest(v.y), shortest(v.z)}; }
   void field(const FieldInfo& f, const std::optional<float>& v) { (*out)[std::string(f.key)] = v ? json(shortest(*v)) : json(nullptr); }
+  void field(const FieldInfo& f, const std::string& v) { (*out)[std::string(f.key)] = v; }
   template <class E, std::size_t N>
   void choice(const FieldInfo& f, E v, const std::array<std::string_view, N>& names) {
     (*out)[std::string(f.key)] = std::string(names[static_cast<std::size_t>(v)]);
@@ -126,6 +127,15 @@ struct JsonReader {
     if (const json* j = find(f)) {
       if (j->is_null()) v.reset();
       else v = floatNumber(f, *j);
+    }
+  }
+  void field(const FieldInfo& f, std::string& v) {
+    if (const json* j = find(f)) {
+      if (!j->is_string()) fail(f, "expected a file name (a string), got " + describeJson(*j));
+      const std::string text = j->get<std::string>();
+      if (text.size() > kMaxSettingsPathBytes) fail(f, "a file name of " + std::to_string(text.size()) + " bytes is longer than " + std::to_string(kMaxSettingsPathBytes));
+      if (text.find('\0') != std::string::npos) fail(f, "a file name cannot hold a NUL byte");
+      v = text;
     }
   }
   template <class E, std::size_t N>

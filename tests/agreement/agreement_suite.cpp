@@ -35,6 +35,7 @@
 #include "gl/gl_renderer.h"
 #include "image/png.h"
 #include "pipeline/frame_inputs.h"
+#include "scene/environment_map.h"
 #include "scene/load_scene.h"
 #include "settings/settings_json.h"
 
@@ -100,11 +101,16 @@ Case readCase(const fs::path& file) {
   return c;
 }
 
-Scene sceneOf(const Case& c, const std::string& assets) {
+// The case's scene, with the environment map its settings name (an
+// "assets:" name there is read from the assets folder, as scenes are).
+Scene sceneOf(Case& c, const std::string& assets) {
   const std::string assimp = "assimp:", local = "assets:";
-  if (c.scene.rfind(assimp, 0) == 0) return loadScene(std::string(FACET_ASSIMP_MODELS) + "/" + c.scene.substr(assimp.size()));
-  if (c.scene.rfind(local, 0) == 0) return loadScene(assets + "/" + c.scene.substr(local.size()));
-  return loadScene(c.scene);
+  const auto resolve = [&](const std::string& name) { return name.rfind(local, 0) == 0 ? assets + "/" + name.substr(local.size()) : name; };
+  Scene scene = c.scene.rfind(assimp, 0) == 0 ? loadScene(std::string(FACET_ASSIMP_MODELS) + "/" + c.scene.substr(assimp.size()))
+                                               : loadScene(resolve(c.scene));
+  c.settings.environment.map = resolve(c.settings.environment.map);
+  useEnvironment(scene, c.settings.environment);
+  return scene;
 }
 
 // The bar of a case: every byte equal, or the case's allowance.
@@ -167,7 +173,7 @@ int main(int argc, char** argv) {
     DiffResult worst;
     std::vector<ReportCase> report;
     ReportFolder reportFolder((fs::path(outDir) / "report").string());
-    for (const Case& c : cases) {
+    for (Case& c : cases) {
       const Scene scene = sceneOf(c, assetsDir);
       const FrameInputs frame = buildFrameInputs(scene, c.settings);
       const DiffThresholds thresholds = thresholdsOf(c);

@@ -30,6 +30,8 @@ std::vector<Member> frameBlockMembers() {
       {"Frame.eyePosition", offsetof(FrameBlock, eyePosition)},   {"Frame.towardEye", offsetof(FrameBlock, towardEye)},
       {"Frame.ambient", offsetof(FrameBlock, ambient)},           {"Frame.shadowParams", offsetof(FrameBlock, shadowParams)},
       {"Frame.background", offsetof(FrameBlock, background)},
+      {"Frame.environment", offsetof(FrameBlock, environment)},     {"Frame.backgroundForward", offsetof(FrameBlock, backgroundForward)},
+      {"Frame.backgroundRight", offsetof(FrameBlock, backgroundRight)}, {"Frame.backgroundUp", offsetof(FrameBlock, backgroundUp)},
   };
   for (std::size_t i = 0; i < facet::kMaxLights; ++i) {
     const std::string light = "Frame.lights[" + std::to_string(i) + "].";

@@ -21,6 +21,7 @@
 
 #include "cpu/alpha_mask.h"
 #include "cpu/clipper.h"
+#include "cpu/environment_mapping.h"
 #include "cpu/procedural.h"
 #include "cpu/interpolation.h"
 #include "cpu/lighting.h"
@@ -220,6 +221,8 @@ class ReferenceRenderer final : public Renderer {
     const ShadowMaps maps = shadowPass(scene, frame);
     RenderResult result;
     result.image = Image(frame.width, frame.height, encodePixel(frame.background));
+    for (int y = 0; y < frame.height; ++y)
+      for (int x = 0; x < frame.width; ++x) result.image.at(x, y) = encodePixel(backgroundAt(frame, x, y));
     Target target{frame.width, frame.height, std::vector<float>(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 1.0f)};
     target.image = &result.image;
     litPass(scene, frame, maps, target);

@@ -1,0 +1,45 @@
+#pragma once
+// Environment mapping (renderer/PIPELINE.md, section 8): the cube map's
+// linear RGB in a direction, for the reflection k_r·I_r and the background.
+// Mirror: shaders/environment.glsl — same functions, same order.
+#include <glm/vec3.hpp>
+
+#include "cpu/texture_sampling.h"
+#include "pipeline/frame_inputs.h"
+#include "pipeline/light_frustum.h"
+#include "scene/scene.h"
+
+namespace facet::cpu {
+
+// env(D): the face of D's largest component (cubeFace), OpenGL's (sc, tc, ma)
+// for it, LINEAR within the face, clamped to its edges.
+inline glm::vec3 environmentAt(const EnvironmentMap& map, glm::vec3 D) {
+  const int face = cubeFace(D);
+  float sc = 0, tc = 0, ma = 0;
+  switch (face) {
+    case 0: sc = -D.z, tc = -D.y, ma = D.x; break;
+    case 1: sc = D.z, tc = -D.y, ma = -D.x; break;
+    case 2: sc = D.x, tc = D.z, ma = D.y; break;
+    case 3: sc = D.x, tc = -D.z, ma = -D.y; break;
+    case 4: sc = D.x, tc = -D.y, ma = D.z; break;
+    default: sc = -D.x, tc = -D.y, ma = -D.z; break;
+  }
+  const float s = (sc / ma + 1.0f) * 0.5f, t = (tc / ma + 1.0f) * 0.5f;
+  const int n = map.faceSize();
+  return glm::vec3(sampleRegion(map.faces, {face * n, 0}, {n, n}, true, Wrap::ClampToEdge, Wrap::ClampToEdge, {s, t}));
+}
+
+// Whether empty pixels show the map rather than the background colour.
+inline bool showsEnvironment(const FrameInputs& frame) { return frame.environment.map && frame.environment.background; }
+
+// The linear colour of empty pixel (px, py): env(D), D = (F + x·X) + y·Y with
+// x, y its centre in NDC, where the frame shows its map; else the background.
+inline glm::vec3 backgroundAt(const FrameInputs& frame, int px, int py) {
+  if (!showsEnvironment(frame)) return frame.background;
+  const FrameInputs::Environment& e = frame.environment;
+  const float x = (2.0f * (static_cast<float>(px) + 0.5f)) / static_cast<float>(frame.width) - 1.0f;
+  const float y = (2.0f * (static_cast<float>(py) + 0.5f)) / static_cast<float>(frame.height) - 1.0f;
+  return environmentAt(*e.map, (e.forward + x * e.right) + y * e.up);
+}
+
+}  // namespace facet::cpu
