@@ -109,18 +109,11 @@ Image GlFrameRenderer::readImage() const {
 
 std::vector<std::uint32_t> GlFrameRenderer::drawTriangleIds(const FrameInputs& frame) {
   const auto idVariant = [&](const FrameInstance& instance) { return maskVariant(frame, instance); };
-  for (const FrameInstance& instance : frame.instances) {
-    const DrawVariant variant = idVariant(instance);
-    if (triangleIdPrograms_.count(variant.index())) continue;
-    ShaderProgram program = buildProgram(gl_, {"triangle_id.vert", "triangle_id.frag"}, drawVariantDefines(variant));
+  prepareMaskPrograms(triangleIdPrograms_, frame, {"triangle_id.vert", "triangle_id.frag"}, [&](ShaderProgram program) {
     const auto at = [&](const char* name) { return uniformLocation(gl_, program, name); };
-    triangleIdPrograms_.emplace(variant.index(), TriangleIdProgram{.clipFromModel = at("clipFromModel"),
-                                                                   .firstTriangle = at("firstTriangle"),
-                                                                   .baseColorSampler = at("baseColorSampler"),
-                                                                   .baseAlpha = at("baseAlpha"),
-                                                                   .alphaCutoff = at("alphaCutoff"),
-                                                                   .program = std::move(program)});
-  }
+    return TriangleIdProgram{.clipFromModel = at("clipFromModel"), .firstTriangle = at("firstTriangle"), .alpha = alphaUniforms(program),
+                             .program = std::move(program)};
+  });
   idTarget_.resize(gl_, frame.width, frame.height);
   gl_.glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   gl_.glFrontFace(GL_CCW);
@@ -148,8 +141,7 @@ std::vector<std::uint32_t> GlFrameRenderer::drawTriangleIds(const FrameInputs& f
     gl_.glProgramUniformMatrix4fv(program, id.clipFromModel, 1, GL_FALSE, glm::value_ptr(instance.clipFromModel));
     gl_.glProgramUniform1ui(program, id.firstTriangle, first);
     if (variant.masked)
-      setBaseColorUniforms(program, id.baseColorSampler, id.baseAlpha, id.alphaCutoff, frame.materials[static_cast<std::size_t>(instance.material)],
-                           variant.textured);
+      setBaseColorUniforms(program, id.alpha, frame.materials[static_cast<std::size_t>(instance.material)], variant.textured);
     if (mesh.indexCount > 0) {
       gl_.glBindVertexArray(mesh.vertexArray.id());
       gl_.glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
@@ -210,26 +202,16 @@ bool GlFrameRenderer::preparePrograms(const FrameInputs& frame) {
                                          .shininess = at("material.shininess"),
                                          .metallic = at("material.metallic"),
                                          .baseColorFactor = at("baseColorFactor"),
-                                         .baseColorSampler = at("baseColorSampler"),
-                                         .baseAlpha = at("baseAlpha"),
-                                         .alphaCutoff = at("alphaCutoff"),
+                                         .alpha = alphaUniforms(program),
                                          .program = std::move(program)});
     compiled = true;
   }
-  for (const FrameInstance& instance : frame.instances) {
-    if (!shadows) break;
-    const DrawVariant variant = maskVariant(frame, instance);
-    if (depthPrograms_.count(variant.index())) continue;
-    ShaderProgram program = buildProgram(gl_, {"shadow_depth.vert", "shadow_depth.frag"}, drawVariantDefines(variant));
-    const auto at = [&](const char* name) { return uniformLocation(gl_, program, name); };
-    depthPrograms_.emplace(variant.index(), DepthProgram{.lightClipFromWorld = at("lightClipFromWorld"),
-                                                         .worldFromModel = at("worldFromModel"),
-                                                         .baseColorSampler = at("baseColorSampler"),
-                                                         .baseAlpha = at("baseAlpha"),
-                                                         .alphaCutoff = at("alphaCutoff"),
-                                                         .program = std::move(program)});
-    compiled = true;
-  }
+  if (shadows)
+    compiled = prepareMaskPrograms(depthPrograms_, frame, {"shadow_depth.vert", "shadow_depth.frag"}, [&](ShaderProgram program) {
+                 const auto at = [&](const char* name) { return uniformLocation(gl_, program, name); };
+                 return DepthProgram{.lightClipFromWorld = at("lightClipFromWorld"), .worldFromModel = at("worldFromModel"),
+                                     .alpha = alphaUniforms(program), .program = std::move(program)};
+               }) || compiled;
   if (!backgroundProgram_) {
     backgroundProgram_.emplace(buildProgram(gl_, {"background.vert", "background.frag"}));
     compiled = true;
@@ -263,8 +245,7 @@ void GlFrameRenderer::shadowPass(const FrameInputs& frame) {
                                       glm::value_ptr(light.frustum.clipFromWorld[static_cast<std::size_t>(face)]));
         gl_.glProgramUniformMatrix4fv(program, depth.worldFromModel, 1, GL_FALSE, glm::value_ptr(instance.worldFromModel));
         if (variant.masked)
-          setBaseColorUniforms(program, depth.baseColorSampler, depth.baseAlpha, depth.alphaCutoff,
-                               frame.materials[static_cast<std::size_t>(instance.material)], variant.textured);
+          setBaseColorUniforms(program, depth.alpha, frame.materials[static_cast<std::size_t>(instance.material)], variant.textured);
         gl_.glBindVertexArray(mesh.vertexArray.id());
         gl_.glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
       }
@@ -330,7 +311,7 @@ void GlFrameRenderer::drawInstance(const LitProgram& lit, const FrameInputs& fra
   gl_.glProgramUniform1f(program, lit.shininess, material.shininess);
   gl_.glProgramUniform1f(program, lit.metallic, material.metallic);
   gl_.glProgramUniform3fv(program, lit.baseColorFactor, 1, glm::value_ptr(material.baseColor));
-  setBaseColorUniforms(program, lit.baseColorSampler, lit.baseAlpha, lit.alphaCutoff, material, textured);
+  setBaseColorUniforms(program, lit.alpha, material, textured);
 
   if (flat) {
     gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshIndicesBinding, mesh.indices.id());
@@ -346,10 +327,27 @@ void GlFrameRenderer::drawInstance(const LitProgram& lit, const FrameInputs& fra
   }
 }
 
-void GlFrameRenderer::setBaseColorUniforms(GLuint program, GLint samplerLocation, GLint baseAlpha, GLint alphaCutoff, const CourseMaterial& material,
-                                           bool textured) {
-  gl_.glProgramUniform1f(program, baseAlpha, material.baseAlpha);
-  gl_.glProgramUniform1f(program, alphaCutoff, material.alphaCutoff);
+GlFrameRenderer::AlphaUniforms GlFrameRenderer::alphaUniforms(const ShaderProgram& program) const {
+  return {uniformLocation(gl_, program, "baseColorSampler"), uniformLocation(gl_, program, "baseAlpha"), uniformLocation(gl_, program, "alphaCutoff")};
+}
+
+template <class Program, class Make>
+bool GlFrameRenderer::prepareMaskPrograms(std::map<int, Program>& programs, const FrameInputs& frame, std::initializer_list<std::string_view> stages,
+                                          Make make) {
+  bool built = false;
+  for (const FrameInstance& instance : frame.instances) {
+    const DrawVariant variant = maskVariant(frame, instance);
+    if (programs.count(variant.index())) continue;
+    programs.emplace(variant.index(), make(buildProgram(gl_, stages, drawVariantDefines(variant))));
+    built = true;
+  }
+  return built;
+}
+
+void GlFrameRenderer::setBaseColorUniforms(GLuint program, const AlphaUniforms& uniforms, const CourseMaterial& material, bool textured) {
+  const GLint samplerLocation = uniforms.baseColorSampler;
+  gl_.glProgramUniform1f(program, uniforms.baseAlpha, material.baseAlpha);
+  gl_.glProgramUniform1f(program, uniforms.alphaCutoff, material.alphaCutoff);
   const Sampler& sampler = material.baseColorSampler;
   static_assert(static_cast<int>(MagFilter::Linear) == 1 && static_cast<int>(MinFilter::NearestMipmapNearest) == 2 &&
                     static_cast<int>(MinFilter::LinearMipmapLinear) == 5 && static_cast<int>(Wrap::MirroredRepeat) == 2,

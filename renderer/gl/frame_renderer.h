@@ -55,17 +55,20 @@ class GlFrameRenderer {
   // A lit-pass program and its uniform locations (shaders/draw_uniforms.glsl).
   // The program comes last: aggregate initialization evaluates in order, and
   // the locations are looked up before the program is moved in.
+  // The base colour texture's sampler and the alpha mask's uniforms of a program that reads them.
+  struct AlphaUniforms {
+    GLint baseColorSampler, baseAlpha, alphaCutoff;
+  };
   struct LitProgram {
     GLint clipFromModel, worldFromModel, normalMatrix;
     GLint emissive, ka, kd, ks, shininess, metallic;
     GLint baseColorFactor;
-    GLint baseColorSampler;
-    GLint baseAlpha, alphaCutoff;
+    AlphaUniforms alpha;
     ShaderProgram program;
   };
   struct DepthProgram {
     GLint lightClipFromWorld, worldFromModel;
-    GLint baseColorSampler, baseAlpha, alphaCutoff;
+    AlphaUniforms alpha;
     ShaderProgram program;
   };
 
@@ -78,7 +81,12 @@ class GlFrameRenderer {
   // What the shadow pass and the triangle-id pass draw `instance` with: only an alpha mask changes them.
   DrawVariant maskVariant(const FrameInputs& frame, const FrameInstance& instance) const;
   // The base colour texture, its sampler and the alpha mask's uniforms of `material` on `program`.
-  void setBaseColorUniforms(GLuint program, GLint sampler, GLint baseAlpha, GLint alphaCutoff, const CourseMaterial& material, bool textured);
+  void setBaseColorUniforms(GLuint program, const AlphaUniforms& uniforms, const CourseMaterial& material, bool textured);
+  AlphaUniforms alphaUniforms(const ShaderProgram& program) const;
+  // Builds the program of `stages` for each mask variant the frame's instances
+  // draw with and `programs` lacks (make turns it into a Program); true when it built one.
+  template <class Program, class Make>
+  bool prepareMaskPrograms(std::map<int, Program>& programs, const FrameInputs& frame, std::initializer_list<std::string_view> stages, Make make);
   // Back-face culling as the instance asks (FrameInstance::cullBackFaces).
   void setCulling(bool cull);
   void shadowPass(const FrameInputs& frame);
@@ -95,7 +103,7 @@ class GlFrameRenderer {
   std::optional<ShaderProgram> backgroundProgram_;
   struct TriangleIdProgram {
     GLint clipFromModel, firstTriangle;
-    GLint baseColorSampler, baseAlpha, alphaCutoff;
+    AlphaUniforms alpha;
     ShaderProgram program;
   };
   std::map<int, TriangleIdProgram> triangleIdPrograms_;  // by DrawVariant::index(); only masked draws differ

@@ -40,6 +40,16 @@ RenderSettings topDownSettings(int size) {
   return s;
 }
 
+RenderSettings shadowedTopDownSettings(int size, Light light) {
+  RenderSettings s = topDownSettings(size);
+  light.castsShadow = true;
+  s.lights = {light};
+  s.shadows.enabled = true;
+  s.shadows.mapSize = 512;
+  s.shadows.pcfRadius = 0;
+  return s;
+}
+
 glm::vec3 worldAtPixel(int px, int py, int size) {
   const float step = 4.0f / static_cast<float>(size);
   return {(static_cast<float>(px) + 0.5f) * step - 2.0f, 0.0f, 2.0f - (static_cast<float>(py) + 0.5f) * step};

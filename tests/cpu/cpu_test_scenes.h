@@ -17,6 +17,9 @@ Scene groundScene(int subdivisions, glm::vec3 baseColor);
 RenderSettings topDownSettings(int size);
 glm::vec3 worldAtPixel(int px, int py, int size);
 
+// topDownSettings with `light` as the only light, casting hard shadows into a 512² map.
+RenderSettings shadowedTopDownSettings(int size, Light light);
+
 // Renders with the CPU backend (two threads).
 Image renderCpu(const Scene& scene, const RenderSettings& settings);
 

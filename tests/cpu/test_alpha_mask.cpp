@@ -42,15 +42,10 @@ Scene maskedQuadScene(AlphaMode mode) {
 }
 
 RenderSettings shadowedTopDown() {
-  RenderSettings s = test::topDownSettings(kSize);
   Light sun;
   sun.kind = LightKind::Directional;
   sun.direction = glm::normalize(glm::vec3(0.0f, -1.0f, -0.5f));  // the quad's shadow falls 0.25 towards -z
-  sun.castsShadow = true;
-  s.lights = {sun};
-  s.shadows.enabled = true;
-  s.shadows.mapSize = 512;
-  s.shadows.pcfRadius = 0;
+  RenderSettings s = test::shadowedTopDownSettings(kSize, sun);
   s.ambient = 0.2f;
   return s;
 }

@@ -31,17 +31,12 @@ Scene occluderScene() {
 }
 
 RenderSettings shadowSettings(LightKind kind) {
-  RenderSettings s = topDownSettings(kSize);
   Light light;
   light.kind = kind;
   light.position = {-1.0f, 3.0f, 0.0f};
   light.direction = glm::normalize(glm::vec3(0.0f, 0.8f, 0.0f) - light.position);
   light.spotCutoffDeg = 45.0f;
-  light.castsShadow = true;
-  s.lights = {light};
-  s.shadows.enabled = true;
-  s.shadows.mapSize = 512;
-  s.shadows.pcfRadius = 0;
+  RenderSettings s = shadowedTopDownSettings(kSize, light);
   s.ambient = 0.1f;
   s.material.ka = 1.0f;
   s.material.kd = 1.0f;
@@ -52,6 +47,24 @@ RenderSettings shadowSettings(LightKind kind) {
 // Pixel of world point (x, 0, z) in the top-down view.
 std::array<int, 2> pixelOf(float x, float z) {
   return {static_cast<int>((x + 2.0f) / 4.0f * kSize), static_cast<int>((2.0f - z) / 4.0f * kSize)};
+}
+
+// 16x16 maps (`layers` of them) at depth 0.5 everywhere, and a shadow-casting light of `kind` whose
+// shadow-map coordinates are the world's own: a point at z = 0.5 + d lies d behind the stored depth.
+cpu::ShadowMaps constantMaps(int layers) {
+  cpu::ShadowMaps maps;
+  maps.reset(16, layers);
+  std::fill(maps.depth.begin(), maps.depth.end(), 0.5f);
+  return maps;
+}
+
+FrameLight identityLight(LightKind kind) {
+  FrameLight light;
+  light.light.kind = kind;
+  light.hasShadowMap = true;
+  light.shadowLayer = 0;
+  light.shadowFromWorld.fill(glm::mat4(1.0f));
+  return light;
 }
 
 }  // namespace
@@ -123,14 +136,8 @@ TEST_CASE("PCF softens the shadow edge: intermediate values appear that hard sha
 TEST_CASE("the shadow bias is max(b_slope·(1 - N·L), b_min): a point just beyond it is in shadow, one just within it is lit") {
   // One directional light whose shadow-map coordinates are the world's own (u, v, z) = (x, y, z), and a
   // 16x16 map holding depth 0.5 everywhere: a point at z = 0.5 + d is in shadow exactly when d > bias.
-  FrameLight light;
-  light.light.kind = LightKind::Directional;
-  light.hasShadowMap = true;
-  light.shadowLayer = 0;
-  light.shadowFromWorld[0] = glm::mat4(1.0f);
-  cpu::ShadowMaps maps;
-  maps.reset(16, 1);
-  std::fill(maps.depth.begin(), maps.depth.end(), 0.5f);
+  const FrameLight light = identityLight(LightKind::Directional);
+  const cpu::ShadowMaps maps = constantMaps(1);
   ShadowSettings shadows;
   shadows.pcfRadius = 0;
   shadows.biasMin = 0.01f;
@@ -152,21 +159,15 @@ TEST_CASE("the shadow bias is max(b_slope·(1 - N·L), b_min): a point just beyo
 TEST_CASE("PCF taps beyond a map's edge: lit for a spot or directional map, the edge texel for a point light's cube face") {
   // Shadow-map coordinates are the world's own, a 16x16 map at depth 0.5 and a point at z = 0.6 behind
   // it at u = 0.99, in the last column: a 3x3 kernel has three taps in column 16, beyond the edge.
-  cpu::ShadowMaps maps;
-  maps.reset(16, 6);
-  std::fill(maps.depth.begin(), maps.depth.end(), 0.5f);
+  const cpu::ShadowMaps maps = constantMaps(6);
   ShadowSettings shadows;
   shadows.pcfRadius = 1;
   shadows.biasMin = 0.01f;
   shadows.biasSlope = 0.0f;
   const glm::vec3 P{0.99f, 0.5f, 0.6f}, N{0.0f, 0.0f, 1.0f}, L{0.0f, 0.0f, 1.0f};
   const auto S = [&](LightKind kind) {
-    FrameLight light;
-    light.light.kind = kind;
+    FrameLight light = identityLight(kind);
     light.light.position = {-10.0f, 0.5f, 0.5f};  // P - position lies along +x: cube face 0
-    light.hasShadowMap = true;
-    light.shadowLayer = 0;
-    light.shadowFromWorld.fill(glm::mat4(1.0f));
     return cpu::shadowFactor(maps, light, shadows, P, N, L);
   };
   CHECK(S(LightKind::Directional) == doctest::Approx(3.0f / 9.0f));
