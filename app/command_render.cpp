@@ -15,6 +15,7 @@
 #include "cpu/reference/reference_renderer.h"
 #include "image/png.h"
 #include "pipeline/frame_inputs.h"
+#include "pipeline/displacement.h"
 #include "scene/environment_map.h"
 #include "scene/load_scene.h"
 #if FACET_HAVE_GL
@@ -63,9 +64,10 @@ Command addRenderCommand(CLI::App& app) {
     // Before loading and rendering (minutes at large sizes): a frame nobody can write is not drawn.
     checkOutputFile(output, {options->common.scenePath, options->common.settingsPath});
     Scene scene = loadScene(options->common.scenePath);
-    for (const std::string& warning : scene.warnings) std::fprintf(stderr, "warning: %s: %s\n", scene.source.c_str(), warning.c_str());
     const RenderSettings settings = settingsFor(options->common, scene);
+    useDisplacement(scene, settings.material);
     useEnvironment(scene, settings.environment);
+    for (const std::string& warning : scene.warnings) std::fprintf(stderr, "warning: %s: %s\n", scene.source.c_str(), warning.c_str());
     const FrameInputs frame = buildFrameInputs(scene, settings);
     for (const std::string& warning : frame.warnings) std::fprintf(stderr, "warning: %s: %s\n", scene.source.c_str(), warning.c_str());
     std::unique_ptr<Renderer> renderer = makeRenderer(*options);

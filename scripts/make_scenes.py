@@ -801,6 +801,44 @@ def environment():
     return g
 
 
+def height_map(size=128):
+    """A greyscale height map: a round hill in the middle, a ring of ripples
+    around it and a low border, h from 0 (black) to 1 (white)."""
+    def pixel(x, y):
+        u, v = (x + 0.5) / size - 0.5, (y + 0.5) / size - 0.5
+        r = math.sqrt(u * u + v * v)
+        hill = math.exp(-(r / 0.12) ** 2)
+        ripples = 0.35 * (0.5 + 0.5 * math.cos(r * 2 * math.pi * 6)) * max(0.0, 1 - r / 0.5)
+        h = min(1.0, hill + ripples)
+        g = int(round(255 * h))
+        return (g, g, g)
+    return png(size, size, pixel)
+
+
+def displacement():
+    g = Gltf("Displacement mapping, with --set material.displacementMap=assets/displacement/height.png (and "
+             "material.displacementScale, material.displacementSubdivisions): a square of sand and a blue sphere over "
+             "a grey ground, both subdivided and moved along their normals by the map (white is high): a hill in the "
+             "middle ringed by ripples, on the square and on the side of the sphere that faces the camera; shadows "
+             "follow the displaced shapes. The ground has no texture coordinates and stays flat. Without the setting "
+             "the square and the sphere are flat and smooth.")
+    # A white texture: TEXCOORD_0 is what the height map is read at; the colour stays the factor's.
+    white = g.add_texture(g.add_image("white 4x4", png(4, 4, lambda x, y: (255, 255, 255))),
+                          g.add_sampler(LINEAR, LINEAR_MIPMAP_LINEAR, REPEAT, REPEAT))
+    sand = g.add_material("sand", (0.85, 0.72, 0.5, 1), 0.0, 0.8, texture=white)
+    blue = g.add_material("blue", (0.25, 0.4, 0.85, 1), 0.0, 0.4, texture=white)
+    n = 17
+    positions = grid_positions(n, n, 2.4 / (n - 1))
+    uvs = [(c / (n - 1), r / (n - 1)) for r in range(n) for c in range(n)]
+    terrain = Mesh(positions, [(0, 1, 0)] * len(positions), grid_indices(n, n), uvs)
+    g.add_node("terrain", g.add_mesh("terrain", g.primitive(terrain, sand)), translation=(-0.9, 0.01, 0))
+    g.add_node("sphere", g.add_mesh("sphere", g.primitive(uv_sphere(0.45, 48, 24), blue)), translation=(1.2, 0.7, 0))
+    add_ground(g, 6, 5)
+    g.add_camera("camera", (0.2, 2.0, 3.2), (0.1, 0.2, 0))
+    g.add_light("key", "directional", (-2, 4, 2.5), (0, 0, 0), intensity=1.2)
+    return g
+
+
 def write_png(path, png_bytes):
     os.makedirs(os.path.dirname(path), exist_ok=True)
     with open(path, "wb") as out:
@@ -977,6 +1015,7 @@ SCENES = [
     (ASSETS_DIR, "shadows.gltf", shadows),
     (ASSETS_DIR, "texture.gltf", texture),
     (ASSETS_DIR, "environment.gltf", environment),
+    (ASSETS_DIR, "displacement.gltf", displacement),
 ]
 
 
@@ -984,6 +1023,7 @@ def main():
     for folder, name, build in SCENES:
         build().write(os.path.join(folder, name))
     write_png(os.path.join(ASSETS_DIR, "environment", "sky_cube.png"), sky_cube())
+    write_png(os.path.join(ASSETS_DIR, "displacement", "height.png"), height_map())
 
 
 if __name__ == "__main__":

@@ -15,6 +15,7 @@
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
+#include "pipeline/displacement.h"
 #include "scene/environment_map.h"
 #include "common/error.h"
 #include "gl/gl_renderer.h"
@@ -85,17 +86,20 @@ struct DrawnFrame {
   Image image;                         // what render() read back
   double milliseconds = 0;             // the frame's passes (upload, shadow, lit; not the read-back), when it last ran
   std::string error;                   // why the newest settings could not be drawn; the last good image stays
-  // The viewer's scene with the settings' environment map loaded, while the map and the scene stay.
+  // The viewer's scene displaced and with the settings' environment map, while they and the scene stay.
   std::shared_ptr<const Scene> environmentBase, withEnvironment;
 };
 
-// The scene a frame of `state` draws: its own when the settings name the map
-// it holds (or none), else a copy with that map, loaded once per map name.
+// The scene a frame of `state` draws: its own when the settings displace
+// nothing and name the map it holds (or none), else a copy displaced and
+// with that map, made once per displacement and map.
 std::shared_ptr<const Scene> sceneFor(const ViewerState& state, DrawnFrame& drawn) {
-  if (state.scene->environment.path == state.settings.environment.map) return state.scene;
-  if (drawn.withEnvironment && drawn.environmentBase == state.scene && drawn.withEnvironment->environment.path == state.settings.environment.map)
-    return drawn.withEnvironment;
+  const std::string displacement = displacementKey(state.settings.material);
+  const auto matches = [&](const Scene& s) { return s.environment.path == state.settings.environment.map && s.displacement == displacement; };
+  if (matches(*state.scene)) return state.scene;
+  if (drawn.withEnvironment && drawn.environmentBase == state.scene && matches(*drawn.withEnvironment)) return drawn.withEnvironment;
   auto copy = std::make_shared<Scene>(*state.scene);
+  useDisplacement(*copy, state.settings.material);
   useEnvironment(*copy, state.settings.environment);
   drawn.environmentBase = state.scene;
   drawn.withEnvironment = copy;

@@ -11,6 +11,7 @@
 #include "math/normal_matrix.h"
 #include "math/projection.h"
 #include "math/viewport.h"
+#include "pipeline/displacement.h"
 #include "pipeline/frame_checks.h"
 #include "pipeline/material_coefficients.h"
 #include "pipeline/texture_filter.h"
@@ -45,6 +46,8 @@ FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings)
   f.clipFromWorld = f.clipFromEye * f.eyeFromWorld;
   f.windowFromNdc = viewportMatrix(f.width, f.height);
 
+  if (displacementKey(settings.material) != scene.displacement)
+    throw Error("material.displacementMap: the scene's meshes were not displaced with these settings (useDisplacement displaces them)");
   if (settings.environment.map != scene.environment.path)
     throw Error("environment.map: '" + settings.environment.map + "' is not the scene's loaded map (useEnvironment loads it)");
   if (!scene.environment.empty()) {

@@ -152,6 +152,7 @@ struct Scene {
   std::vector<Light> lights;
   std::vector<SceneCamera> cameras;
   EnvironmentMap environment;        // the settings' environment.map, once loaded
+  std::string displacement;          // the settings its meshes were displaced with (pipeline/displacement.h); empty: none
   std::vector<std::string> warnings; // what a loader skipped or repaired
 
   std::size_t triangleCount() const;  // over all instances

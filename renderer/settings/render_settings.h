@@ -101,7 +101,13 @@ struct MaterialOverrides {
   std::optional<float> shininess;  // n
   Procedural procedural = Procedural::None;
   float proceduralScale = 4.0f;     // k: pattern cells per model unit
+  // Displacement mapping (PIPELINE.md, section 8): P' = P + (scale·h)·N at the
+  // vertices of every textured mesh, subdivided first.
+  std::string displacementMap;      // a greyscale PNG height map h in [0, 1], read at TEXCOORD_0; empty: none
+  float displacementScale = 0.1f;   // model units at h = 1
+  int displacementSubdivisions = 3; // each triangle split into 4^k
 };
+inline constexpr int kMaxDisplacementSubdivisions = 6;
 
 struct ShadowSettings {
   bool enabled = true;

@@ -66,6 +66,10 @@ void visitSettings(Visitor& v, RenderSettings& s) {
     v.choice({"procedural", "none, or a checker or noise pattern of the model-space point in place of every base colour texture"}, m.procedural,
              kProceduralNames);
     v.field({"proceduralScale", "k: the pattern's cells per model unit", 0.01, 1000}, m.proceduralScale);
+    v.field({"displacementMap", "a greyscale PNG height map h read at TEXCOORD_0: P' = P + (scale h) N; empty: none"}, m.displacementMap);
+    v.field({"displacementScale", "model units a vertex moves along N where h = 1", -1000, 1000}, m.displacementScale);
+    v.field({"displacementSubdivisions", "k: each triangle of a displaced mesh is split into 4^k first", 0, kMaxDisplacementSubdivisions},
+            m.displacementSubdivisions);
   });
   v.group("shadows", [&] {
     ShadowSettings& sh = s.shadows;

@@ -35,6 +35,7 @@
 #include "gl/gl_renderer.h"
 #include "image/png.h"
 #include "pipeline/frame_inputs.h"
+#include "pipeline/displacement.h"
 #include "scene/environment_map.h"
 #include "scene/load_scene.h"
 #include "settings/settings_json.h"
@@ -101,14 +102,16 @@ Case readCase(const fs::path& file) {
   return c;
 }
 
-// The case's scene, with the environment map its settings name (an
-// "assets:" name there is read from the assets folder, as scenes are).
+// The case's scene, displaced and with the environment map as its settings
+// say (an "assets:" file name there is read from the assets folder, as scenes are).
 Scene sceneOf(Case& c, const std::string& assets) {
   const std::string assimp = "assimp:", local = "assets:";
   const auto resolve = [&](const std::string& name) { return name.rfind(local, 0) == 0 ? assets + "/" + name.substr(local.size()) : name; };
   Scene scene = c.scene.rfind(assimp, 0) == 0 ? loadScene(std::string(FACET_ASSIMP_MODELS) + "/" + c.scene.substr(assimp.size()))
                                                : loadScene(resolve(c.scene));
   c.settings.environment.map = resolve(c.settings.environment.map);
+  c.settings.material.displacementMap = resolve(c.settings.material.displacementMap);
+  useDisplacement(scene, c.settings.material);
   useEnvironment(scene, c.settings.environment);
   return scene;
 }
