@@ -682,6 +682,33 @@ def grazing_checker():
     return g
 
 
+def texture_transform():
+    g = Gltf("KHR_texture_transform on one texture (an F on a grid, 16x16 texels): four panels, left to right: no "
+             "transform (one upright F); offset (0.5, 0) (the F shifted by half the panel, wrapping around); rotation "
+             "90 degrees (pi/2) about the texture origin; scale (2, 2) with rotation 0.3 and offset (0.25, 0.1) "
+             "(four smaller, tilted Fs). REPEAT, bilinear, so every transformed coordinate samples the same image.")
+    def pixel(x, y):
+        if letter_f(x, y, 5, 4, 1):
+            return (200, 40, 30)
+        return (230, 230, 220) if (x // 4 + y // 4) % 2 else (120, 150, 200)
+    image = g.add_image("F 16x16", png(16, 16, pixel))
+    sampler = g.add_sampler(LINEAR, LINEAR, REPEAT, REPEAT)
+    panel = quad(1.0, 1.0)
+    for i, (name, transform) in enumerate((("no transform", None), ("offset (0.5, 0)", {"offset": [0.5, 0]}),
+                                           ("rotation pi/2", {"rotation": num(math.pi / 2)}),
+                                           ("scale 2, rotation 0.3, offset", {"scale": [2, 2], "rotation": 0.3, "offset": [0.25, 0.1]}))):
+        texture = g.add_texture(image, sampler)
+        material = g.add_material(name, (1, 1, 1, 1), 0.0, 0.9, texture=texture)
+        if transform is not None:
+            g.doc["materials"][material]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"] = {"KHR_texture_transform": transform}
+        g.add_node(name, g.add_mesh(name, g.primitive(panel, material)), translation=(1.15 * (i - 1.5), 0.7, 0))
+    add_ground(g, 7, 4)
+    g.add_camera("camera", (0, 0.9, 3.4), (0, 0.65, 0))
+    g.add_light("sun", "directional", (-1.0, 3.0, 4.0), (0, 0, 0), intensity=1.1)
+    g.doc["extensionsUsed"] = sorted(set(g.doc.get("extensionsUsed", [])) | {"KHR_texture_transform"})
+    return g
+
+
 def mipmap_modes():
     g = Gltf("Four 2 m wide, 80 m long strips of the checker of grazing_checker.gltf (8-texel squares, 25 cm), "
              "seen from 1.2 m up, one per mipmap min filter, left to right: NEAREST_MIPMAP_NEAREST (bands where "
@@ -1005,6 +1032,7 @@ SCENES = [
     (MATERIALS_DIR, "textured_wraps.gltf", textured_wraps),
     (MATERIALS_DIR, "grazing_checker.gltf", grazing_checker),
     (MATERIALS_DIR, "mipmap_modes.gltf", mipmap_modes),
+    (MATERIALS_DIR, "texture_transform.gltf", texture_transform),
     (MATERIALS_DIR, "alpha_mask.gltf", alpha_mask),
     (ASSETS_DIR, "transformations.gltf", transformations),
     (ASSETS_DIR, "projections.gltf", projections),

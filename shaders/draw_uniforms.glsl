@@ -11,6 +11,7 @@ uniform vec3 baseColorFactor;      // O_d without its texture, linear RGB
 uniform float baseAlpha;           // its alpha
 uniform float alphaCutoff;         // alphaMode MASK: the least alpha a fragment keeps
 uniform ivec4 baseColorSampler;    // its texture's magFilter, minFilter, wrapS, wrapT: scene/scene.h's enum values
+uniform vec3 baseColorTransform[2];// its KHR_texture_transform: the rows of st' = M·(s, t, 1)
 
 layout(binding = 0) uniform sampler2DArray shadowMaps;  // pass 1: one S×S depth layer per light face
 layout(binding = 1) uniform usampler2D baseColorTexture; // sRGB-encoded bytes (GL_RGBA8UI), bottom row first
@@ -32,7 +33,12 @@ vec4 baseColorAt(vec2 st, vec4 stDerivatives, vec4 vertexColor, vec3 modelPoint)
   // A procedural texture in place of the base colour texture (grey, alpha 1); frame.ambient.y is its scale k.
   O = O * proceduralGrey(FACET_PROCEDURAL, modelPoint, frame.ambient.y);
 #elif FACET_TEXTURED
-  vec4 texel = sampleTexture(baseColorTexture, baseColorSampler, st, stDerivatives);
+  // KHR_texture_transform: st' by the 2×3 matrix, the derivatives by its linear part (renderer/cpu/texture_sampling.h).
+  vec3 a = baseColorTransform[0], b = baseColorTransform[1];
+  precise vec2 uv = vec2((a.x * st.x + a.y * st.y) + a.z, (b.x * st.x + b.y * st.y) + b.z);
+  precise vec4 d = vec4(a.x * stDerivatives.x + a.y * stDerivatives.y, b.x * stDerivatives.x + b.y * stDerivatives.y,
+                        a.x * stDerivatives.z + a.y * stDerivatives.w, b.x * stDerivatives.z + b.y * stDerivatives.w);
+  vec4 texel = sampleTexture(baseColorTexture, baseColorSampler, uv, d);
   O = O * texel.rgb;
   alpha = alpha * texel.a;
 #endif

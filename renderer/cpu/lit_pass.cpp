@@ -96,7 +96,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         baseColor *= proceduralGrey(frame.procedural, {v[layout.model], v[layout.model + 1], v[layout.model + 2]}, frame.proceduralScale);
       else if (texture)
         baseColor *= glm::vec3(
-            sampleTexture(*texture, material->baseColorSampler, {v[layout.uv], v[layout.uv + 1]}, in->quadDerivatives(layout.uv, px, py)));
+            sampleBaseColorTexture(*texture, *material, {v[layout.uv], v[layout.uv + 1]}, in->quadDerivatives(layout.uv, px, py)));
       glm::vec3 color;
       if constexpr (kMode == ShadingMode::Phong) {
         // N is normalized (and negated on a back face, two-sided lighting) in the batch

@@ -20,6 +20,19 @@ inline const Texture* baseColorTextureOf(const Scene& scene, const FrameInputs& 
   return &scene.textures[static_cast<std::size_t>(material.baseColorTexture)];
 }
 
+// The base colour texture's coordinates and their derivatives after the
+// material's KHR_texture_transform (PIPELINE.md, section 8): st' by the
+// 2×3 matrix, the derivatives by its linear part, each written out.
+struct TransformedTexcoords {
+  glm::vec2 st;
+  glm::vec4 derivatives;  // (ds'/dx, dt'/dx, ds'/dy, dt'/dy)
+};
+inline TransformedTexcoords transformTexcoords(const CourseMaterial& m, glm::vec2 st, glm::vec4 d) {
+  const glm::vec3 a = m.uvRow0, b = m.uvRow1;
+  return {{(a.x * st.x + a.y * st.y) + a.z, (b.x * st.x + b.y * st.y) + b.z},
+          {a.x * d.x + a.y * d.y, b.x * d.x + b.y * d.y, a.x * d.z + a.y * d.w, b.x * d.z + b.y * d.w}};
+}
+
 // REPEAT: i mod size in [0, size), with % only on non-negative operands.
 inline int wrap(int i, int size) { return i >= 0 ? i % size : size - 1 - (-1 - i) % size; }
 
@@ -44,5 +57,11 @@ float footprintSquared(glm::vec4 derivatives, int width, int height);
 // The texture through `sampler` at st, derivatives as dFdx(st), dFdy(st)
 // (Interpolation::quadDerivatives): linear RGB and alpha.
 glm::vec4 sampleTexture(const Texture& texture, const Sampler& sampler, glm::vec2 st, glm::vec4 derivatives);
+
+// A material's base colour texture at the fragment's TEXCOORD_0 st and its derivatives: transformed, then sampled.
+inline glm::vec4 sampleBaseColorTexture(const Texture& texture, const CourseMaterial& m, glm::vec2 st, glm::vec4 derivatives) {
+  const TransformedTexcoords t = transformTexcoords(m, st, derivatives);
+  return sampleTexture(texture, m.baseColorSampler, t.st, t.derivatives);
+}
 
 }  // namespace facet::cpu

@@ -328,7 +328,8 @@ void GlFrameRenderer::drawInstance(const LitProgram& lit, const FrameInputs& fra
 }
 
 GlFrameRenderer::AlphaUniforms GlFrameRenderer::alphaUniforms(const ShaderProgram& program) const {
-  return {uniformLocation(gl_, program, "baseColorSampler"), uniformLocation(gl_, program, "baseAlpha"), uniformLocation(gl_, program, "alphaCutoff")};
+  return {uniformLocation(gl_, program, "baseColorSampler"), uniformLocation(gl_, program, "baseColorTransform"),
+          uniformLocation(gl_, program, "baseAlpha"), uniformLocation(gl_, program, "alphaCutoff")};
 }
 
 template <class Program, class Make>
@@ -347,6 +348,8 @@ bool GlFrameRenderer::prepareMaskPrograms(std::map<int, Program>& programs, cons
 void GlFrameRenderer::setBaseColorUniforms(GLuint program, const AlphaUniforms& uniforms, const CourseMaterial& material, bool textured) {
   const GLint samplerLocation = uniforms.baseColorSampler;
   gl_.glProgramUniform1f(program, uniforms.baseAlpha, material.baseAlpha);
+  const glm::vec3 rows[2] = {material.uvRow0, material.uvRow1};
+  gl_.glProgramUniform3fv(program, uniforms.baseColorTransform, 2, glm::value_ptr(rows[0]));
   gl_.glProgramUniform1f(program, uniforms.alphaCutoff, material.alphaCutoff);
   const Sampler& sampler = material.baseColorSampler;
   static_assert(static_cast<int>(MagFilter::Linear) == 1 && static_cast<int>(MinFilter::NearestMipmapNearest) == 2 &&

@@ -57,7 +57,7 @@ class GlFrameRenderer {
   // the locations are looked up before the program is moved in.
   // The base colour texture's sampler and the alpha mask's uniforms of a program that reads them.
   struct AlphaUniforms {
-    GLint baseColorSampler, baseAlpha, alphaCutoff;
+    GLint baseColorSampler, baseColorTransform, baseAlpha, alphaCutoff;
   };
   struct LitProgram {
     GLint clipFromModel, worldFromModel, normalMatrix;

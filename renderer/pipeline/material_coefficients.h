@@ -14,6 +14,8 @@ struct CourseMaterial {
   glm::vec3 baseColor{1.0f};  // O_d, linear RGB (multiplied by the texture when there is one)
   int baseColorTexture = -1;  // index into Scene::textures, -1 = none
   Sampler baseColorSampler;   // its sampler with textures.filter applied (pipeline/texture_filter.h)
+  // Its KHR_texture_transform as the rows of a 2×3 matrix: (s', t') = ((r0.x·s + r0.y·t) + r0.z, (r1.x·s + r1.y·t) + r1.z).
+  glm::vec3 uvRow0{1.0f, 0.0f, 0.0f}, uvRow1{0.0f, 1.0f, 0.0f};
   glm::vec3 emissive{0.0f};   // k_e, linear RGB
   float ka = 0, kd = 0, ks = 0;
   float shininess = 1;        // n

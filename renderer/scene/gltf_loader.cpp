@@ -271,6 +271,30 @@ void convertTextures(const tinygltf::Model& model, const std::map<int, std::stri
   }
 }
 
+// KHR_texture_transform on a texture reference: offset, rotation and scale,
+// each a finite number (another value is refused, naming the reference).
+TextureTransform textureTransformOf(const tinygltf::ExtensionMap& extensions, const std::string& owner) {
+  TextureTransform out;
+  const auto found = extensions.find("KHR_texture_transform");
+  if (found == extensions.end() || !found->second.IsObject()) return out;
+  const tinygltf::Value& t = found->second;
+  const std::string name = owner + ".extensions.KHR_texture_transform";
+  const auto number = [&](const tinygltf::Value& v, const std::string& key) {
+    if (!v.IsNumber() || !std::isfinite(v.GetNumberAsDouble())) throw Error(name + ": " + key + " is not a finite number");
+    return static_cast<float>(v.GetNumberAsDouble());
+  };
+  const auto pair = [&](const char* key, glm::vec2 fallback) {
+    if (!t.Has(key)) return fallback;
+    const tinygltf::Value& v = t.Get(key);
+    if (!v.IsArray() || v.ArrayLen() != 2) throw Error(name + ": " + key + " is not an array of two numbers");
+    return glm::vec2(number(v.Get(0), std::string(key) + "[0]"), number(v.Get(1), std::string(key) + "[1]"));
+  };
+  out.offset = pair("offset", out.offset);
+  out.scale = pair("scale", out.scale);
+  if (t.Has("rotation")) out.rotation = number(t.Get("rotation"), "rotation");
+  return out;
+}
+
 void convertMaterials(const tinygltf::Model& model, Scene& scene, Warnings& warnings) {
   for (std::size_t m = 0; m < model.materials.size(); ++m) {
     const tinygltf::Material& src = model.materials[m];
@@ -299,6 +323,7 @@ void convertMaterials(const tinygltf::Model& model, Scene& scene, Warnings& warn
       warnings.push_back(at("materials", m) + ": alphaMode BLEND is drawn opaque (facet does not blend yet)");
     }
     const int texture = pbr.baseColorTexture.index;
+    material.baseColorTransform = textureTransformOf(pbr.baseColorTexture.extensions, at("materials", m) + ": baseColorTexture");
     if (texture >= 0) {
       if (static_cast<std::size_t>(texture) >= scene.textures.size()) {
         warnings.push_back(at("materials", m) + ": baseColorTexture " + std::to_string(texture) + " does not exist (UNRESOLVED_REFERENCE); ignored");
@@ -703,7 +728,7 @@ struct NodeWalker {
   }
 };
 
-const std::set<std::string> kSupportedExtensions = {"KHR_lights_punctual", "KHR_materials_emissive_strength"};
+const std::set<std::string> kSupportedExtensions = {"KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_texture_transform"};
 
 // glTF's rule: a file whose extensionsRequired names an extension the reader
 // lacks is refused. Checked before tinygltf parses, which would otherwise

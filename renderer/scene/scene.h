@@ -39,12 +39,21 @@ struct MeshInstance {
 // until blending lands; MASK discards fragments below alphaCutoff.
 enum class AlphaMode { Opaque, Mask, Blend };
 
+// KHR_texture_transform of a texture reference: uv' = T(offset)·R(rotation)·S(scale)·uv.
+struct TextureTransform {
+  glm::vec2 offset{0.0f};
+  float rotation = 0.0f;  // radians
+  glm::vec2 scale{1.0f};
+  bool identity() const { return offset == glm::vec2(0.0f) && rotation == 0.0f && scale == glm::vec2(1.0f); }
+};
+
 // glTF metallic-roughness material; the course coefficients k_a, k_d, k_s, n
 // are derived from it in pipeline/material_coefficients.
 struct Material {
   std::string name;
   glm::vec4 baseColor{1.0f};      // O_d (linear RGB) and alpha
   int baseColorTexture = -1;      // index into Scene::textures, -1 = none
+  TextureTransform baseColorTransform;  // its KHR_texture_transform
   glm::vec3 emissive{0.0f};       // k_e, linear RGB
   float metallic = 1.0f;          // glTF default
   float roughness = 1.0f;         // glTF default

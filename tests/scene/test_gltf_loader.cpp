@@ -630,6 +630,22 @@ TEST_CASE("glTF alphaMode: MASK and its cutoff are read, BLEND is drawn opaque w
   CHECK_THROWS_WITH_AS(loadJson(j), doctest::Contains("alphaCutoff '\"half\"' is not a finite number"), Error);
 }
 
+TEST_CASE("glTF KHR_texture_transform on the base colour texture: offset, rotation and scale are read, a bad value is refused by name") {
+  const Scene scene = loadGltf(std::string(FACET_ASSETS) + "/scenes/texture_transform.gltf");
+  REQUIRE(scene.materials.size() >= 4);
+  CHECK(scene.materials[0].baseColorTransform.identity());
+  CHECK(scene.materials[1].baseColorTransform.offset == glm::vec2(0.5f, 0.0f));
+  CHECK(scene.materials[2].baseColorTransform.rotation == doctest::Approx(1.5707964f));
+  CHECK(scene.materials[3].baseColorTransform.scale == glm::vec2(2.0f, 2.0f));
+  nlohmann::json j = triangle();
+  j["images"] = {{{"uri", dataUri(pngHeader(4, 4))}}};
+  j["textures"] = {{{"source", 0}}};
+  j["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}, {"extensions", {{"KHR_texture_transform", {{"rotation", "a quarter"}}}}}}}}}}};
+  CHECK_THROWS_WITH_AS(loadJson(j), doctest::Contains("materials[0]: baseColorTexture.extensions.KHR_texture_transform: rotation is not a finite number"), Error);
+  j["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"]["KHR_texture_transform"] = {{"scale", {2}}};
+  CHECK_THROWS_WITH_AS(loadJson(j), doctest::Contains("KHR_texture_transform: scale is not an array of two numbers"), Error);
+}
+
 TEST_CASE("glTF bad input: positions that cannot be framed are dropped, naming the accessor, and the rest is framed") {
   // Triangle 0 at the origin, triangle 1 at 3e19 (its bounding radius overflowed float: an empty image), triangle 2 with a NaN.
   const float nan = std::numeric_limits<float>::quiet_NaN();

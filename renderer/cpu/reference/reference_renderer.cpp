@@ -151,7 +151,7 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
       if (frame.procedural != Procedural::None)
         O = O * proceduralGrey(frame.procedural, {v[model], v[model + 1], v[model + 2]}, frame.proceduralScale);
       else if (texture)
-        O = O * glm::vec3(sampleTexture(*texture, material.baseColorSampler, {v[uv], v[uv + 1]}, planes.quadDerivatives(uv, px, py)));
+        O = O * glm::vec3(sampleBaseColorTexture(*texture, material, {v[uv], v[uv + 1]}, planes.quadDerivatives(uv, px, py)));
       return O;
     };
     const FragmentTest keep = [&](const Interpolation& planes, int px, int py) {
