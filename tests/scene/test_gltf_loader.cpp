@@ -646,6 +646,17 @@ TEST_CASE("glTF KHR_texture_transform on the base colour texture: offset, rotati
   CHECK_THROWS_WITH_AS(loadJson(j), doctest::Contains("KHR_texture_transform: scale is not an array of two numbers"), Error);
 }
 
+TEST_CASE("glTF KHR_materials_emissive_strength multiplies emissiveFactor (after its clamp to 0..1), and a negative strength is ignored") {
+  nlohmann::json j = triangle();
+  j["materials"] = {{{"emissiveFactor", {1.0, 0.5, 0.25}}, {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 4.0}}}}}}};
+  const Scene strong = loadJson(j);
+  CHECK(strong.materials[0].emissive == glm::vec3(4.0f, 2.0f, 1.0f));
+  j["materials"][0]["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"] = -2.0;
+  CHECK(loadJson(j).materials[0].emissive == glm::vec3(1.0f, 0.5f, 0.25f));
+  j["materials"][0]["extensions"].erase("KHR_materials_emissive_strength");
+  CHECK(loadJson(j).materials[0].emissive == glm::vec3(1.0f, 0.5f, 0.25f));
+}
+
 TEST_CASE("glTF bad input: positions that cannot be framed are dropped, naming the accessor, and the rest is framed") {
   // Triangle 0 at the origin, triangle 1 at 3e19 (its bounding radius overflowed float: an empty image), triangle 2 with a NaN.
   const float nan = std::numeric_limits<float>::quiet_NaN();
