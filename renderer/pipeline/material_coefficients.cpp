@@ -15,11 +15,11 @@ CourseMaterial courseMaterial(const Material& material, const MaterialOverrides&
   CourseMaterial out;
   out.baseColor = glm::vec3(material.baseColor);
   out.baseAlpha = material.baseColor.a;
-  // KHR_texture_transform: T·R·S as the extension's GLSL writes it, in double, rounded once.
+  // KHR_texture_transform: T·R·S, turned as Khronos' TextureTransformTest checks (PIPELINE.md, section 8), in double, rounded once.
   const TextureTransform& t = material.baseColorTransform;
   const double c = std::cos(static_cast<double>(t.rotation)), s = std::sin(static_cast<double>(t.rotation));
-  out.uvRow0 = glm::vec3(static_cast<float>(c * t.scale.x), static_cast<float>(-s * t.scale.y), t.offset.x);
-  out.uvRow1 = glm::vec3(static_cast<float>(s * t.scale.x), static_cast<float>(c * t.scale.y), t.offset.y);
+  out.uvRow0 = glm::vec3(static_cast<float>(c * t.scale.x), static_cast<float>(s * t.scale.y), t.offset.x);
+  out.uvRow1 = glm::vec3(static_cast<float>(-s * t.scale.x), static_cast<float>(c * t.scale.y), t.offset.y);
   out.masked = material.alphaMode == AlphaMode::Mask;
   out.alphaCutoff = material.alphaCutoff;
   out.baseColorTexture = material.baseColorTexture;

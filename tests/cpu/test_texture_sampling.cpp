@@ -122,18 +122,18 @@ TEST_CASE("within a level: NEAREST reads the texel under the point, LINEAR mixes
   CHECK(cpu::sampleLevel(image, false, Wrap::MirroredRepeat, Wrap::Repeat, {1.2f, 0.5f}).r == 1.0f);
 }
 
-TEST_CASE("KHR_texture_transform: the coordinates by T*R*S as the extension writes it, the derivatives by its linear part") {
+TEST_CASE("KHR_texture_transform: the coordinates by T*R*S as Khronos' TextureTransformTest shows it, the derivatives by its linear part") {
   Material m;
   m.baseColorTransform.offset = {0.25f, 0.5f};
-  m.baseColorTransform.rotation = 1.5707963267948966f;  // pi/2: s' = -t * k_y + o_x, t' = s * k_x + o_y
+  m.baseColorTransform.rotation = 1.5707963267948966f;  // pi/2: s' = t * k_y + o_x, t' = -s * k_x + o_y
   m.baseColorTransform.scale = {2.0f, 4.0f};
   const CourseMaterial course = courseMaterial(m, MaterialOverrides{});
   const cpu::TransformedTexcoords t = cpu::transformTexcoords(course, {0.1f, 0.2f}, {1.0f, 0.0f, 0.0f, 1.0f});
-  CHECK(t.st.x == doctest::Approx(-0.2f * 4.0f + 0.25f));
-  CHECK(t.st.y == doctest::Approx(0.1f * 2.0f + 0.5f));
+  CHECK(t.st.x == doctest::Approx(0.2f * 4.0f + 0.25f));
+  CHECK(t.st.y == doctest::Approx(-0.1f * 2.0f + 0.5f));
   CHECK(t.derivatives.x == doctest::Approx(0.0f).epsilon(1e-6));  // ds'/dx = a*ds/dx + b*dt/dx, no offset
-  CHECK(t.derivatives.y == doctest::Approx(2.0f));
-  CHECK(t.derivatives.z == doctest::Approx(-4.0f));
+  CHECK(t.derivatives.y == doctest::Approx(-2.0f));
+  CHECK(t.derivatives.z == doctest::Approx(4.0f));
   CHECK(t.derivatives.w == doctest::Approx(0.0f).epsilon(1e-6));
   // No transform: the identity, and every finite coordinate unchanged to the bit.
   const CourseMaterial plain = courseMaterial(Material{}, MaterialOverrides{});
