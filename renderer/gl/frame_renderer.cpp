@@ -214,6 +214,7 @@ bool GlFrameRenderer::preparePrograms(const FrameInputs& frame) {
                }) || compiled;
   if (!backgroundProgram_) {
     backgroundProgram_.emplace(buildProgram(gl_, {"background.vert", "background.frag"}));
+    backgroundViewportSize_ = uniformLocation(gl_, *backgroundProgram_, "viewportSize");
     compiled = true;
   }
   return compiled;
@@ -266,7 +267,7 @@ void GlFrameRenderer::litPass(const FrameInputs& frame) {
   gl_.glDisable(GL_CULL_FACE);
   gl_.glBindTextureUnit(kEnvironmentUnit, scene_.environment());
   gl_.glUseProgram(backgroundProgram_->id());
-  gl_.glProgramUniform2f(backgroundProgram_->id(), uniformLocation(gl_, *backgroundProgram_, "viewportSize"), static_cast<float>(frame.width),
+  gl_.glProgramUniform2f(backgroundProgram_->id(), backgroundViewportSize_, static_cast<float>(frame.width),
                          static_cast<float>(frame.height));
   gl_.glBindVertexArray(emptyVertexArray_.id());
   gl_.glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -101,6 +101,7 @@ class GlFrameRenderer {
   std::map<std::string, LitProgram> litPrograms_;
   std::map<int, DepthProgram> depthPrograms_;  // by DrawVariant::index(); only masked draws differ
   std::optional<ShaderProgram> backgroundProgram_;
+  GLint backgroundViewportSize_ = -1;  // its uniform vec2 viewportSize
   struct TriangleIdProgram {
     GLint clipFromModel, firstTriangle;
     AlphaUniforms alpha;

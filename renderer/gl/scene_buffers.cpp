@@ -48,19 +48,18 @@ MeshBuffers uploadMesh(const GlFunctions& gl, const Mesh& mesh) {
   return buffers;
 }
 
-GlObject uploadTexture(const GlFunctions& gl, const Texture& texture) {
-  const Image& image = texture.image;
+// Level 0 and the levels below it (image/mipmap.h), uploaded as they are: both backends read the same bytes.
+GlObject uploadTexture(const GlFunctions& gl, const Image& image, const std::vector<Image>& mips) {
   if (image.empty()) return {};
   // Unsigned integer texels: the shader turns bytes into [0,1] itself (shaders/texture.glsl says why).
   GlObject object = createTexture(gl, GL_TEXTURE_2D);
-  gl.glTextureStorage2D(object.id(), texture.levelCount(), GL_RGBA8UI, image.width(), image.height());
+  gl.glTextureStorage2D(object.id(), 1 + static_cast<GLsizei>(mips.size()), GL_RGBA8UI, image.width(), image.height());
   // Read with texelFetch only; integer textures are complete only with NEAREST filters.
   gl.glTextureParameteri(object.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
   gl.glTextureParameteri(object.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  // The levels the loader built (image/mipmap.h), as they are: both backends read the same bytes.
-  for (int k = 0; k < texture.levelCount(); ++k) {
-    const Image& level = texture.level(k);
-    gl.glTextureSubImage2D(object.id(), k, 0, 0, level.width(), level.height(), GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, level.data());
+  for (std::size_t k = 0; k <= mips.size(); ++k) {
+    const Image& level = k == 0 ? image : mips[k - 1];
+    gl.glTextureSubImage2D(object.id(), static_cast<GLint>(k), 0, 0, level.width(), level.height(), GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, level.data());
   }
   return object;
 }
@@ -73,11 +72,9 @@ SceneBuffers::SceneBuffers(const GlFunctions& gl, const Scene& scene) {
   meshes_.reserve(scene.meshes.size());
   for (const Mesh& mesh : scene.meshes) meshes_.push_back(uploadMesh(gl, mesh));
   textures_.reserve(scene.textures.size());
-  for (const Texture& texture : scene.textures) textures_.push_back(uploadTexture(gl, texture));
+  for (const Texture& texture : scene.textures) textures_.push_back(uploadTexture(gl, texture.image, texture.mips));
   if (!scene.environment.empty()) {
-    Texture strip;  // one level: the faces are sampled at level 0 only
-    strip.image = scene.environment.faces;
-    environment_ = uploadTexture(gl, strip);
+    environment_ = uploadTexture(gl, scene.environment.faces, {});  // one level: the faces are sampled at level 0 only
   }
 }
 
