@@ -828,6 +828,25 @@ def environment():
     return g
 
 
+def materials():
+    g = Gltf("glTF's metallic-roughness materials, for --set shading=pbr (best with --set "
+             "environment.map=assets/environment/sky_cube.png): two rows of spheres, roughness 0 to 1 from left to "
+             "right; the back row gold metal (its reflection takes the gold, sharp at the left, a blur at the right), "
+             "the front row red plastic (red diffuse under a white reflection that fades and spreads with roughness).")
+    ball = uv_sphere(0.32, 48, 24)
+    for row, (name, colour, metallic, z) in enumerate((("gold", (1.0, 0.76, 0.33, 1), 1.0, -0.45),
+                                                      ("red plastic", (0.7, 0.05, 0.04, 1), 0.0, 0.45))):
+        for k in range(5):
+            roughness = k / 4
+            material = g.add_material("%s, roughness %.2f" % (name, roughness), colour, metallic, roughness)
+            label = "%s %d" % (name, k)
+            g.add_node(label, g.add_mesh(label, g.primitive(ball, material)), translation=(-1.6 + 0.8 * k, 0.34, z))
+    add_ground(g, 6, 4)
+    g.add_camera("camera", (0, 2.7, 3.0), (0, 0.15, -0.1))
+    g.add_light("sun", "directional", (-2, 5, 3), (0, 0, 0), intensity=2.5)
+    return g
+
+
 def height_map(size=128):
     """A greyscale height map: a round hill in the middle, a ring of ripples
     around it and a low border, h from 0 (black) to 1 (white)."""
@@ -1044,6 +1063,7 @@ SCENES = [
     (ASSETS_DIR, "texture.gltf", texture),
     (ASSETS_DIR, "environment.gltf", environment),
     (ASSETS_DIR, "displacement.gltf", displacement),
+    (ASSETS_DIR, "materials.gltf", materials),
 ]
 
 

@@ -2,11 +2,12 @@
 // linear RGB in a direction, for the reflection k_r·I_r and the background.
 // Mirror: renderer/cpu/environment_mapping.h. Needs shading_math.glsl and texture.glsl before it.
 
-layout(binding = 2) uniform usampler2D environmentMap;  // six square faces side by side, +x -x +y -y +z -z (GL_RGBA8UI)
+layout(binding = 2) uniform usampler2D environmentMap;  // six square faces side by side, +x -x +y -y +z -z (GL_RGBA8UI), and their mips
 
-// env(D): the face of D's largest component (cubeFace), OpenGL's (sc, tc, ma)
-// for it, LINEAR within the face, clamped to its edges.
-vec3 environmentAt(vec3 D) {
+// env(D) at mip level k: the face of D's largest component (cubeFace),
+// OpenGL's (sc, tc, ma) for it, LINEAR within the face, clamped to its edges.
+// The level's face size is level 0's halved (texture.glsl's sampleLevel says why).
+vec3 environmentAt(vec3 D, int level) {
   int face = cubeFace(D);
   float sc, tc, ma;
   if (face == 0) { sc = -D.z; tc = -D.y; ma = D.x; }
@@ -16,8 +17,8 @@ vec3 environmentAt(vec3 D) {
   else if (face == 4) { sc = D.x; tc = -D.y; ma = D.z; }
   else { sc = -D.x; tc = -D.y; ma = -D.z; }
   precise float s = (sc / ma + 1.0) * 0.5, t = (tc / ma + 1.0) * 0.5;
-  int n = textureSize(environmentMap, 0).y;
-  return sampleRegion(environmentMap, 0, ivec2(face * n, 0), ivec2(n, n), true, kWrapClampToEdge, kWrapClampToEdge, vec2(s, t)).rgb;
+  int n = max(1, textureSize(environmentMap, 0).y >> level);
+  return sampleRegion(environmentMap, level, ivec2(face * n, 0), ivec2(n, n), true, kWrapClampToEdge, kWrapClampToEdge, vec2(s, t)).rgb;
 }
 
 // The linear colour of the empty pixel whose centre is `fragCoord`: env(D)
@@ -27,5 +28,5 @@ vec3 backgroundAt(vec2 fragCoord, vec2 size) {
   precise float x = (2.0 * fragCoord.x) / size.x - 1.0;
   precise float y = (2.0 * fragCoord.y) / size.y - 1.0;
   precise vec3 D = (frame.backgroundForward.xyz + x * frame.backgroundRight.xyz) + y * frame.backgroundUp.xyz;
-  return environmentAt(D);
+  return environmentAt(D, 0);
 }

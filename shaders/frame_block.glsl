@@ -25,10 +25,11 @@ layout(std140, binding = 0) uniform Frame {
   vec4 shadowParams;        // x: b_slope; y: b_min; z: map size S
   vec4 background;          // rgb: linear background
   LightData lights[FACET_MAX_LIGHTS];
-  vec4 environment;         // x: k_r; y: 1 with a map; z: 1 when empty pixels show it
+  vec4 environment;         // x: k_r; y: 1 with a map; z: 1 when empty pixels show it; w: its last mip level
   vec4 backgroundForward;   // xyz: F, of D = (F + x·X) + y·Y at NDC (x, y)
   vec4 backgroundRight;     // xyz: X
   vec4 backgroundUp;        // xyz: Y
+  vec4 irradiance[9];       // rgb: the map's E(N)/π coefficients (shading=pbr)
 } frame;
 
 // The course material of the draw being shaded (uniforms set per draw).
@@ -39,4 +40,5 @@ struct CourseMaterial {
   float ks;
   float shininess; // n
   float metallic;  // m in O_s = (1 - m) + m·O_d
+  float roughness; // r (shading=pbr)
 };

@@ -19,6 +19,30 @@ float attenuation(vec3 c, float d) {
   return r;
 }
 
+// The unit vector L from P toward light i, f_att at P, and whether a spot's
+// cone reaches P (always for other kinds): the part of a light's term every
+// shading mode shares.
+struct TowardLight {
+  vec3 L;
+  float fAtt;
+  bool reaches;
+};
+TowardLight towardLight(int i, vec3 P) {
+  int kind = FACET_LIGHT_KIND(i);
+  precise vec3 L;
+  precise float fAtt = 1.0;
+  if (kind == kLightDirectional) {
+    L = -frame.lights[i].directionCosCutoff.xyz;
+  } else {
+    precise vec3 toLight = frame.lights[i].position.xyz - P;
+    precise float d = length3(toLight);
+    L = toLight / d;
+    fAtt = attenuation(frame.lights[i].attenuation.xyz, d);
+  }
+  bool reaches = kind != kLightSpot || dot3(-L, frame.lights[i].directionCosCutoff.xyz) > frame.lights[i].directionCosCutoff.w;
+  return TowardLight(L, fAtt, reaches);
+}
+
 // spec = max(R·V, 0)^n (Phong) or max(N·H, 0)^n (Blinn-Phong).
 float specularTerm(vec3 N, vec3 L, vec3 V, float shininess, int model) {
   if (model == 0) {
@@ -80,18 +104,10 @@ Illumination illuminate(CourseMaterial material, vec3 P, vec3 N, vec3 V) {
   precise vec3 diffuse = vec3(ambient, ambient, ambient);
   precise vec3 highlights = vec3(0.0, 0.0, 0.0);  // H
   for (int i = 0; i < FACET_LIGHT_COUNT; ++i) {
-    int kind = FACET_LIGHT_KIND(i);
-    precise vec3 L;
-    precise float fAtt = 1.0;
-    if (kind == kLightDirectional) {
-      L = -frame.lights[i].directionCosCutoff.xyz;
-    } else {
-      precise vec3 toLight = frame.lights[i].position.xyz - P;
-      precise float d = length3(toLight);
-      L = toLight / d;
-      fAtt = attenuation(frame.lights[i].attenuation.xyz, d);
-    }
-    if (kind == kLightSpot && !(dot3(-L, frame.lights[i].directionCosCutoff.xyz) > frame.lights[i].directionCosCutoff.w)) continue;
+    TowardLight toward = towardLight(i, P);
+    if (!toward.reaches) continue;
+    vec3 L = toward.L;
+    float fAtt = toward.fAtt;
     precise float NdotL = dot3(N, L);
     if (!(NdotL > 0.0)) continue;  // no diffuse and no specular where N·L ≤ 0
     vec3 Ip = frame.lights[i].intensity.rgb;
@@ -105,7 +121,7 @@ Illumination illuminate(CourseMaterial material, vec3 P, vec3 N, vec3 V) {
 #if defined(FACET_ENVIRONMENT) && FACET_ENVIRONMENT
   // Environment mapping: the course's k_r·I_r, I_r = env(R), R = 2(N·V)N - V, joins the highlights (PIPELINE.md, section 8).
   precise vec3 R = (2.0 * dot3(N, V)) * N - V;
-  highlights = highlights + frame.environment.x * environmentAt(R);
+  highlights = highlights + frame.environment.x * environmentAt(R, 0);
 #endif
   precise vec3 tinted = diffuse + material.metallic * highlights;
   precise vec3 specular = material.emissive + (1.0 - material.metallic) * highlights;

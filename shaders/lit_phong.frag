@@ -1,6 +1,7 @@
 #version 450 core
 // Lit pass, Phong shading: the illumination equation at every pixel, with the
-// interpolated normal renormalized (renderer/PIPELINE.md, section 7).
+// interpolated normal renormalized (renderer/PIPELINE.md, section 7); with
+// FACET_PBR, glTF's metallic-roughness BRDF in its place (shading=pbr).
 #include "frame_block.glsl"
 #include "transform.glsl"
 #include "shading_math.glsl"
@@ -10,6 +11,7 @@
 #include "draw_uniforms.glsl"
 #include "environment.glsl"
 #include "lighting.glsl"
+#include "physically_based.glsl"
 
 in vec3 worldPosition;
 in vec3 worldNormal;
@@ -26,5 +28,9 @@ void main() {
   if (!gl_FrontFacing) N = -N;  // two-sided lighting: a back face is drawn only where it is not culled
   vec4 O = baseColorAt(st, stDerivatives, vertexColor, modelPoint);
   if (!alphaKept(O.a)) discard;  // alpha mask (a no-op unless FACET_MASKED)
+#if FACET_PBR
+  color = encodeSrgb(shadePhysicallyBased(O.rgb, material.metallic, material.roughness, material.emissive, P, N, viewVector(P)));
+#else
   color = encodeSrgb(shade(illuminate(material, P, N, viewVector(P)), O.rgb));
+#endif
 }

@@ -64,19 +64,24 @@ float log2Of(float x) {
   return log2x;
 }
 
-float power(float x, float y) {
-  bool positive = x > 0.0;
-  precise float log2x = log2Of(positive ? x : 1.0);
-
-  precise float product = y * log2x;
-  bool inRange = product >= -126.0;  // false for NaN
-  precise float t = product > 127.0 ? 127.0 : (inRange ? product : 0.0);
-  precise float whole = floor(t);
-  precise float f = t - whole;
+// 2^t by the series above: t below -126 (or NaN) gives 0, above 127 is taken as 127.
+float exp2Of(float t) {
+  bool inRange = t >= -126.0;  // false for NaN
+  precise float clamped = t > 127.0 ? 127.0 : (inRange ? t : 0.0);
+  precise float whole = floor(clamped);
+  precise float f = clamped - whole;
   precise float exp2f = kExp2Series[9];
   for (int k = 8; k >= 0; --k) exp2f = kExp2Series[k] + f * exp2f;
   precise float scale = intBitsToFloat((int(whole) + 127) << 23);
-  precise float r = positive && inRange ? exp2f * scale : 0.0;
+  precise float r = inRange ? exp2f * scale : 0.0;
+  return r;
+}
+
+float power(float x, float y) {
+  bool positive = x > 0.0;
+  precise float log2x = log2Of(positive ? x : 1.0);
+  precise float product = y * log2x;
+  precise float r = positive ? exp2Of(product) : 0.0;
   return r;
 }
 

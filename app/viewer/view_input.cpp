@@ -52,6 +52,7 @@ ViewRequests ViewInput::update(ViewerState& state, const std::vector<KeyPress>& 
       case GLFW_KEY_1: settings.shading = ShadingMode::Flat; break;
       case GLFW_KEY_2: settings.shading = ShadingMode::Gouraud; break;
       case GLFW_KEY_3: settings.shading = ShadingMode::Phong; break;
+      case GLFW_KEY_4: settings.shading = ShadingMode::Pbr; break;
       case GLFW_KEY_C: settings.cullBackFaces = !settings.cullBackFaces; break;
       case GLFW_KEY_S:
         if (ctrl) requests.screenshot = true;

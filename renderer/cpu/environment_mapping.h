@@ -2,6 +2,8 @@
 // Environment mapping (renderer/PIPELINE.md, section 8): the cube map's
 // linear RGB in a direction, for the reflection k_r·I_r and the background.
 // Mirror: shaders/environment.glsl — same functions, same order.
+#include <algorithm>
+
 #include <glm/vec3.hpp>
 
 #include "cpu/texture_sampling.h"
@@ -11,9 +13,9 @@
 
 namespace facet::cpu {
 
-// env(D): the face of D's largest component (cubeFace), OpenGL's (sc, tc, ma)
-// for it, LINEAR within the face, clamped to its edges.
-inline glm::vec3 environmentAt(const EnvironmentMap& map, glm::vec3 D) {
+// env(D) at mip level k: the face of D's largest component (cubeFace),
+// OpenGL's (sc, tc, ma) for it, LINEAR within the face, clamped to its edges.
+inline glm::vec3 environmentAt(const EnvironmentMap& map, glm::vec3 D, int level) {
   const int face = cubeFace(D);
   float sc = 0, tc = 0, ma = 0;
   switch (face) {
@@ -25,8 +27,8 @@ inline glm::vec3 environmentAt(const EnvironmentMap& map, glm::vec3 D) {
     default: sc = -D.x, tc = -D.y, ma = -D.z; break;
   }
   const float s = (sc / ma + 1.0f) * 0.5f, t = (tc / ma + 1.0f) * 0.5f;
-  const int n = map.faceSize();
-  return glm::vec3(sampleRegion(map.faces, {face * n, 0}, {n, n}, true, Wrap::ClampToEdge, Wrap::ClampToEdge, {s, t}));
+  const int n = std::max(1, map.faceSize() >> level);
+  return glm::vec3(sampleRegion(map.level(level), {face * n, 0}, {n, n}, true, Wrap::ClampToEdge, Wrap::ClampToEdge, {s, t}));
 }
 
 // Whether empty pixels show the map rather than the background colour.
@@ -39,7 +41,7 @@ inline glm::vec3 backgroundAt(const FrameInputs& frame, int px, int py) {
   const FrameInputs::Environment& e = frame.environment;
   const float x = (2.0f * (static_cast<float>(px) + 0.5f)) / static_cast<float>(frame.width) - 1.0f;
   const float y = (2.0f * (static_cast<float>(py) + 0.5f)) / static_cast<float>(frame.height) - 1.0f;
-  return environmentAt(*e.map, (e.forward + x * e.right) + y * e.up);
+  return environmentAt(*e.map, (e.forward + x * e.right) + y * e.up, 0);
 }
 
 }  // namespace facet::cpu

@@ -52,6 +52,35 @@ F attenuation(glm::vec3 c, F d) {
   return minOne(F(1.0f) / ((F(c.x) + F(c.y) * d) + (F(c.z) * d) * d));
 }
 
+// The unit vector L from P toward a light, f_att at P, and whether a spot's
+// cone reaches P (every lane for other kinds): the part of a light's term
+// every shading mode shares.
+template <class F>
+struct TowardLight {
+  Vec3Of<F> L;
+  F fAtt;
+  MaskOf<F> reaches;
+};
+template <class F>
+MaskOf<F> allLanes() {
+  return F(0.0f) <= F(0.0f);
+}
+template <class F>
+TowardLight<F> towardLight(const FrameLight& fl, const Vec3Of<F>& P) {
+  const Light& light = fl.light;
+  TowardLight<F> t{Vec3Of<F>(), F(1.0f), allLanes<F>()};
+  if (light.kind == LightKind::Directional) {
+    t.L = splat<F>(-light.direction);
+  } else {
+    const Vec3Of<F> toLight = splat<F>(light.position) - P;
+    const F d = length3(toLight);
+    t.L = toLight / d;
+    t.fAtt = attenuation(light.attenuation, d);
+  }
+  if (light.kind == LightKind::Spot) t.reaches = dot3(-t.L, splat<F>(light.direction)) > F(fl.cosCutoff);
+  return t;
+}
+
 // spec = max(R·V, 0)^n with R = 2(L·N)N - L (Phong), or max(N·H, 0)^n with
 // H = normalize(L + V) (Blinn-Phong). The caller drops it where N·L ≤ 0.
 template <class F>
@@ -123,7 +152,7 @@ inline Float4 shadowFactorLanes(const ShadowMaps& maps, const FrameLight& light,
 #endif
 
 // env(R) for one lane or four (the map is read one pixel at a time, as shadow maps are).
-inline glm::vec3 environmentLanes(const EnvironmentMap& map, glm::vec3 R) { return environmentAt(map, R); }
+inline glm::vec3 environmentLanes(const EnvironmentMap& map, glm::vec3 R) { return environmentAt(map, R, 0); }
 #if defined(__SSE2__)
 inline Vec3x4 environmentLanes(const EnvironmentMap& map, const Vec3x4& R) {
   alignas(16) float r[3][4], out[3][4];
@@ -131,17 +160,12 @@ inline Vec3x4 environmentLanes(const EnvironmentMap& map, const Vec3x4& R) {
   _mm_store_ps(r[1], R.y.v);
   _mm_store_ps(r[2], R.z.v);
   for (int k = 0; k < 4; ++k) {
-    const glm::vec3 c = environmentAt(map, {r[0][k], r[1][k], r[2][k]});
+    const glm::vec3 c = environmentAt(map, {r[0][k], r[1][k], r[2][k]}, 0);
     out[0][k] = c.x, out[1][k] = c.y, out[2][k] = c.z;
   }
   return Vec3x4(Float4(_mm_load_ps(out[0])), Float4(_mm_load_ps(out[1])), Float4(_mm_load_ps(out[2])));
 }
 #endif
-
-template <class F>
-MaskOf<F> allLanes() {
-  return F(0.0f) <= F(0.0f);
-}
 
 // Illumination at world point P with unit normal N and unit view vector V.
 template <class F>
@@ -153,21 +177,11 @@ IlluminationOf<F> illuminate(const FrameInputs& frame, const ShadowMaps& maps, c
   I.diffuse = Vec3(ambient, ambient, ambient);
   Vec3 highlights(F(0.0f), F(0.0f), F(0.0f));  // H
   for (const FrameLight& fl : frame.lights) {
-    const Light& light = fl.light;
-    Vec3 L;
-    F fAtt = F(1.0f);
-    if (light.kind == LightKind::Directional) {
-      L = splat<F>(-light.direction);
-    } else {
-      const Vec3 toLight = splat<F>(light.position) - P;
-      const F d = length3(toLight);
-      L = toLight / d;
-      fAtt = attenuation(light.attenuation, d);
-    }
-    MaskOf<F> active = allLanes<F>();
-    if (light.kind == LightKind::Spot) active = dot3(-L, splat<F>(light.direction)) > F(fl.cosCutoff);
+    const TowardLight<F> toward = towardLight<F>(fl, P);
+    const Vec3& L = toward.L;
+    const F fAtt = toward.fAtt;
     const F NdotL = dot3(N, L);
-    active = both(active, NdotL > F(0.0f));  // no diffuse and no specular where N·L ≤ 0
+    const MaskOf<F> active = both(toward.reaches, NdotL > F(0.0f));  // no diffuse and no specular where N·L ≤ 0
     if (!anyLane(active)) continue;
     const Vec3 Ip = splat<F>(fl.intensity);
     const F S = shadowFactorLanes(maps, fl, frame.shadows, P, N, L, active);

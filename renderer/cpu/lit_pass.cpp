@@ -1,4 +1,4 @@
-// Pass 2: the camera's z-buffer pass with flat, Gouraud or Phong shading.
+// Pass 2: the camera's z-buffer pass with flat, Gouraud, Phong or pbr shading.
 // The varyings of each mode (packed after x, y, z, 1/w in
 // PassVertices::window) are varyings.h's.
 #include <algorithm>
@@ -14,6 +14,7 @@
 #include "cpu/lighting.h"
 #include "cpu/passes.h"
 #include "cpu/phong_batch.h"
+#include "cpu/physically_based.h"
 #include "cpu/procedural.h"
 #include "cpu/srgb_table.h"
 #include "cpu/texture_sampling.h"
@@ -98,7 +99,13 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         baseColor *= glm::vec3(
             sampleBaseColorTexture(*texture, *material, {v[layout.uv], v[layout.uv + 1]}, in->quadDerivatives(layout.uv, px, py)));
       glm::vec3 color;
-      if constexpr (kMode == ShadingMode::Phong) {
+      if constexpr (kMode == ShadingMode::Pbr) {
+        const glm::vec3 P{v[0], v[1], v[2]};
+        const glm::vec3 unit = normalize3(glm::vec3{v[3], v[4], v[5]});
+        const glm::vec3 N = back ? -unit : unit;  // two-sided lighting
+        const PbrSurface surface{baseColor, material->metallic, material->roughness, material->emissive};
+        color = shadePhysicallyBased(frame, maps, surface, P, N, viewVector<float>(frame, P));
+      } else if constexpr (kMode == ShadingMode::Phong) {
         // N is normalized (and negated on a back face, two-sided lighting) in the batch
         batch.add(static_cast<std::size_t>(py) * static_cast<std::size_t>(image.width()) + static_cast<std::size_t>(px), {v[0], v[1], v[2]},
                   {v[3], v[4], v[5]}, back, baseColor, *material);
@@ -145,7 +152,7 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
       varyings[layout.uv + 1] = uv.y;
       put(varyings, layout.color, mesh.colors.empty() ? glm::vec4(1.0f) : mesh.colors[local]);
       if (packed == layout.count) put(varyings, layout.model, mesh.positions[local]);
-      if (frame.shading == ShadingMode::Phong) {
+      if (interpolatesNormals(frame.shading)) {
         put(varyings, 0, P);
         put(varyings, 3, normalize3(transformDirection(instance.normalMatrix, mesh.normals[local])));
       } else if (frame.shading == ShadingMode::Gouraud) {
@@ -238,6 +245,7 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
       return;
     }
     switch (frame.shading) {
+      case ShadingMode::Pbr: shadeTile<ShadingMode::Pbr>(scene, frame, maps, scratch, r.x0, r.y0, r.x1, r.y1, image); break;
       case ShadingMode::Phong: shadeTile<ShadingMode::Phong>(scene, frame, maps, scratch, r.x0, r.y0, r.x1, r.y1, image); break;
       case ShadingMode::Gouraud: shadeTile<ShadingMode::Gouraud>(scene, frame, maps, scratch, r.x0, r.y0, r.x1, r.y1, image); break;
       default: shadeTile<ShadingMode::Flat>(scene, frame, maps, scratch, r.x0, r.y0, r.x1, r.y1, image); break;

@@ -78,21 +78,25 @@ F log2Of(F x) {
   return toFloat(e) + s * series;
 }
 
+// 2^t by the series above: t below -126 (or NaN) gives 0, above 127 is taken as 127.
 template <class F>
-F power(F x, F y) {
+F exp2Of(F t) {
   using I = IntOf<F>;
-  const auto positive = x > F(0.0f);
-  const F log2x = log2Of(select(positive, x, F(1.0f)));
-
-  const F product = y * log2x;
-  const auto inRange = product >= F(-126.0f);  // false for NaN
-  const F t = select(product > F(127.0f), F(127.0f), select(inRange, product, F(0.0f)));
-  const F whole = floorOf(t);
-  const F f = t - whole;
+  const auto inRange = t >= F(-126.0f);  // false for NaN
+  const F clamped = select(t > F(127.0f), F(127.0f), select(inRange, t, F(0.0f)));
+  const F whole = floorOf(clamped);
+  const F f = clamped - whole;
   F exp2f = F(kExp2Series[9]);
   for (int k = 8; k >= 0; --k) exp2f = F(kExp2Series[k]) + f * exp2f;
   const F scale = floatOfBits((truncateToInt(whole) + I(127)) << 23);
-  return select(both(positive, inRange), exp2f * scale, F(0.0f));
+  return select(inRange, exp2f * scale, F(0.0f));
+}
+
+template <class F>
+F power(F x, F y) {
+  const auto positive = x > F(0.0f);
+  const F log2x = log2Of(select(positive, x, F(1.0f)));
+  return select(positive, exp2Of(y * log2x), F(0.0f));
 }
 
 }  // namespace facet::cpu

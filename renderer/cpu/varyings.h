@@ -2,7 +2,7 @@
 // What the lit pass interpolates per shading mode, after a window vertex's
 // x, y, z, 1/w: the fast renderer's packed vertices and the reference's
 // clip vertices lay them out alike.
-//   Phong:   world position 0-2, normal 3-5, texture coordinates 6-7, vertex colour 8-11,
+//   Phong and pbr: world position 0-2, normal 3-5, texture coordinates 6-7, vertex colour 8-11,
 //            model position 12-14
 //   Gouraud: front diffuse 0-2, front specular 3-5, back diffuse 6-8,
 //            back specular 9-11, texture coordinates 12-13, vertex colour 14-17,
@@ -30,7 +30,8 @@ struct VaryingLayout {
 
 constexpr VaryingLayout varyingLayout(ShadingMode mode) {
   switch (mode) {
-    case ShadingMode::Phong: return {15, 6, 8, 12};
+    case ShadingMode::Phong:
+    case ShadingMode::Pbr: return {15, 6, 8, 12};
     case ShadingMode::Gouraud: return {21, 12, 14, 18};
     default: return {9, 0, 2, 6};
   }

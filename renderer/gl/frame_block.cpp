@@ -15,7 +15,7 @@ static_assert(static_cast<int>(LightKind::Point) == 0 && static_cast<int>(LightK
               static_cast<int>(LightKind::Spot) == 2);
 static_assert(static_cast<int>(SpecularModel::Phong) == 0 && static_cast<int>(SpecularModel::BlinnPhong) == 1);
 static_assert(static_cast<int>(ShadingMode::Flat) == 0 && static_cast<int>(ShadingMode::Gouraud) == 1 &&
-              static_cast<int>(ShadingMode::Phong) == 2);
+              static_cast<int>(ShadingMode::Phong) == 2 && static_cast<int>(ShadingMode::Pbr) == 3);
 
 FrameBlock makeFrameBlock(const FrameInputs& frame) {
   FrameBlock block{};
@@ -23,7 +23,9 @@ FrameBlock makeFrameBlock(const FrameInputs& frame) {
   block.towardEye = glm::vec4(frame.towardEye, 0.0f);
   block.ambient = glm::vec4(frame.ambient, frame.proceduralScale, 0.0f, 0.0f);
   const FrameInputs::Environment& e = frame.environment;
-  block.environment = glm::vec4(e.reflectivity, e.map ? 1.0f : 0.0f, e.map && e.background ? 1.0f : 0.0f, 0.0f);
+  block.environment = glm::vec4(e.reflectivity, e.map ? 1.0f : 0.0f, e.map && e.background ? 1.0f : 0.0f,
+                                e.map ? static_cast<float>(e.map->levelCount() - 1) : 0.0f);
+  for (std::size_t k = 0; k < block.irradiance.size(); ++k) block.irradiance[k] = glm::vec4(e.map ? e.map->irradiance[k] : glm::vec3(0.0f), 0.0f);
   block.backgroundForward = glm::vec4(e.forward, 0.0f);
   block.backgroundRight = glm::vec4(e.right, 0.0f);
   block.backgroundUp = glm::vec4(e.up, 0.0f);
@@ -50,6 +52,13 @@ SrgbBlock makeSrgbBlock() {
   std::copy(tables.thresholds.begin(), tables.thresholds.end(), block.thresholds.begin());
   block.decoded = tables.decoded;
   std::copy(tables.buckets.begin(), tables.buckets.end(), block.buckets.begin());  // little-endian: byte b is byte b % 4 of uint b / 4
+  return block;
+}
+
+SplitSumBlock makeSplitSumBlock() {
+  const SplitSumTable& table = splitSumTable();
+  SplitSumBlock block{};
+  for (std::size_t k = 0; k < block.entries.size(); ++k) block.entries[k] = glm::vec4(table.ab[2 * k], table.ab[2 * k + 1]);
   return block;
 }
 

@@ -12,6 +12,7 @@
 
 #include "image/srgb.h"
 #include "pipeline/frame_inputs.h"
+#include "pipeline/split_sum.h"
 
 namespace facet::gl {
 
@@ -37,8 +38,9 @@ struct FrameBlock {
   glm::vec4 shadowParams;    // x: b_slope; y: b_min; z: map size S
   glm::vec4 background;      // rgb: linear background
   std::array<LightBlock, facet::kMaxLights> lights;
-  glm::vec4 environment;     // x: k_r; y: 1 with a map; z: 1 when empty pixels show it
+  glm::vec4 environment;     // x: k_r; y: 1 with a map; z: 1 when empty pixels show it; w: its last mip level
   glm::vec4 backgroundForward, backgroundRight, backgroundUp;  // xyz: D = (F + x·X) + y·Y
+  std::array<glm::vec4, 9> irradiance;  // rgb: the map's E(N)/π coefficients (EnvironmentMap::irradiance)
 };
 
 // SrgbTables in srgb.glsl: image/srgb.h's tables, four floats (or bytes
@@ -52,6 +54,12 @@ struct SrgbBlock {
 static_assert(offsetof(SrgbBlock, decoded) == 65 * 16);
 static_assert(offsetof(SrgbBlock, buckets) == (65 + 64) * 16);
 static_assert(sizeof(SrgbBlock) == (65 + 64 + 2033) * 16);
+
+// SplitSumTable in physically_based.glsl: pipeline/split_sum.h's (A, B) entries, two to a vec4.
+struct SplitSumBlock {
+  std::array<glm::vec4, kSplitSumSize * kSplitSumSize / 2> entries;
+};
+static_assert(sizeof(SplitSumBlock) == kSplitSumSize * kSplitSumSize * 8);
 
 // std140: a struct's members at multiples of 16, the struct padded to 16, arrays of it at that stride.
 static_assert(offsetof(LightBlock, position) == 0);
@@ -70,7 +78,8 @@ static_assert(offsetof(FrameBlock, lights) == 80);
 static_assert(kSrgbBuckets <= 2033 * 16);
 static_assert(offsetof(FrameBlock, environment) == 80 + facet::kMaxLights * sizeof(LightBlock));
 static_assert(offsetof(FrameBlock, backgroundUp) == offsetof(FrameBlock, environment) + 48);
-static_assert(sizeof(FrameBlock) == 80 + facet::kMaxLights * sizeof(LightBlock) + 64);
+static_assert(offsetof(FrameBlock, irradiance) == offsetof(FrameBlock, environment) + 64);
+static_assert(sizeof(FrameBlock) == 80 + facet::kMaxLights * sizeof(LightBlock) + 64 + 9 * 16);
 
 // The block's values for one frame, from FrameInputs only (checkFrame has
 // held its light count to kMaxLights).
@@ -78,5 +87,8 @@ FrameBlock makeFrameBlock(const FrameInputs& frame);
 
 // The sRGB tables, once per renderer.
 SrgbBlock makeSrgbBlock();
+
+// The split-sum table, once per renderer that draws shading=pbr.
+SplitSumBlock makeSplitSumBlock();
 
 }  // namespace facet::gl

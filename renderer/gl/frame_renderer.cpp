@@ -17,6 +17,7 @@ namespace {
 // Bindings the shaders declare (frame_block.glsl, draw_uniforms.glsl, lit_flat.vert).
 constexpr GLuint kFrameBlockBinding = 0;      // uniform block Frame
 constexpr GLuint kSrgbBlockBinding = 1;       // uniform block SrgbTables (srgb.glsl)
+constexpr GLuint kSplitSumBlockBinding = 2;   // uniform block SplitSumTable (physically_based.glsl)
 constexpr GLuint kShadowMapsUnit = 0;         // sampler2DArray shadowMaps
 constexpr GLuint kBaseColorTextureUnit = 1;   // usampler2D baseColorTexture
 constexpr GLuint kEnvironmentUnit = 2;        // usampler2D environmentMap (environment.glsl)
@@ -31,6 +32,7 @@ constexpr std::array<std::string_view, 2> kLitStages[] = {
     {"lit_flat.vert", "lit_flat.frag"},
     {"lit_gouraud.vert", "lit_gouraud.frag"},
     {"lit_phong.vert", "lit_phong.frag"},
+    {"lit_phong.vert", "lit_phong.frag"},  // pbr: Phong's interpolation, FACET_PBR's BRDF
 };
 static_assert(std::size(kLitStages) == static_cast<std::size_t>(ShadingMode::Count));
 
@@ -76,6 +78,12 @@ std::vector<PassTiming> GlFrameRenderer::drawFrame(const FrameInputs& frame) {
   gl_.glNamedBufferSubData(frameUniforms_.id(), 0, sizeof block, &block);
   gl_.glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniforms_.id());
   gl_.glBindBufferBase(GL_UNIFORM_BUFFER, kSrgbBlockBinding, srgbUniforms_.id());
+  if (frame.shading == ShadingMode::Pbr && !splitSumUniforms_) {
+    splitSumUniforms_ = createBuffer(gl_);
+    const SplitSumBlock table = makeSplitSumBlock();
+    gl_.glNamedBufferStorage(splitSumUniforms_.id(), sizeof table, &table, 0);
+  }
+  if (splitSumUniforms_) gl_.glBindBufferBase(GL_UNIFORM_BUFFER, kSplitSumBlockBinding, splitSumUniforms_.id());
   // The contract's conventions, set every frame because a viewer's UI shares the context.
   gl_.glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // clip z in [0, w], window origin at the lower left
   gl_.glFrontFace(GL_CCW);                           // counter-clockwise in window coordinates is front
@@ -201,6 +209,7 @@ bool GlFrameRenderer::preparePrograms(const FrameInputs& frame) {
                                          .ks = at("material.ks"),
                                          .shininess = at("material.shininess"),
                                          .metallic = at("material.metallic"),
+                                         .roughness = at("material.roughness"),
                                          .baseColorFactor = at("baseColorFactor"),
                                          .alpha = alphaUniforms(program),
                                          .program = std::move(program)});
@@ -311,6 +320,7 @@ void GlFrameRenderer::drawInstance(const LitProgram& lit, const FrameInputs& fra
   gl_.glProgramUniform1f(program, lit.ks, material.ks);
   gl_.glProgramUniform1f(program, lit.shininess, material.shininess);
   gl_.glProgramUniform1f(program, lit.metallic, material.metallic);
+  gl_.glProgramUniform1f(program, lit.roughness, material.roughness);
   gl_.glProgramUniform3fv(program, lit.baseColorFactor, 1, glm::value_ptr(material.baseColor));
   setBaseColorUniforms(program, lit.alpha, material, textured);
 

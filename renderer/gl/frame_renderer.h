@@ -61,7 +61,7 @@ class GlFrameRenderer {
   };
   struct LitProgram {
     GLint clipFromModel, worldFromModel, normalMatrix;
-    GLint emissive, ka, kd, ks, shininess, metallic;
+    GLint emissive, ka, kd, ks, shininess, metallic, roughness;
     GLint baseColorFactor;
     AlphaUniforms alpha;
     ShaderProgram program;
@@ -110,6 +110,7 @@ class GlFrameRenderer {
   std::map<int, TriangleIdProgram> triangleIdPrograms_;  // by DrawVariant::index(); only masked draws differ
   GlObject frameUniforms_;     // the Frame block (FrameBlock), binding 0
   GlObject srgbUniforms_;      // the SrgbTables block (SrgbBlock), binding 1, written once
+  GlObject splitSumUniforms_;  // the SplitSumTable block (SplitSumBlock), binding 2, written at the first pbr frame
   GlObject emptyVertexArray_;  // for draws that read no attributes (background, flat shading)
   SceneBuffers scene_;
   ShadowMapArray shadowMaps_;

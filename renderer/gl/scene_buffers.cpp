@@ -74,7 +74,8 @@ SceneBuffers::SceneBuffers(const GlFunctions& gl, const Scene& scene) {
   textures_.reserve(scene.textures.size());
   for (const Texture& texture : scene.textures) textures_.push_back(uploadTexture(gl, texture.image, texture.mips));
   if (!scene.environment.empty()) {
-    environment_ = uploadTexture(gl, scene.environment.faces, {});  // one level: the faces are sampled at level 0 only
+    // Level k of the strip is 6·max(1, N >> k) wide, within the 6N >> k that storage allots it.
+    environment_ = uploadTexture(gl, scene.environment.faces, scene.environment.mips);
   }
 }
 

@@ -28,6 +28,7 @@ std::string drawVariantDefines(DrawVariant variant) {
 std::string litShaderDefines(const FrameInputs& frame, DrawVariant variant) {
   std::string d = drawVariantDefines(variant);
  d += "#define FACET_ENVIRONMENT " + std::string(frame.environment.map ? "1" : "0") + "\n";
+  d += "#define FACET_PBR " + std::string(frame.shading == ShadingMode::Pbr ? "1" : "0") + "\n";
   d += "#define FACET_PROCEDURAL " + std::to_string(static_cast<int>(frame.procedural)) + "\n";
   d += "#define FACET_SPECULAR_MODEL " + std::to_string(static_cast<int>(frame.specular)) + "\n";
   d += "#define FACET_PCF_RADIUS " + std::to_string(frame.shadows.pcfRadius) + "\n";

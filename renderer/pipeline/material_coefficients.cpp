@@ -29,6 +29,7 @@ CourseMaterial courseMaterial(const Material& material, const MaterialOverrides&
   out.ks = overrides.ks.value_or(std::min(1.0f, f0 * (n + 8.0f) / 8.0f));
   out.shininess = overrides.shininess.value_or(n);
   out.metallic = m;
+  out.roughness = r;
   out.doubleSided = material.doubleSided;
   return out;
 }

@@ -20,6 +20,7 @@ struct CourseMaterial {
   float ka = 0, kd = 0, ks = 0;
   float shininess = 1;        // n
   float metallic = 0;         // m in O_s = (1 - m) + m·O_d, in [0, 1]
+  float roughness = 1;        // r, in [0, 1]: shading=pbr's (PIPELINE.md, section 7)
   bool doubleSided = false;
   // Alpha mask (PIPELINE.md, section 8): α = factor·COLOR_0.a·texel.a, each where present;
   // with `masked`, a fragment is kept when α ≥ alphaCutoff (NaN discards).

@@ -9,6 +9,10 @@
 
 namespace facet {
 
+// The cube map of a 6N × N strip read from `path`, with its mips and
+// irradiance (PIPELINE.md, section 8); another shape is refused naming `path`.
+EnvironmentMap environmentMapOf(Image strip, const std::string& path);
+
 // The cube map in `path`: refused with a line naming the file when it does
 // not decode or is not 6N × N.
 EnvironmentMap loadEnvironmentMap(const std::string& path);

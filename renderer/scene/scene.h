@@ -1,5 +1,6 @@
 #pragma once
 // The scene in memory: what every loader produces and both backends draw.
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -89,8 +90,14 @@ struct Texture {
 struct EnvironmentMap {
   std::string path;  // the file it was read from, as the settings name it
   Image faces;       // 6N × N, sRGB-encoded, bottom row first
+  std::vector<Image> mips;  // levels 1 .. of the strip, each face's own chain down to 1×1 (shading=pbr)
+  // E(N)/π, the irradiance over π, as nine RGB coefficients of a quadratic in N (PIPELINE.md, section 8):
+  // k0 + k1·x + k2·y + k3·z + k4·xy + k5·yz + k6·xz + k7·(x² - y²) + k8·z².
+  std::array<glm::vec3, 9> irradiance{};
   bool empty() const { return faces.empty(); }
   int faceSize() const { return faces.height(); }
+  int levelCount() const { return 1 + static_cast<int>(mips.size()); }
+  const Image& level(int k) const { return k == 0 ? faces : mips[static_cast<std::size_t>(k - 1)]; }
 };
 
 enum class ProjectionKind { Perspective, Parallel, Count };

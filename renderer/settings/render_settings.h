@@ -43,8 +43,10 @@ inline constexpr std::uint64_t kFrameMemoryBudget = std::uint64_t{1} << 30;   //
 // drops what it placed there, with a warning.
 inline constexpr float kMaxWorldCoordinate = 1e18f;
 
-enum class ShadingMode { Flat, Gouraud, Phong, Count };
-inline constexpr std::array<std::string_view, static_cast<int>(ShadingMode::Count)> kShadingModeNames = {"flat", "gouraud", "phong"};
+enum class ShadingMode { Flat, Gouraud, Phong, Pbr, Count };
+// Phong and pbr interpolate the world position and normal and light each pixel.
+constexpr bool interpolatesNormals(ShadingMode mode) { return mode == ShadingMode::Phong || mode == ShadingMode::Pbr; }
+inline constexpr std::array<std::string_view, static_cast<int>(ShadingMode::Count)> kShadingModeNames = {"flat", "gouraud", "phong", "pbr"};
 
 enum class SpecularModel { Phong, BlinnPhong, Count };
 inline constexpr std::array<std::string_view, static_cast<int>(SpecularModel::Count)> kSpecularModelNames = {"phong", "blinn-phong"};

@@ -54,7 +54,7 @@ void visitSettings(Visitor& v, RenderSettings& s) {
   v.choice({"lightSource", "auto: the scene's lights or one fitted to the scene; manual: the list in lights"}, s.lightSource, kSourceNames);
   v.lights("lights", s.lights);
   v.field({"ambient", "I_a, ambient intensity", 0, 1}, s.ambient);
-  v.choice({"shading", "flat, gouraud or phong"}, s.shading, kShadingModeNames);
+  v.choice({"shading", "flat, gouraud, phong or pbr (glTF's metallic-roughness BRDF)"}, s.shading, kShadingModeNames);
   v.choice({"specular", "phong (R.V) or blinn-phong (N.H)"}, s.specular, kSpecularModelNames);
   v.field({"cullBackFaces", "drop triangles with signed window area <= 0; off: two-sided lighting"}, s.cullBackFaces);
   v.group("material", [&] {

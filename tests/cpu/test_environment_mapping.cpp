@@ -48,15 +48,15 @@ TEST_CASE("env(D) reads the face of D's largest component at OpenGL's cube-map c
         CAPTURE(face);
         CAPTURE(column);
         CAPTURE(row);
-        const glm::vec3 c = cpu::environmentAt(map, towards(face, column, row));
+        const glm::vec3 c = cpu::environmentAt(map, towards(face, column, row), 0);
         CHECK(c.r == decoded[face * 40 + column * 8]);
         CHECK(c.g == decoded[row * 60]);
       }
   // Ties go to x, then y: (1, 1, 0) reads +x, (0, 1, 1) reads +y.
-  CHECK(cpu::environmentAt(map, {1, 1, 0}).r >= decoded[0]);
-  CHECK(cpu::environmentAt(map, {1, 1, 0}).r < decoded[40]);
-  CHECK(cpu::environmentAt(map, {0, 1, 1}).r >= decoded[80]);
-  CHECK(cpu::environmentAt(map, {0, 1, 1}).r < decoded[120]);
+  CHECK(cpu::environmentAt(map, {1, 1, 0}, 0).r >= decoded[0]);
+  CHECK(cpu::environmentAt(map, {1, 1, 0}, 0).r < decoded[40]);
+  CHECK(cpu::environmentAt(map, {0, 1, 1}, 0).r >= decoded[80]);
+  CHECK(cpu::environmentAt(map, {0, 1, 1}, 0).r < decoded[120]);
 }
 
 TEST_CASE("the reflection adds k_r env(R) to the highlights, and the background is env(F) at the image centre") {
@@ -69,14 +69,14 @@ TEST_CASE("the reflection adds k_r env(R) to the highlights, and the background 
   s.lightSource = Source::Manual;  // no lights: the illumination is ambient plus the reflection
   const FrameInputs frame = buildFrameInputs(scene, s);
   REQUIRE(frame.environment.map != nullptr);
-  CHECK(cpu::backgroundAt(frame, 32, 24) == cpu::environmentAt(scene.environment, frame.environment.forward));
+  CHECK(cpu::backgroundAt(frame, 32, 24) == cpu::environmentAt(scene.environment, frame.environment.forward, 0));
   CHECK(glm::length(frame.environment.forward) == doctest::Approx(1.0f));
   const cpu::ShadowMaps maps;
   cpu::LaneMaterial<float> dielectric{};
   const glm::vec3 N{0, 1, 0}, V = glm::normalize(glm::vec3(1, 1, 0));  // R = (-1, 1, 0)/√2 ... reflected about N
   const glm::vec3 R = (2.0f * glm::dot(N, V)) * N - V;
   const cpu::Illumination I = cpu::illuminate(frame, maps, dielectric, glm::vec3(0.0f), N, V);
-  const glm::vec3 expected = 0.5f * cpu::environmentAt(scene.environment, R);
+  const glm::vec3 expected = 0.5f * cpu::environmentAt(scene.environment, R, 0);
   CHECK(I.specular.r == doctest::Approx(expected.r));
   CHECK(I.specular.g == doctest::Approx(expected.g));
   cpu::LaneMaterial<float> metal{};

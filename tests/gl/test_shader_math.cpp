@@ -14,6 +14,7 @@
 #include <doctest/doctest.h>
 
 #include "cpu/lighting.h"
+#include "cpu/physically_based.h"
 #include "cpu/shading_math.h"
 #include "gl/frame_block.h"
 #include "gl/gl_object.h"
@@ -44,6 +45,9 @@ std::vector<glm::vec4> evaluate(const std::string& expression, const std::vector
   const gl::SrgbBlock srgb = gl::makeSrgbBlock();
   const gl::GlObject tables = gl::createBuffer(gl);
   gl.glNamedBufferStorage(tables.id(), sizeof srgb, &srgb, 0);
+  const gl::SplitSumBlock splitSum = gl::makeSplitSumBlock();
+  const gl::GlObject splitSumTable = gl::createBuffer(gl);
+  gl.glNamedBufferStorage(splitSumTable.id(), sizeof splitSum, &splitSum, 0);
   const gl::GlObject color = gl::createRenderbuffer(gl);
   gl.glNamedRenderbufferStorage(color.id(), GL_RGBA32F, kWidth, 1);
   const gl::GlObject framebuffer = gl::createFramebuffer(gl);
@@ -51,8 +55,9 @@ std::vector<glm::vec4> evaluate(const std::string& expression, const std::vector
   const gl::GlObject vertexArray = gl::createVertexArray(gl);
 
   const std::string probe = "#version 450 core\n#include \"frame_block.glsl\"\n#include \"transform.glsl\"\n#include \"shading_math.glsl\"\n"
-                            "#include \"srgb.glsl\"\n#include \"texture.glsl\"\n#include \"draw_uniforms.glsl\"\n#include \"lighting.glsl\"\n"
-                            "layout(binding = 2) uniform sampler2D inputA;\nlayout(binding = 3) uniform sampler2D inputB;\nout vec4 value;\n"
+                            "#include \"srgb.glsl\"\n#include \"texture.glsl\"\n#include \"procedural.glsl\"\n#include \"draw_uniforms.glsl\"\n"
+                            "#include \"environment.glsl\"\n#include \"lighting.glsl\"\n#include \"physically_based.glsl\"\n"
+                            "layout(binding = 3) uniform sampler2D inputA;\nlayout(binding = 4) uniform sampler2D inputB;\nout vec4 value;\n"
                             "void main() {\n  vec4 a = texelFetch(inputA, ivec2(gl_FragCoord.xy), 0), b = texelFetch(inputB, ivec2(gl_FragCoord.xy), 0);\n"
                             "  value = " + expression + ";\n}\n";
   const FrameInputs frame = buildFrameInputs(makeDefaultScene(), RenderSettings{});
@@ -62,9 +67,10 @@ std::vector<glm::vec4> evaluate(const std::string& expression, const std::vector
   gl.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
   gl.glViewport(0, 0, kWidth, 1);
   gl.glUseProgram(program.id());
-  gl.glBindTextureUnit(2, textureA.id());
-  gl.glBindTextureUnit(3, textureB.id());
+  gl.glBindTextureUnit(3, textureA.id());
+  gl.glBindTextureUnit(4, textureB.id());
   gl.glBindBufferBase(GL_UNIFORM_BUFFER, 1, tables.id());
+  gl.glBindBufferBase(GL_UNIFORM_BUFFER, 2, splitSumTable.id());
   gl.glBindVertexArray(vertexArray.id());
   gl.glDrawArrays(GL_TRIANGLES, 0, 3);
   std::vector<glm::vec4> out(kWidth);
@@ -152,5 +158,21 @@ TEST_CASE("shader arithmetic: attenuation and the selects of max, min and their 
   CHECK(mismatches("vec4(maxZero(a.x), minOne(a.y), attenuation(b.xyz, abs(a.z) * 10.0), maxZero(a.w))", x, c,
                    [](const glm::vec4& v, const glm::vec4& k) {
                      return glm::vec4(cpu::maxZero(v.x), cpu::minOne(v.y), cpu::attenuation(glm::vec3(k), std::fabs(v.z) * 10.0f), cpu::maxZero(v.w));
+                   }) == 0);
+}
+
+TEST_CASE("shader arithmetic: exp2Of and shading=pbr's Fresnel, GGX, Smith visibility and split-sum table give the CPU's bits") {
+  std::mt19937 rng(6);
+  std::vector<glm::vec4> x = random(rng, 0.0f, 1.0f), y = random(rng, 0.0f, 1.0f);
+  // The ends each function decides: 0 and 1 cosines, a mirror's α² floor, exponents beyond the series' range.
+  const glm::vec4 ends[] = {{0, 0, 0, 0}, {1, 1, 1, 1}, {1, 0, 1e-6f, 0}, {0, 1, 1e-6f, 1}, {0.5f, 0.5f, 1.0f, 0.5f}};
+  for (std::size_t i = 0; i < 5; ++i) x[i] = ends[i], y[i] = ends[4 - i];
+  CHECK(mismatches("vec4(schlickFresnel(a.xyz, b.x), ggxDistribution(a.w, b.y))", x, y, [](const glm::vec4& a, const glm::vec4& b) {
+          return glm::vec4(cpu::schlickFresnel(glm::vec3(a), b.x), ggxDistribution(a.w, b.y));
+        }) == 0);
+  CHECK(mismatches("vec4(smithVisibility(a.x, a.y, b.z), environmentBrdf(a.z, b.w), exp2Of(-200.0 * a.w + 60.0))", x, y,
+                   [](const glm::vec4& a, const glm::vec4& b) {
+                     const glm::vec2 ab = cpu::environmentBrdf(a.z, b.w);
+                     return glm::vec4(smithVisibility(a.x, a.y, b.z), ab.x, ab.y, cpu::exp2Of(-200.0f * a.w + 60.0f));
                    }) == 0);
 }

@@ -25,6 +25,7 @@
 #include "cpu/procedural.h"
 #include "cpu/interpolation.h"
 #include "cpu/lighting.h"
+#include "cpu/physically_based.h"
 #include "cpu/rasterize.h"
 #include "cpu/shadow_maps.h"
 #include "cpu/texture_sampling.h"
@@ -173,7 +174,7 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
         for (int c = 0; c < 4; ++c) out[color + c] = rgba[c];
         if (count == layout.count)
           for (int c = 0; c < 3; ++c) out[model + c] = mesh.positions[i][c];
-        if (frame.shading == ShadingMode::Phong) {
+        if (interpolatesNormals(frame.shading)) {
           for (int c = 0; c < 3; ++c) out[c] = world[k][c], out[3 + c] = N[c];
         } else if (frame.shading == ShadingMode::Gouraud) {  // the illumination equation at the vertex, both sides
           const glm::vec3 V = viewVector<float>(frame, world[k]);
@@ -194,10 +195,13 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
       }
       // Fragment stage.
       const FragmentShader fragment = [&](const float* f, bool front, const Interpolation& planes, int px, int py) -> glm::vec3 {
-        if (frame.shading == ShadingMode::Phong) {
+        if (interpolatesNormals(frame.shading)) {
           const glm::vec3 P{f[0], f[1], f[2]};
           const glm::vec3 unit = normalize3(glm::vec3{f[3], f[4], f[5]});
           const glm::vec3 N = front ? unit : -unit;  // two-sided lighting
+          if (frame.shading == ShadingMode::Pbr)
+            return shadePhysicallyBased(frame, maps, {baseColor(f, planes, px, py), material.metallic, material.roughness, material.emissive}, P, N,
+                                        viewVector<float>(frame, P));
           return shade(illuminate(frame, maps, laneMaterial(material), P, N, viewVector<float>(frame, P)), baseColor(f, planes, px, py));
         }
         if (frame.shading == ShadingMode::Gouraud) {
