@@ -458,7 +458,7 @@ class Gltf:
     def primitive(self, mesh, material, colors=None):
         """A primitive of `mesh` with `material`; the mesh's accessors are
         written the first time it is used and shared after. TEXCOORD_0 is
-        written only for a textured material; `colors` is a COLOR_0 accessor."""
+        written only for a material with a texture; `colors` is a COLOR_0 accessor."""
         key = id(mesh)
         if key not in self.mesh_accessors:
             attributes = {
@@ -467,7 +467,10 @@ class Gltf:
             }
             self.mesh_accessors[key] = (attributes, self.add_indices(mesh.indices), mesh)  # keeps mesh alive: id stays unique
         attributes, indices, _ = self.mesh_accessors[key]
-        if "baseColorTexture" in self.doc["materials"][material]["pbrMetallicRoughness"] and "TEXCOORD_0" not in attributes:
+        m = self.doc["materials"][material]
+        textured = any(k in m["pbrMetallicRoughness"] for k in ("baseColorTexture", "metallicRoughnessTexture")) or \
+            any(k in m for k in ("occlusionTexture", "emissiveTexture"))
+        if textured and "TEXCOORD_0" not in attributes:
             attributes["TEXCOORD_0"] = self.add_accessor(mesh.uvs, "VEC2")
         primitive = {"attributes": dict(attributes), "indices": indices, "material": material}
         if colors is not None:
@@ -478,9 +481,10 @@ class Gltf:
         return self.append("meshes", {"name": name, "primitives": list(primitives)})
 
     def add_material(self, name, color, metallic=None, roughness=None, texture=None, double_sided=None, emissive=None,
-                     alpha_mode=None, alpha_cutoff=None):
+                     alpha_mode=None, alpha_cutoff=None, metallic_roughness=None, occlusion=None, emissive_texture=None):
         """A material; metallic, roughness, doubleSided, alphaMode and
-        alphaCutoff left out when None (glTF's defaults: 1, 1, false, OPAQUE, 0.5)."""
+        alphaCutoff left out when None (glTF's defaults: 1, 1, false, OPAQUE, 0.5).
+        occlusion: (texture, strength)."""
         pbr = {"baseColorFactor": nums(color)}
         if metallic is not None:
             pbr["metallicFactor"] = num(metallic)
@@ -488,7 +492,13 @@ class Gltf:
             pbr["roughnessFactor"] = num(roughness)
         if texture is not None:
             pbr["baseColorTexture"] = {"index": texture}
+        if metallic_roughness is not None:
+            pbr["metallicRoughnessTexture"] = {"index": metallic_roughness}
         material = {"name": name, "pbrMetallicRoughness": pbr}
+        if occlusion is not None:
+            material["occlusionTexture"] = {"index": occlusion[0], "strength": num(occlusion[1])}
+        if emissive_texture is not None:
+            material["emissiveTexture"] = {"index": emissive_texture}
         if double_sided is not None:
             material["doubleSided"] = double_sided
         if emissive is not None:
@@ -847,6 +857,43 @@ def materials():
     return g
 
 
+def pbr_maps():
+    g = Gltf("shading=pbr's material maps, each read at TEXCOORD_0: a sphere whose metallic-roughness texture "
+             "makes one half gold metal and the other gold-coloured plastic, smooth at the poles and rough "
+             "at the equator; a cube whose occlusion texture (strength 1) darkens the ambient light toward its edges "
+             "and in a cross; a panel whose emissive texture lights a green grid on black.")
+    sampler = g.add_sampler(LINEAR, LINEAR_MIPMAP_LINEAR, REPEAT, REPEAT)
+    def mr(x, y):  # G roughness: 0 at the poles, 1 at the equator; B metallic: 1 on the left half (u < 0.5)
+        v = (y + 0.5) / 64
+        rough = int(round(255 * (1 - abs(2 * v - 1))))
+        return (0, rough, 255 if x < 32 else 0)
+    mr_texture = g.add_texture(g.add_image("metallic-roughness 64x64", png(64, 64, mr)), sampler)
+    def ao(x, y):
+        u, v = (x + 0.5) / 64, (y + 0.5) / 64
+        edge = min(u, 1 - u, v, 1 - v)
+        level = min(1.0, 0.25 + 4 * edge)
+        if abs(u - 0.5) < 0.06 or abs(v - 0.5) < 0.06:
+            level *= 0.3
+        return (int(round(255 * level)),) * 3
+    ao_texture = g.add_texture(g.add_image("occlusion 64x64", png(64, 64, ao)), sampler)
+    def glow(x, y):
+        on = x % 16 < 3 or y % 16 < 3
+        return (20, 255, 60) if on else (0, 0, 0)
+    glow_texture = g.add_texture(g.add_image("emissive grid 64x64", png(64, 64, glow)), sampler)
+    gold = g.add_material("gold, maps for metal and roughness", (1.0, 0.76, 0.33, 1), 1.0, 1.0, metallic_roughness=mr_texture)
+    clay = g.add_material("clay, occlusion map", (0.8, 0.8, 0.75, 1), 0.0, 0.7, occlusion=(ao_texture, 1.0))
+    panel = g.add_material("dark panel, emissive grid", (0.05, 0.05, 0.05, 1), 0.0, 0.5, emissive=(1, 1, 1),
+                           emissive_texture=glow_texture)
+    g.add_node("sphere", g.add_mesh("sphere", g.primitive(uv_sphere(0.5, 64, 32), gold)), translation=(-1.2, 0.5, 0))
+    g.add_node("cube", g.add_mesh("cube", g.primitive(cube(0.8), clay)), translation=(0.1, 0.4, 0), rotation=axis_angle((0, 1, 0), 30))
+    g.add_node("panel", g.add_mesh("panel", g.primitive(quad(0.9, 0.9), panel)), translation=(1.3, 0.55, -0.1),
+               rotation=axis_angle((0, 1, 0), -20))
+    add_ground(g, 5, 3)
+    g.add_camera("camera", (0, 1.4, 3.2), (0, 0.45, 0))
+    g.add_light("sun", "directional", (-2, 4, 3), (0, 0, 0), intensity=2.0)
+    return g
+
+
 def height_map(size=128):
     """A greyscale height map: a round hill in the middle, a ring of ripples
     around it and a low border, h from 0 (black) to 1 (white)."""
@@ -1053,6 +1100,7 @@ SCENES = [
     (MATERIALS_DIR, "mipmap_modes.gltf", mipmap_modes),
     (MATERIALS_DIR, "texture_transform.gltf", texture_transform),
     (MATERIALS_DIR, "alpha_mask.gltf", alpha_mask),
+    (MATERIALS_DIR, "pbr_maps.gltf", pbr_maps),
     (ASSETS_DIR, "transformations.gltf", transformations),
     (ASSETS_DIR, "projections.gltf", projections),
     (ASSETS_DIR, "culling.gltf", culling),

@@ -13,8 +13,15 @@ uniform float alphaCutoff;         // alphaMode MASK: the least alpha a fragment
 uniform ivec4 baseColorSampler;    // its texture's magFilter, minFilter, wrapS, wrapT: scene/scene.h's enum values
 uniform vec3 baseColorTransform[2];// its KHR_texture_transform: the rows of st' = M·(s, t, 1)
 
+uniform ivec4 metallicRoughnessSampler, occlusionSampler, emissiveSampler;  // shading=pbr's maps' samplers, as baseColorSampler
+uniform float occlusionStrength;   // ao = 1 + strength·(R - 1)
+uniform ivec3 mapsSrgb;            // 1 where a map's texels are sRGB colour: metallic-roughness, occlusion, emissive
+
 layout(binding = 0) uniform sampler2DArray shadowMaps;  // pass 1: one S×S depth layer per light face
 layout(binding = 1) uniform usampler2D baseColorTexture; // sRGB-encoded bytes (GL_RGBA8UI), bottom row first
+layout(binding = 3) uniform usampler2D metallicRoughnessMap;  // data bytes: G roughness, B metallic (shading=pbr)
+layout(binding = 4) uniform usampler2D occlusionMap;          // data bytes: R occlusion
+layout(binding = 5) uniform usampler2D emissiveMap;           // sRGB-encoded bytes
 
 // O_d = factor · COLOR_0 · texel at texture coordinates st, whose
 // derivatives are (dFdx(st), dFdy(st)), and its alpha
@@ -38,7 +45,7 @@ vec4 baseColorAt(vec2 st, vec4 stDerivatives, vec4 vertexColor, vec3 modelPoint)
   precise vec2 uv = vec2((a.x * st.x + a.y * st.y) + a.z, (b.x * st.x + b.y * st.y) + b.z);
   precise vec4 d = vec4(a.x * stDerivatives.x + a.y * stDerivatives.y, b.x * stDerivatives.x + b.y * stDerivatives.y,
                         a.x * stDerivatives.z + a.y * stDerivatives.w, b.x * stDerivatives.z + b.y * stDerivatives.w);
-  vec4 texel = sampleTexture(baseColorTexture, baseColorSampler, uv, d);
+  vec4 texel = sampleTexture(baseColorTexture, true, baseColorSampler, uv, d);
   O = O * texel.rgb;
   alpha = alpha * texel.a;
 #endif

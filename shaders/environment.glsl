@@ -18,7 +18,7 @@ vec3 environmentAt(vec3 D, int level) {
   else { sc = -D.x; tc = -D.y; ma = -D.z; }
   precise float s = (sc / ma + 1.0) * 0.5, t = (tc / ma + 1.0) * 0.5;
   int n = max(1, textureSize(environmentMap, 0).y >> level);
-  return sampleRegion(environmentMap, level, ivec2(face * n, 0), ivec2(n, n), true, kWrapClampToEdge, kWrapClampToEdge, vec2(s, t)).rgb;
+  return sampleRegion(environmentMap, true, level, ivec2(face * n, 0), ivec2(n, n), true, kWrapClampToEdge, kWrapClampToEdge, vec2(s, t)).rgb;
 }
 
 // The linear colour of the empty pixel whose centre is `fragCoord`: env(D)

@@ -29,7 +29,7 @@ void main() {
   vec4 O = baseColorAt(st, stDerivatives, vertexColor, modelPoint);
   if (!alphaKept(O.a)) discard;  // alpha mask (a no-op unless FACET_MASKED)
 #if FACET_PBR
-  color = encodeSrgb(shadePhysicallyBased(O.rgb, material.metallic, material.roughness, material.emissive, P, N, viewVector(P)));
+  color = encodeSrgb(shadePhysicallyBased(pbrSurfaceAt(O.rgb, st, stDerivatives), P, N, viewVector(P)));
 #else
   color = encodeSrgb(shade(illuminate(material, P, N, viewVector(P)), O.rgb));
 #endif

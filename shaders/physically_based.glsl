@@ -5,11 +5,43 @@
 // Needs lighting.glsl (and what it needs) and environment.glsl before it.
 //
 //   L_o = Σ (S·f_att)·((N·L)·I_p)·((1 - F)·c_diff/π + F·D·Vis)
-//       + c_diff·E(N)/π + prefiltered(R, r)·(F0·A + B) + k_e
+//       + ao·(c_diff·E(N)/π + prefiltered(R, r)·(F0·A + B)) + k_e
 
 const float kPi = 3.14159274;      // π rounded to float (renderer/pipeline/microfacet.h)
 const float kDielectricF0 = 0.04;  // a dielectric's reflectance at normal incidence
 const float kMinAlpha = 0.001;     // α = max(r², this): D stays finite on a mirror
+
+// What one pixel's material gives the BRDF.
+struct PbrSurface {
+  vec3 baseColor;  // O_d, linear
+  float metallic;  // m
+  float roughness; // r
+  float occlusion; // ao: scales the ambient light
+  vec3 emissive;   // k_e
+};
+
+// The pixel's surface: O_d, the material's factors times its maps read at
+// TEXCOORD_0 st with derivatives d (no texture transform), the maps the
+// draw's variant has (FACET_*_MAP: the material has it, the mesh TEXCOORD_0):
+//   r·G, m·B of the metallic-roughness map; ao = 1 + strength·(R - 1); k_e·RGB of the emissive map.
+PbrSurface pbrSurfaceAt(vec3 baseColor, vec2 st, vec4 d) {
+  PbrSurface s = PbrSurface(baseColor, material.metallic, material.roughness, 1.0, material.emissive);
+#if FACET_METALLIC_ROUGHNESS_MAP
+  vec4 t = sampleTexture(metallicRoughnessMap, mapsSrgb.x != 0, metallicRoughnessSampler, st, d);
+  precise float r = s.roughness * t.g, m = s.metallic * t.b;
+  s.roughness = r;
+  s.metallic = m;
+#endif
+#if FACET_OCCLUSION_MAP
+  precise float ao = 1.0 + occlusionStrength * (sampleTexture(occlusionMap, mapsSrgb.y != 0, occlusionSampler, st, d).r - 1.0);
+  s.occlusion = ao;
+#endif
+#if FACET_EMISSIVE_MAP
+  precise vec3 e = s.emissive * sampleTexture(emissiveMap, mapsSrgb.z != 0, emissiveSampler, st, d).rgb;
+  s.emissive = e;
+#endif
+  return s;
+}
 
 // F = F0 + (1 - F0)·x⁵, x = 1 - V·H, x⁵ = (x²·x²)·x (Schlick)
 vec3 schlickFresnel(vec3 F0, float VdotH) {
@@ -86,8 +118,10 @@ vec3 prefilteredAt(vec3 R, float roughness) {
 #endif
 
 // L_o at world point P with unit normal N and unit view vector V, linear and unclamped.
-vec3 shadePhysicallyBased(vec3 baseColor, float metallic, float roughness, vec3 emissive, vec3 P, vec3 N, vec3 V) {
-  float m = metallic;
+vec3 shadePhysicallyBased(PbrSurface s, vec3 P, vec3 N, vec3 V) {
+  vec3 baseColor = s.baseColor;
+  float roughness = s.roughness;
+  float m = s.metallic;
   precise vec3 cDiff = baseColor * (1.0 - m);
   precise vec3 F0 = vec3(kDielectricF0 * (1.0 - m)) + baseColor * m;
   precise float r2 = roughness * roughness;
@@ -120,7 +154,7 @@ vec3 shadePhysicallyBased(vec3 baseColor, float metallic, float roughness, vec3 
   precise vec3 R = (2.0 * dot3(N, V)) * N - V;
   specularLight = prefilteredAt(R, roughness);
 #endif
-  color = color + (cDiff * diffuseLight + specularLight * specularWeight);
-  precise vec3 result = color + emissive;
+  color = color + s.occlusion * (cDiff * diffuseLight + specularLight * specularWeight);
+  precise vec3 result = color + s.emissive;
   return result;
 }

@@ -28,7 +28,7 @@ inline glm::vec3 environmentAt(const EnvironmentMap& map, glm::vec3 D, int level
   }
   const float s = (sc / ma + 1.0f) * 0.5f, t = (tc / ma + 1.0f) * 0.5f;
   const int n = std::max(1, map.faceSize() >> level);
-  return glm::vec3(sampleRegion(map.level(level), {face * n, 0}, {n, n}, true, Wrap::ClampToEdge, Wrap::ClampToEdge, {s, t}));
+  return glm::vec3(sampleRegion(map.level(level), TexelEncoding::Srgb, {face * n, 0}, {n, n}, true, Wrap::ClampToEdge, Wrap::ClampToEdge, {s, t}));
 }
 
 // Whether empty pixels show the map rather than the background colour.

@@ -45,6 +45,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
   std::uint32_t current = kNoTriangle;
   Interpolation* in = nullptr;
   const CourseMaterial* material = nullptr;
+  const Mesh* drawnMesh = nullptr;
   const Texture* texture = nullptr;
   bool colored = false;
   int used = 0;  // varyings set up for the triangle: a prefix of the layout
@@ -66,6 +67,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         const FrameInstance& instance = frame.instances[t.instance];
         const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
         material = &frame.materials[static_cast<std::size_t>(instance.material)];
+        drawnMesh = &mesh;
         texture = baseColorTextureOf(scene, frame, *material, mesh);
         colored = !mesh.colors.empty();
         used = procedural ? layout.count : colored ? layout.model : (kMode == ShadingMode::Flat && !texture ? 0 : layout.color);
@@ -103,7 +105,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         const glm::vec3 P{v[0], v[1], v[2]};
         const glm::vec3 unit = normalize3(glm::vec3{v[3], v[4], v[5]});
         const glm::vec3 N = back ? -unit : unit;  // two-sided lighting
-        const PbrSurface surface{baseColor, material->metallic, material->roughness, material->emissive};
+        const PbrSurface surface = pbrSurfaceAt(scene, *material, *drawnMesh, baseColor, {v[layout.uv], v[layout.uv + 1]}, in->quadDerivatives(layout.uv, px, py));
         color = shadePhysicallyBased(frame, maps, surface, P, N, viewVector<float>(frame, P));
       } else if constexpr (kMode == ShadingMode::Phong) {
         // N is normalized (and negated on a back face, two-sided lighting) in the batch

@@ -5,7 +5,7 @@
 // functions in the same order with the same float operations.
 //
 //   L_o = Σ (S·f_att)·((N·L)·I_p)·((1 - F)·c_diff/π + F·D·Vis)
-//       + c_diff·E(N)/π + prefiltered(R, r)·(F0·A + B) + k_e
+//       + ao·(c_diff·E(N)/π + prefiltered(R, r)·(F0·A + B)) + k_e
 // D, Vis and x⁵ are pipeline/microfacet.h's, written once for float and double.
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -26,8 +26,27 @@ struct PbrSurface {
   glm::vec3 baseColor;  // O_d, linear
   float metallic = 0;   // m
   float roughness = 1;  // r
+  float occlusion = 1;  // ao: scales the ambient light
   glm::vec3 emissive{0.0f};  // k_e
 };
+
+// The pixel's surface: O_d as section 8 makes it, the material's factors
+// times its maps read at TEXCOORD_0 st with derivatives d (no texture
+// transform), where the mesh has texture coordinates:
+//   r·G, m·B of the metallic-roughness map; ao = 1 + strength·(R - 1); k_e·RGB of the emissive map.
+inline PbrSurface pbrSurfaceAt(const Scene& scene, const CourseMaterial& m, const Mesh& mesh, glm::vec3 baseColor, glm::vec2 st, glm::vec4 d) {
+  PbrSurface s{baseColor, m.metallic, m.roughness, 1.0f, m.emissive};
+  if (mesh.texcoords.empty()) return s;
+  const auto sample = [&](const MaterialMap& map) { return sampleTexture(scene.textures[static_cast<std::size_t>(map.texture)], map.sampler, st, d); };
+  if (m.metallicRoughnessMap.texture >= 0) {
+    const glm::vec4 t = sample(m.metallicRoughnessMap);
+    s.roughness = s.roughness * t.g;
+    s.metallic = s.metallic * t.b;
+  }
+  if (m.occlusionMap.texture >= 0) s.occlusion = 1.0f + m.occlusionStrength * (sample(m.occlusionMap).r - 1.0f);
+  if (m.emissiveMap.texture >= 0) s.emissive = s.emissive * glm::vec3(sample(m.emissiveMap));
+  return s;
+}
 
 // F = F0 + (1 - F0)·x⁵ (Schlick; x⁵ by pipeline/microfacet.h)
 inline glm::vec3 schlickFresnel(glm::vec3 F0, float VdotH) { return F0 + (glm::vec3(1.0f) - F0) * schlickWeight(VdotH); }
@@ -101,7 +120,7 @@ inline glm::vec3 shadePhysicallyBased(const FrameInputs& frame, const ShadowMaps
     const glm::vec3 R = (2.0f * dot3(N, V)) * N - V;
     specularLight = prefilteredAt(*frame.environment.map, R, s.roughness);
   }
-  color = color + (cDiff * diffuseLight + specularLight * specularWeight);
+  color = color + s.occlusion * (cDiff * diffuseLight + specularLight * specularWeight);
   return color + s.emissive;
 }
 

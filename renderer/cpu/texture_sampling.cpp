@@ -9,10 +9,12 @@
 namespace facet::cpu {
 namespace {
 
-// The texel (x, y), bottom row first: colour decoded to linear by the shared table, alpha as stored.
-glm::vec4 texel(const Image& image, int x, int y) {
-  const float* decoded = srgbTables().decoded.data();
+// The texel (x, y), bottom row first: colour decoded to linear by the shared table (data: byte / 255), alpha as stored.
+glm::vec4 texel(const Image& image, TexelEncoding encoding, int x, int y) {
   const Rgba8 c = image.at(x, y);
+  if (encoding == TexelEncoding::Linear)
+    return {static_cast<float>(c.r) / 255.0f, static_cast<float>(c.g) / 255.0f, static_cast<float>(c.b) / 255.0f, static_cast<float>(c.a) / 255.0f};
+  const float* decoded = srgbTables().decoded.data();
   return {decoded[c.r], decoded[c.g], decoded[c.b], static_cast<float>(c.a) / 255.0f};
 }
 
@@ -35,13 +37,14 @@ int wrapIndex(int i, int size, Wrap mode) {
 
 glm::vec4 lerp(glm::vec4 a, glm::vec4 b, float t) { return a + t * (b - a); }
 
-glm::vec4 sampleLevel(const Image& level, bool linear, Wrap wrapS, Wrap wrapT, glm::vec2 st) {
-  return sampleRegion(level, {0, 0}, {level.width(), level.height()}, linear, wrapS, wrapT, st);
+glm::vec4 sampleLevel(const Image& level, TexelEncoding encoding, bool linear, Wrap wrapS, Wrap wrapT, glm::vec2 st) {
+  return sampleRegion(level, encoding, {0, 0}, {level.width(), level.height()}, linear, wrapS, wrapT, st);
 }
 
-glm::vec4 sampleRegion(const Image& image, glm::ivec2 origin, glm::ivec2 size, bool linear, Wrap wrapS, Wrap wrapT, glm::vec2 st) {
+glm::vec4 sampleRegion(const Image& image, TexelEncoding encoding, glm::ivec2 origin, glm::ivec2 size, bool linear, Wrap wrapS, Wrap wrapT,
+                       glm::vec2 st) {
   const int w = size.x, h = size.y;
-  const auto at = [&](int x, int y) { return texel(image, origin.x + x, origin.y + y); };
+  const auto at = [&](int x, int y) { return texel(image, encoding, origin.x + x, origin.y + y); };
   const float u = st.x * static_cast<float>(w);
   const float v = (1.0f - st.y) * static_cast<float>(h);
   if (!linear) {
@@ -69,23 +72,23 @@ float footprintSquared(glm::vec4 d, int width, int height) {
 
 glm::vec4 sampleTexture(const Texture& texture, const Sampler& sampler, glm::vec2 st, glm::vec4 derivatives) {
   const float rho2 = footprintSquared(derivatives, texture.image.width(), texture.image.height());
-  if (!(rho2 > 1.0f)) return sampleLevel(texture.image, sampler.mag == MagFilter::Linear, sampler.wrapS, sampler.wrapT, st);
+  if (!(rho2 > 1.0f)) return sampleLevel(texture.image, texture.encoding, sampler.mag == MagFilter::Linear, sampler.wrapS, sampler.wrapT, st);
   const bool linear = linearWithin(sampler.min);
   if (sampler.min == MinFilter::Nearest || sampler.min == MinFilter::Linear)
-    return sampleLevel(texture.image, linear, sampler.wrapS, sampler.wrapT, st);
+    return sampleLevel(texture.image, texture.encoding, linear, sampler.wrapS, sampler.wrapT, st);
   const float halfLog = 0.5f * log2Of(rho2);
   const float lambda = halfLog > 0.0f ? halfLog : 0.0f;
   const int last = texture.levelCount() - 1;
   if (sampler.min == MinFilter::NearestMipmapNearest || sampler.min == MinFilter::LinearMipmapNearest) {
     const float nearest = std::floor(lambda + 0.5f);
     const int k = nearest < static_cast<float>(last) ? static_cast<int>(nearest) : last;
-    return sampleLevel(texture.level(k), linear, sampler.wrapS, sampler.wrapT, st);
+    return sampleLevel(texture.level(k), texture.encoding, linear, sampler.wrapS, sampler.wrapT, st);
   }
   const float whole = std::floor(lambda);
   const int k = whole < static_cast<float>(last) ? static_cast<int>(whole) : last;
-  const glm::vec4 above = sampleLevel(texture.level(k), linear, sampler.wrapS, sampler.wrapT, st);
+  const glm::vec4 above = sampleLevel(texture.level(k), texture.encoding, linear, sampler.wrapS, sampler.wrapT, st);
   if (k == last) return above;
-  const glm::vec4 below = sampleLevel(texture.level(k + 1), linear, sampler.wrapS, sampler.wrapT, st);
+  const glm::vec4 below = sampleLevel(texture.level(k + 1), texture.encoding, linear, sampler.wrapS, sampler.wrapT, st);
   return lerp(above, below, lambda - whole);
 }
 

@@ -44,12 +44,13 @@ glm::vec4 lerp(glm::vec4 a, glm::vec4 b, float t);
 
 // One level: NEAREST or LINEAR at texture coordinates st (t = 0 is the top
 // of the glTF image; facet::Image stores the bottom row first): linear RGB
-// and alpha (the byte / 255, not decoded).
-glm::vec4 sampleLevel(const Image& level, bool linear, Wrap wrapS, Wrap wrapT, glm::vec2 st);
+// (sRGB decoded, or the byte / 255 for data) and alpha (the byte / 255).
+glm::vec4 sampleLevel(const Image& level, TexelEncoding encoding, bool linear, Wrap wrapS, Wrap wrapT, glm::vec2 st);
 
 // sampleLevel over the size.x × size.y texels from `origin` of `image`, as if
 // they were an image of their own (a face of an environment cube strip).
-glm::vec4 sampleRegion(const Image& image, glm::ivec2 origin, glm::ivec2 size, bool linear, Wrap wrapS, Wrap wrapT, glm::vec2 st);
+glm::vec4 sampleRegion(const Image& image, TexelEncoding encoding, glm::ivec2 origin, glm::ivec2 size, bool linear, Wrap wrapS, Wrap wrapT,
+                       glm::vec2 st);
 
 // ρ² of section 8 from derivatives (ds/dx, dt/dx, ds/dy, dt/dy) and level 0's size.
 float footprintSquared(glm::vec4 derivatives, int width, int height);

@@ -1,5 +1,6 @@
 #include "gl/frame_renderer.h"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <iterator>
@@ -21,6 +22,9 @@ constexpr GLuint kSplitSumBlockBinding = 2;   // uniform block SplitSumTable (ph
 constexpr GLuint kShadowMapsUnit = 0;         // sampler2DArray shadowMaps
 constexpr GLuint kBaseColorTextureUnit = 1;   // usampler2D baseColorTexture
 constexpr GLuint kEnvironmentUnit = 2;        // usampler2D environmentMap (environment.glsl)
+constexpr GLuint kMetallicRoughnessUnit = 3;  // usampler2D metallicRoughnessMap (draw_uniforms.glsl)
+constexpr GLuint kOcclusionUnit = 4;          // usampler2D occlusionMap
+constexpr GLuint kEmissiveUnit = 5;           // usampler2D emissiveMap
 constexpr GLuint kMeshIndicesBinding = 0;     // storage buffers of lit_flat.vert
 constexpr GLuint kMeshPositionsBinding = 1;
 constexpr GLuint kMeshTexcoordsBinding = 2;
@@ -168,13 +172,20 @@ std::vector<std::uint32_t> GlFrameRenderer::drawTriangleIds(const FrameInputs& f
 DrawVariant GlFrameRenderer::drawVariant(const FrameInputs& frame, const FrameInstance& instance) const {
   const MeshBuffers& mesh = scene_.mesh(instance.mesh);
   const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
-  // A procedural texture takes the base colour texture's place (renderer/cpu/texture_sampling.h, baseColorTextureOf).
-  return {frame.procedural == Procedural::None && material.baseColorTexture >= 0 && mesh.texcoords, static_cast<bool>(mesh.colors), material.masked};
+  // A procedural texture takes the base colour texture's place (renderer/cpu/texture_sampling.h, baseColorTextureOf);
+  // shading=pbr alone reads the other maps (renderer/cpu/physically_based.h, pbrSurfaceAt).
+  const bool pbrMaps = frame.shading == ShadingMode::Pbr && mesh.texcoords;
+  return {frame.procedural == Procedural::None && material.baseColorTexture >= 0 && mesh.texcoords,
+          static_cast<bool>(mesh.colors),
+          material.masked,
+          pbrMaps && material.metallicRoughnessMap.texture >= 0,
+          pbrMaps && material.occlusionMap.texture >= 0,
+          pbrMaps && material.emissiveMap.texture >= 0};
 }
 
 DrawVariant GlFrameRenderer::maskVariant(const FrameInputs& frame, const FrameInstance& instance) const {
   const DrawVariant v = drawVariant(frame, instance);
-  return v.masked ? v : DrawVariant{};  // one program for every unmasked draw
+  return v.masked ? DrawVariant{v.textured, v.colored, true} : DrawVariant{};  // one program for every unmasked draw
 }
 
 void GlFrameRenderer::setCulling(bool cull) {
@@ -188,7 +199,7 @@ bool GlFrameRenderer::preparePrograms(const FrameInputs& frame) {
   bool needed[DrawVariant::kCount] = {};  // some draw of the frame needs the variant
   for (const FrameInstance& instance : frame.instances)
     if (scene_.mesh(instance.mesh).indexCount > 0) needed[drawVariant(frame, instance).index()] = true;
-  if (litPrograms_.size() + DrawVariant::kCount > kMaxLitPrograms) litPrograms_.clear();
+  if (litPrograms_.size() + static_cast<std::size_t>(std::count(std::begin(needed), std::end(needed), true)) > kMaxLitPrograms) litPrograms_.clear();
   for (int v = 0; v < DrawVariant::kCount; ++v) {
     if (!needed[v]) continue;
     const DrawVariant variant = DrawVariant::of(v);
@@ -210,6 +221,11 @@ bool GlFrameRenderer::preparePrograms(const FrameInputs& frame) {
                                          .shininess = at("material.shininess"),
                                          .metallic = at("material.metallic"),
                                          .roughness = at("material.roughness"),
+                                         .metallicRoughnessSampler = at("metallicRoughnessSampler"),
+                                         .occlusionSampler = at("occlusionSampler"),
+                                         .emissiveSampler = at("emissiveSampler"),
+                                         .occlusionStrength = at("occlusionStrength"),
+                                         .mapsSrgb = at("mapsSrgb"),
                                          .baseColorFactor = at("baseColorFactor"),
                                          .alpha = alphaUniforms(program),
                                          .program = std::move(program)});
@@ -323,6 +339,7 @@ void GlFrameRenderer::drawInstance(const LitProgram& lit, const FrameInputs& fra
   gl_.glProgramUniform1f(program, lit.roughness, material.roughness);
   gl_.glProgramUniform3fv(program, lit.baseColorFactor, 1, glm::value_ptr(material.baseColor));
   setBaseColorUniforms(program, lit.alpha, material, textured);
+  setMapUniforms(lit, material, variant);
 
   if (flat) {
     gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshIndicesBinding, mesh.indices.id());
@@ -369,6 +386,27 @@ void GlFrameRenderer::setBaseColorUniforms(GLuint program, const AlphaUniforms& 
   gl_.glProgramUniform4i(program, samplerLocation, static_cast<GLint>(sampler.mag), static_cast<GLint>(sampler.min), static_cast<GLint>(sampler.wrapS),
                          static_cast<GLint>(sampler.wrapT));
   gl_.glBindTextureUnit(kBaseColorTextureUnit, textured ? scene_.texture(material.baseColorTexture) : 0);
+}
+
+void GlFrameRenderer::setMapUniforms(const LitProgram& lit, const CourseMaterial& material, DrawVariant variant) {
+  const GLuint program = lit.program.id();
+  const struct {
+    bool used;
+    const MaterialMap& map;
+    GLint sampler;
+    GLuint unit;
+  } maps[] = {{variant.metallicRoughnessMap, material.metallicRoughnessMap, lit.metallicRoughnessSampler, kMetallicRoughnessUnit},
+              {variant.occlusionMap, material.occlusionMap, lit.occlusionSampler, kOcclusionUnit},
+              {variant.emissiveMap, material.emissiveMap, lit.emissiveSampler, kEmissiveUnit}};
+  for (const auto& m : maps) {
+    if (!m.used) continue;
+    const Sampler& s = m.map.sampler;
+    gl_.glProgramUniform4i(program, m.sampler, static_cast<GLint>(s.mag), static_cast<GLint>(s.min), static_cast<GLint>(s.wrapS), static_cast<GLint>(s.wrapT));
+    gl_.glBindTextureUnit(m.unit, scene_.texture(m.map.texture));
+  }
+  if (variant.occlusionMap) gl_.glProgramUniform1f(program, lit.occlusionStrength, material.occlusionStrength);
+  gl_.glProgramUniform3i(program, lit.mapsSrgb, material.metallicRoughnessMap.srgb ? 1 : 0, material.occlusionMap.srgb ? 1 : 0,
+                         material.emissiveMap.srgb ? 1 : 0);
 }
 
 void GlFrameRenderer::checkError(const char* where) const {

@@ -62,6 +62,7 @@ class GlFrameRenderer {
   struct LitProgram {
     GLint clipFromModel, worldFromModel, normalMatrix;
     GLint emissive, ka, kd, ks, shininess, metallic, roughness;
+    GLint metallicRoughnessSampler, occlusionSampler, emissiveSampler, occlusionStrength, mapsSrgb;  // shading=pbr's maps
     GLint baseColorFactor;
     AlphaUniforms alpha;
     ShaderProgram program;
@@ -82,6 +83,8 @@ class GlFrameRenderer {
   DrawVariant maskVariant(const FrameInputs& frame, const FrameInstance& instance) const;
   // The base colour texture, its sampler and the alpha mask's uniforms of `material` on `program`.
   void setBaseColorUniforms(GLuint program, const AlphaUniforms& uniforms, const CourseMaterial& material, bool textured);
+  // Binds shading=pbr's maps the variant reads and sets their samplers and the occlusion strength.
+  void setMapUniforms(const LitProgram& lit, const CourseMaterial& material, DrawVariant variant);
   AlphaUniforms alphaUniforms(const ShaderProgram& program) const;
   // Builds the program of `stages` for each mask variant the frame's instances
   // draw with and `programs` lacks (make turns it into a Program); true when it built one.

@@ -72,6 +72,7 @@ namespace facet::gl {
   X(PFNGLPIXELSTOREIPROC, glPixelStorei)                                      \
   X(PFNGLPROGRAMUNIFORM1FPROC, glProgramUniform1f)                            \
   X(PFNGLPROGRAMUNIFORM1IPROC, glProgramUniform1i)                            \
+  X(PFNGLPROGRAMUNIFORM3IPROC, glProgramUniform3i)                            \
   X(PFNGLPROGRAMUNIFORM4IPROC, glProgramUniform4i)                            \
   X(PFNGLPROGRAMUNIFORM2FPROC, glProgramUniform2f)                            \
   X(PFNGLPROGRAMUNIFORM1UIPROC, glProgramUniform1ui)                          \

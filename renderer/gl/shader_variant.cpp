@@ -22,6 +22,9 @@ std::string drawVariantDefines(DrawVariant variant) {
   d += "#define FACET_TEXTURED " + std::string(variant.textured ? "1" : "0") + "\n";
   d += "#define FACET_COLORED " + std::string(variant.colored ? "1" : "0") + "\n";
   d += "#define FACET_MASKED " + std::string(variant.masked ? "1" : "0") + "\n";
+  d += "#define FACET_METALLIC_ROUGHNESS_MAP " + std::string(variant.metallicRoughnessMap ? "1" : "0") + "\n";
+  d += "#define FACET_OCCLUSION_MAP " + std::string(variant.occlusionMap ? "1" : "0") + "\n";
+  d += "#define FACET_EMISSIVE_MAP " + std::string(variant.emissiveMap ? "1" : "0") + "\n";
   return d;
 }
 

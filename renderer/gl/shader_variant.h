@@ -18,13 +18,20 @@ struct DrawVariant {
   bool textured = false;  // a base colour texture, through TEXCOORD_0
   bool colored = false;   // COLOR_0
   bool masked = false;    // alphaMode MASK: fragments below the cutoff are discarded
-  static constexpr int kCount = 8;
-  int index() const { return (textured ? 1 : 0) + (colored ? 2 : 0) + (masked ? 4 : 0); }
-  static DrawVariant of(int index) { return {(index & 1) != 0, (index & 2) != 0, (index & 4) != 0}; }
+  // shading=pbr's maps, through TEXCOORD_0: metallic-roughness, occlusion, emissive.
+  bool metallicRoughnessMap = false, occlusionMap = false, emissiveMap = false;
+  static constexpr int kCount = 64;
+  int index() const {
+    return (textured ? 1 : 0) + (colored ? 2 : 0) + (masked ? 4 : 0) + (metallicRoughnessMap ? 8 : 0) + (occlusionMap ? 16 : 0) + (emissiveMap ? 32 : 0);
+  }
+  static DrawVariant of(int index) {
+    return {(index & 1) != 0, (index & 2) != 0, (index & 4) != 0, (index & 8) != 0, (index & 16) != 0, (index & 32) != 0};
+  }
 };
 
 // The #define lines of a variant's draw-specific macros (FACET_TEXTURED,
-// FACET_COLORED, FACET_MASKED): the lit programs' and the triangle-id pass's.
+// FACET_COLORED, FACET_MASKED, FACET_METALLIC_ROUGHNESS_MAP, FACET_OCCLUSION_MAP,
+// FACET_EMISSIVE_MAP): the lit programs' and the triangle-id pass's.
 std::string drawVariantDefines(DrawVariant variant);
 
 // The #define lines (one per macro, each ending in a newline) of the lit

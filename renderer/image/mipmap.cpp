@@ -18,7 +18,7 @@ Span spanOf(int i, int size, int halfSize) {
   return {2 * i, i == halfSize - 1 ? size - 1 : 2 * i + 1};
 }
 
-Image halve(const Image& level) {
+Image halve(const Image& level, TexelEncoding encoding) {
   const int w = level.width(), h = level.height();
   const int hw = std::max(1, w / 2), hh = std::max(1, h / 2);
   const float* decoded = srgbTables().decoded.data();
@@ -31,10 +31,14 @@ Image halve(const Image& level) {
       for (int y = rows.first; y <= rows.last; ++y)
         for (int x = columns.first; x <= columns.last; ++x) {
           const Rgba8 c = level.at(x, y);
-          r += decoded[c.r], g += decoded[c.g], b += decoded[c.b], a += static_cast<float>(c.a);
+          if (encoding == TexelEncoding::Srgb) r += decoded[c.r], g += decoded[c.g], b += decoded[c.b];
+          else r += static_cast<float>(c.r), g += static_cast<float>(c.g), b += static_cast<float>(c.b);
+          a += static_cast<float>(c.a);
         }
       const float n = static_cast<float>((rows.last - rows.first + 1) * (columns.last - columns.first + 1));
-      next.at(i, j) = {encodeLevel(r / n), encodeLevel(g / n), encodeLevel(b / n), static_cast<std::uint8_t>(std::lround(a / n))};
+      const auto byte = [](float v) { return static_cast<std::uint8_t>(std::lround(v)); };
+      next.at(i, j) = encoding == TexelEncoding::Srgb ? Rgba8{encodeLevel(r / n), encodeLevel(g / n), encodeLevel(b / n), byte(a / n)}
+                                                      : Rgba8{byte(r / n), byte(g / n), byte(b / n), byte(a / n)};
     }
   }
   return next;
@@ -57,11 +61,11 @@ std::uint64_t mipChainPixels(int width, int height) {
   return pixels;
 }
 
-std::vector<Image> mipLevels(const Image& image) {
+std::vector<Image> mipLevels(const Image& image, TexelEncoding encoding) {
   std::vector<Image> levels;
   if (image.empty()) return levels;
   levels.reserve(static_cast<std::size_t>(mipLevelCount(image.width(), image.height())));
-  for (int k = 0, count = mipLevelCount(image.width(), image.height()); k < count; ++k) levels.push_back(halve(k == 0 ? image : levels.back()));
+  for (int k = 0, count = mipLevelCount(image.width(), image.height()); k < count; ++k) levels.push_back(halve(k == 0 ? image : levels.back(), encoding));
   return levels;
 }
 

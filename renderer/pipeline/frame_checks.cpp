@@ -12,6 +12,16 @@
 namespace facet {
 namespace {
 
+// -1 (none) or a texture of the scene with an image.
+bool textureUsable(const Scene& scene, int texture) {
+  return texture == -1 || (texture >= 0 && texture < static_cast<int>(scene.textures.size()) &&
+                           !scene.textures[static_cast<std::size_t>(texture)].image.empty());
+}
+
+}  // namespace
+
+namespace {
+
 std::string meshName(const Scene& scene, std::size_t m) {
   const std::string& name = scene.meshes[m].name;
   return "mesh " + std::to_string(m) + (name.empty() ? "" : " '" + name + "'");
@@ -91,11 +101,14 @@ void checkScene(const Scene& scene) {
     if (!laidOut) throw Error("texture " + std::to_string(t) + " '" + texture.name + "': its mipmaps are not image/mipmap.h's levels of its image");
   }
   for (std::size_t m = 0; m < scene.materials.size(); ++m) {
-    const int texture = scene.materials[m].baseColorTexture;
-    if (texture < -1 || texture >= static_cast<int>(scene.textures.size()) ||
-        (texture >= 0 && scene.textures[static_cast<std::size_t>(texture)].image.empty()))
-      throw Error("material " + std::to_string(m) + " '" + scene.materials[m].name + "': base colour texture " + std::to_string(texture) +
-                  " is missing or empty");
+    const Material& material = scene.materials[m];
+    const std::pair<const char*, int> maps[] = {{"base colour", material.baseColorTexture},
+                                                {"metallic-roughness", material.metallicRoughnessTexture},
+                                                {"occlusion", material.occlusionTexture},
+                                                {"emissive", material.emissiveTexture}};
+    for (const auto& [what, texture] : maps)
+      if (!textureUsable(scene, texture))
+        throw Error("material " + std::to_string(m) + " '" + material.name + "': " + what + " texture " + std::to_string(texture) + " is missing or empty");
   }
 }
 
@@ -112,10 +125,10 @@ void checkFrame(const Scene& scene, const FrameInputs& frame) {
       throw Error("frame instance " + std::to_string(i) + ": mesh " + std::to_string(instance.mesh) + " is not in the scene");
     if (instance.material < 0 || static_cast<std::size_t>(instance.material) >= frame.materials.size())
       throw Error("frame instance " + std::to_string(i) + ": material " + std::to_string(instance.material) + " is not in the frame");
-    const int texture = frame.materials[static_cast<std::size_t>(instance.material)].baseColorTexture;
-    if (texture < -1 || texture >= static_cast<int>(scene.textures.size()) ||
-        (texture >= 0 && scene.textures[static_cast<std::size_t>(texture)].image.empty()))
-      throw Error("frame instance " + std::to_string(i) + ": base colour texture " + std::to_string(texture) + " is missing or empty");
+    const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
+    for (const int texture : {material.baseColorTexture, material.metallicRoughnessMap.texture, material.occlusionMap.texture, material.emissiveMap.texture})
+      if (!textureUsable(scene, texture))
+        throw Error("frame instance " + std::to_string(i) + ": texture " + std::to_string(texture) + " of its material is missing or empty");
     vertices += scene.meshes[static_cast<std::size_t>(instance.mesh)].positions.size();
   }
   if (vertices >= kMaxFrameVertices) throw Error(std::to_string(vertices) + " vertices over the frame's instances: more than a frame holds");

@@ -30,6 +30,10 @@ CourseMaterial courseMaterial(const Material& material, const MaterialOverrides&
   out.shininess = overrides.shininess.value_or(n);
   out.metallic = m;
   out.roughness = r;
+  out.metallicRoughnessMap.texture = material.metallicRoughnessTexture;
+  out.occlusionMap.texture = material.occlusionTexture;
+  out.emissiveMap.texture = material.emissiveTexture;
+  out.occlusionStrength = material.occlusionStrength;
   out.doubleSided = material.doubleSided;
   return out;
 }

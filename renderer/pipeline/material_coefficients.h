@@ -6,6 +6,13 @@
 
 namespace facet {
 
+// A texture a material reads besides its base colour (shading=pbr's maps).
+struct MaterialMap {
+  int texture = -1;  // index into Scene::textures, -1 = none
+  Sampler sampler;   // its sampler with textures.filter applied
+  bool srgb = false; // its texels are read as sRGB colour (a texture a file also uses as colour), not as data
+};
+
 // A material in the course's terms: the coefficients of
 //   I = k_e + k_a·I_a·O_d + Σ S·f_att·(k_d·I_p·max(N·L, 0)·O_d + k_s·I_p·spec·O_s), spec = (·)^n
 // with the specular colour O_s = (1 - m) + m·O_d: the light's colour for a
@@ -21,6 +28,9 @@ struct CourseMaterial {
   float shininess = 1;        // n
   float metallic = 0;         // m in O_s = (1 - m) + m·O_d, in [0, 1]
   float roughness = 1;        // r, in [0, 1]: shading=pbr's (PIPELINE.md, section 7)
+  // shading=pbr's maps (PIPELINE.md, section 7): G and B scale r and m, R is the ambient occlusion, RGB scales k_e.
+  MaterialMap metallicRoughnessMap, occlusionMap, emissiveMap;
+  float occlusionStrength = 1;  // ao = 1 + strength·(R - 1)
   bool doubleSided = false;
   // Alpha mask (PIPELINE.md, section 8): α = factor·COLOR_0.a·texel.a, each where present;
   // with `masked`, a fragment is kept when α ≥ alphaCutoff (NaN discards).

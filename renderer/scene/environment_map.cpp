@@ -34,7 +34,7 @@ std::vector<Image> stripMips(const Image& strip) {
     Image face(n, n);
     for (int y = 0; y < n; ++y)
       for (int x = 0; x < n; ++x) face.at(x, y) = strip.at(f * n + x, y);
-    faces[static_cast<std::size_t>(f)] = mipLevels(face);
+    faces[static_cast<std::size_t>(f)] = mipLevels(face, TexelEncoding::Srgb);
   }
   std::vector<Image> levels;
   for (std::size_t k = 0; k < faces[0].size(); ++k) {

@@ -247,9 +247,22 @@ void convertTextures(const tinygltf::Model& model, const std::map<int, std::stri
                         " pixels of " + at("images", static_cast<std::size_t>(source)));
     }
   }
+  // Data textures (metallic-roughness, occlusion) are read as bytes / 255, colour ones as sRGB.
+  std::set<int> colour, data;
+  for (const tinygltf::Material& material : model.materials) {
+    colour.insert({material.pbrMetallicRoughness.baseColorTexture.index, material.emissiveTexture.index});
+    data.insert({material.pbrMetallicRoughness.metallicRoughnessTexture.index, material.occlusionTexture.index});
+  }
   std::map<int, Image> decoded;  // images a later texture still needs
   for (std::size_t t = 0; t < model.textures.size(); ++t) {
     Texture texture;
+    const int index = static_cast<int>(t);
+    if (data.count(index)) {
+      if (colour.count(index))
+        warnings.push_back(at("textures", t) + ": used both as a colour (sRGB) and as data (linear); read as colour everywhere");
+      else
+        texture.encoding = TexelEncoding::Linear;
+    }
     texture.name = model.textures[t].name;
     const int source = model.textures[t].source;
     if (source < 0 || static_cast<std::size_t>(source) >= model.images.size()) {
@@ -264,7 +277,7 @@ void convertTextures(const tinygltf::Model& model, const std::map<int, std::stri
         texture.image = image->second;
       }
     }
-    texture.mips = mipLevels(texture.image);
+    texture.mips = mipLevels(texture.image, texture.encoding);
     if (const int s = model.textures[t].sampler; s >= 0 && static_cast<std::size_t>(s) < model.samplers.size())
       texture.sampler = samplerOf(model.samplers[static_cast<std::size_t>(s)]);
     scene.textures.push_back(std::move(texture));
@@ -322,19 +335,30 @@ void convertMaterials(const tinygltf::Model& model, Scene& scene, Warnings& warn
       material.alphaMode = AlphaMode::Blend;
       warnings.push_back(at("materials", m) + ": alphaMode BLEND is drawn opaque (facet does not blend yet)");
     }
-    const int texture = pbr.baseColorTexture.index;
     material.baseColorTransform = textureTransformOf(pbr.baseColorTexture.extensions, at("materials", m) + ": baseColorTexture");
-    if (texture >= 0) {
+    // A texture reference: its index when it names a texture with an image, else -1 with a warning.
+    const auto reference = [&](const char* key, int texture, int texCoord, const tinygltf::ExtensionMap& extensions, bool transformed) {
+      if (texture < 0) return -1;
       if (static_cast<std::size_t>(texture) >= scene.textures.size()) {
-        warnings.push_back(at("materials", m) + ": baseColorTexture " + std::to_string(texture) + " does not exist (UNRESOLVED_REFERENCE); ignored");
-      } else if (scene.textures[static_cast<std::size_t>(texture)].image.empty()) {
-        warnings.push_back(at("materials", m) + ": baseColorTexture " + std::to_string(texture) + " has no image; drawn untextured");
-      } else {
-        material.baseColorTexture = texture;
-        if (pbr.baseColorTexture.texCoord != 0)
-          warnings.push_back(at("materials", m) + ": baseColorTexture uses TEXCOORD_" + std::to_string(pbr.baseColorTexture.texCoord) + "; TEXCOORD_0 is used instead");
+        warnings.push_back(at("materials", m) + ": " + key + " " + std::to_string(texture) + " does not exist (UNRESOLVED_REFERENCE); ignored");
+        return -1;
       }
-    }
+      if (scene.textures[static_cast<std::size_t>(texture)].image.empty()) {
+        warnings.push_back(at("materials", m) + ": " + key + " " + std::to_string(texture) + " has no image; ignored");
+        return -1;
+      }
+      if (texCoord != 0)
+        warnings.push_back(at("materials", m) + ": " + key + " uses TEXCOORD_" + std::to_string(texCoord) + "; TEXCOORD_0 is used instead");
+      if (!transformed && extensions.count("KHR_texture_transform"))
+        warnings.push_back(at("materials", m) + ": " + key + "'s KHR_texture_transform is ignored (only the base colour texture's is applied)");
+      return texture;
+    };
+    material.baseColorTexture = reference("baseColorTexture", pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, pbr.baseColorTexture.extensions, true);
+    const auto& mr = pbr.metallicRoughnessTexture;
+    material.metallicRoughnessTexture = reference("metallicRoughnessTexture", mr.index, mr.texCoord, mr.extensions, false);
+    material.occlusionTexture = reference("occlusionTexture", src.occlusionTexture.index, src.occlusionTexture.texCoord, src.occlusionTexture.extensions, false);
+    material.occlusionStrength = clamp01(src.occlusionTexture.strength, 1.0f);
+    material.emissiveTexture = reference("emissiveTexture", src.emissiveTexture.index, src.emissiveTexture.texCoord, src.emissiveTexture.extensions, false);
     scene.materials.push_back(material);
   }
 }

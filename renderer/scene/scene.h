@@ -13,6 +13,7 @@
 #include <glm/vec4.hpp>
 
 #include "image/image.h"
+#include "image/mipmap.h"
 #include "scene/light.h"
 
 namespace facet {
@@ -55,6 +56,10 @@ struct Material {
   glm::vec4 baseColor{1.0f};      // O_d (linear RGB) and alpha
   int baseColorTexture = -1;      // index into Scene::textures, -1 = none
   TextureTransform baseColorTransform;  // its KHR_texture_transform
+  int metallicRoughnessTexture = -1;    // G: roughness, B: metallic, as data (shading=pbr)
+  int occlusionTexture = -1;            // R: ambient occlusion, as data (shading=pbr)
+  float occlusionStrength = 1.0f;       // ao = 1 + strength·(R - 1)
+  int emissiveTexture = -1;             // multiplies k_e, as colour (shading=pbr)
   glm::vec3 emissive{0.0f};       // k_e, linear RGB
   float metallic = 1.0f;          // glTF default
   float roughness = 1.0f;         // glTF default
@@ -77,7 +82,8 @@ struct Sampler {
 
 struct Texture {
   std::string name;
-  Image image;                     // level 0: RGBA8, sRGB-encoded as glTF stores base colour
+  Image image;                     // level 0: RGBA8, sRGB-encoded colour or linear data (encoding)
+  TexelEncoding encoding = TexelEncoding::Srgb;  // as its materials read it (image/mipmap.h)
   std::vector<Image> mips;         // levels 1 .. down to 1×1 (image/mipmap.h), built once by the loader
   Sampler sampler;
 

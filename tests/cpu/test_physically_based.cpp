@@ -161,3 +161,32 @@ TEST_CASE("pbr: a metal's light takes its base colour, a dielectric's highlight 
   CHECK(smoothAt > roughAt);
   CHECK(roughOff > smoothOff);
 }
+
+TEST_CASE("pbr: the maps scale roughness by G and metallic by B as data, occlusion by strength, and k_e by the emissive colour") {
+  Scene scene;
+  const auto texture = [&](Rgba8 c, TexelEncoding encoding) {
+    Texture t;
+    t.image = Image(1, 1, c);
+    t.encoding = encoding;
+    scene.textures.push_back(t);
+    return static_cast<int>(scene.textures.size() - 1);
+  };
+  CourseMaterial m;
+  m.metallic = 0.5f, m.roughness = 0.8f, m.emissive = glm::vec3(2.0f), m.occlusionStrength = 0.5f;
+  m.metallicRoughnessMap.texture = texture({0, 128, 255, 255}, TexelEncoding::Linear);
+  m.occlusionMap.texture = texture({64, 0, 0, 255}, TexelEncoding::Linear);
+  m.emissiveMap.texture = texture({255, 128, 0, 255}, TexelEncoding::Srgb);
+  Mesh mesh;
+  mesh.texcoords = {{0.5f, 0.5f}};
+  const cpu::PbrSurface s = cpu::pbrSurfaceAt(scene, m, mesh, glm::vec3(1.0f), {0.5f, 0.5f}, glm::vec4(0.0f));
+  CHECK(s.roughness == doctest::Approx(0.8 * 128.0 / 255.0));
+  CHECK(s.metallic == doctest::Approx(0.5));
+  CHECK(s.occlusion == doctest::Approx(1.0 + 0.5 * (64.0 / 255.0 - 1.0)));
+  CHECK(s.emissive.r == doctest::Approx(2.0));
+  CHECK(s.emissive.g == doctest::Approx(2.0 * srgbTables().decoded[128]));  // colour: decoded, not 128/255
+  CHECK(s.emissive.b == 0.0f);
+  // Without texture coordinates the maps are not read: the factors alone.
+  const cpu::PbrSurface bare = cpu::pbrSurfaceAt(scene, m, Mesh{}, glm::vec3(1.0f), {0.5f, 0.5f}, glm::vec4(0.0f));
+  CHECK(bare.roughness == 0.8f);
+  CHECK(bare.occlusion == 1.0f);
+}

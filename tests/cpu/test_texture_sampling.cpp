@@ -42,7 +42,7 @@ TEST_CASE("mipmaps: each level halves the one above, box-averaged in linear ligh
   Image stripes(4, 2);
   for (int y = 0; y < 2; ++y)
     for (int x = 0; x < 4; ++x) stripes.at(x, y) = x % 2 ? Rgba8{255, 255, 255, 255} : Rgba8{0, 0, 0, 0};
-  const std::vector<Image> levels = mipLevels(stripes);
+  const std::vector<Image> levels = mipLevels(stripes, TexelEncoding::Srgb);
   REQUIRE(levels.size() == 2);
   CHECK(levels[0].width() == 2);
   CHECK(levels[0].height() == 1);
@@ -53,7 +53,7 @@ TEST_CASE("mipmaps: each level halves the one above, box-averaged in linear ligh
   // 3x1: the one texel of level 1 averages all three (2/3 white), not the first two.
   Image odd(3, 1);
   odd.at(0, 0) = {0, 0, 0, 255}, odd.at(1, 0) = {255, 255, 255, 255}, odd.at(2, 0) = {255, 255, 255, 255};
-  const std::vector<Image> oddLevels = mipLevels(odd);
+  const std::vector<Image> oddLevels = mipLevels(odd, TexelEncoding::Srgb);
   REQUIRE(oddLevels.size() == 1);
   CHECK(oddLevels[0].at(0, 0).r == encodeLevel(2.0f / 3.0f));
   CHECK(mipLevelCount(1, 1) == 0);
@@ -111,15 +111,15 @@ TEST_CASE("within a level: NEAREST reads the texel under the point, LINEAR mixes
   Image image(2, 1);
   image.at(0, 0) = {0, 0, 0, 255}, image.at(1, 0) = {255, 255, 255, 255};
   // s = 0.5 is the boundary between the two texels: NEAREST takes the right one, LINEAR half of each.
-  CHECK(cpu::sampleLevel(image, false, Wrap::ClampToEdge, Wrap::ClampToEdge, {0.5f, 0.5f}).r == 1.0f);
-  CHECK(cpu::sampleLevel(image, false, Wrap::ClampToEdge, Wrap::ClampToEdge, {0.49f, 0.5f}).r == 0.0f);
-  CHECK(cpu::sampleLevel(image, true, Wrap::ClampToEdge, Wrap::ClampToEdge, {0.5f, 0.5f}).r == 0.5f);
+  CHECK(cpu::sampleLevel(image, TexelEncoding::Srgb, false, Wrap::ClampToEdge, Wrap::ClampToEdge, {0.5f, 0.5f}).r == 1.0f);
+  CHECK(cpu::sampleLevel(image, TexelEncoding::Srgb, false, Wrap::ClampToEdge, Wrap::ClampToEdge, {0.49f, 0.5f}).r == 0.0f);
+  CHECK(cpu::sampleLevel(image, TexelEncoding::Srgb, true, Wrap::ClampToEdge, Wrap::ClampToEdge, {0.5f, 0.5f}).r == 0.5f);
   // Beyond the right edge: CLAMP keeps white, REPEAT wraps to black, MIRRORED reflects back to white.
-  CHECK(cpu::sampleLevel(image, true, Wrap::ClampToEdge, Wrap::ClampToEdge, {1.0f, 0.5f}).r == 1.0f);
-  CHECK(cpu::sampleLevel(image, true, Wrap::Repeat, Wrap::ClampToEdge, {1.0f, 0.5f}).r == 0.5f);
-  CHECK(cpu::sampleLevel(image, true, Wrap::MirroredRepeat, Wrap::ClampToEdge, {1.0f, 0.5f}).r == 1.0f);
-  CHECK(cpu::sampleLevel(image, false, Wrap::Repeat, Wrap::Repeat, {1.2f, 0.5f}).r == 0.0f);
-  CHECK(cpu::sampleLevel(image, false, Wrap::MirroredRepeat, Wrap::Repeat, {1.2f, 0.5f}).r == 1.0f);
+  CHECK(cpu::sampleLevel(image, TexelEncoding::Srgb, true, Wrap::ClampToEdge, Wrap::ClampToEdge, {1.0f, 0.5f}).r == 1.0f);
+  CHECK(cpu::sampleLevel(image, TexelEncoding::Srgb, true, Wrap::Repeat, Wrap::ClampToEdge, {1.0f, 0.5f}).r == 0.5f);
+  CHECK(cpu::sampleLevel(image, TexelEncoding::Srgb, true, Wrap::MirroredRepeat, Wrap::ClampToEdge, {1.0f, 0.5f}).r == 1.0f);
+  CHECK(cpu::sampleLevel(image, TexelEncoding::Srgb, false, Wrap::Repeat, Wrap::Repeat, {1.2f, 0.5f}).r == 0.0f);
+  CHECK(cpu::sampleLevel(image, TexelEncoding::Srgb, false, Wrap::MirroredRepeat, Wrap::Repeat, {1.2f, 0.5f}).r == 1.0f);
 }
 
 TEST_CASE("KHR_texture_transform: the coordinates by T*R*S as Khronos' TextureTransformTest shows it, the derivatives by its linear part") {

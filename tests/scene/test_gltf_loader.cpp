@@ -707,3 +707,32 @@ TEST_CASE("COLOR_0: float RGB, normalized unsigned byte RGBA and unsigned short 
   }
   CHECK(coloured == 3);
 }
+
+TEST_CASE("material maps: metallic-roughness and occlusion textures are data, emissive ones colour, and their mips follow") {
+  const Scene scene = loadGltf(std::string(FACET_TEST_DATA) + "/../../assets/scenes/pbr_maps.gltf");
+  CHECK(scene.warnings.empty());
+  REQUIRE(scene.materials.size() == 4);
+  CHECK(scene.materials[0].metallicRoughnessTexture == 0);
+  CHECK(scene.materials[1].occlusionTexture == 1);
+  CHECK(scene.materials[1].occlusionStrength == 1.0f);
+  CHECK(scene.materials[2].emissiveTexture == 2);
+  REQUIRE(scene.textures.size() == 3);
+  CHECK(scene.textures[0].encoding == TexelEncoding::Linear);
+  CHECK(scene.textures[1].encoding == TexelEncoding::Linear);
+  CHECK(scene.textures[2].encoding == TexelEncoding::Srgb);
+  // The metallic-roughness map's 1×1 level is the byte average of its roughness ramp, not an sRGB one.
+  const Rgba8 last = scene.textures[0].level(scene.textures[0].levelCount() - 1).at(0, 0);
+  CHECK(last.b == 128);           // half the texels metallic 255, half 0
+  CHECK(std::abs(last.g - 127) <= 1);  // the ramp 0..255..0 averages to half
+}
+
+TEST_CASE("material maps: a texture used both as colour and as data is read as colour, with a warning naming it") {
+  const Scene scene = loadJson([] {
+    nlohmann::json d = nlohmann::json::parse(asset([](nlohmann::json&) {}, false));
+    d["images"] = {{{"uri", dataUri(pngHeader(1, 1))}}};
+    d["textures"] = {{{"source", 0}}};
+    d["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"metallicRoughnessTexture", {{"index", 0}}}}}}};
+    return d;
+  }());
+  CHECK(hasWarning(scene, "textures[0]: used both as a colour (sRGB) and as data (linear); read as colour everywhere"));
+}

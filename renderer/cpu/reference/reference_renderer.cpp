@@ -200,8 +200,9 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
           const glm::vec3 unit = normalize3(glm::vec3{f[3], f[4], f[5]});
           const glm::vec3 N = front ? unit : -unit;  // two-sided lighting
           if (frame.shading == ShadingMode::Pbr)
-            return shadePhysicallyBased(frame, maps, {baseColor(f, planes, px, py), material.metallic, material.roughness, material.emissive}, P, N,
-                                        viewVector<float>(frame, P));
+            return shadePhysicallyBased(frame, maps,
+                                        pbrSurfaceAt(scene, material, mesh, baseColor(f, planes, px, py), {f[uv], f[uv + 1]}, planes.quadDerivatives(uv, px, py)),
+                                        P, N, viewVector<float>(frame, P));
           return shade(illuminate(frame, maps, laneMaterial(material), P, N, viewVector<float>(frame, P)), baseColor(f, planes, px, py));
         }
         if (frame.shading == ShadingMode::Gouraud) {
