@@ -455,7 +455,7 @@ class Gltf:
 
     # -- meshes
 
-    def primitive(self, mesh, material, colors=None):
+    def primitive(self, mesh, material, colors=None, tangents=None):
         """A primitive of `mesh` with `material`; the mesh's accessors are
         written the first time it is used and shared after. TEXCOORD_0 is
         written only for a material with a texture; `colors` is a COLOR_0 accessor."""
@@ -469,22 +469,25 @@ class Gltf:
         attributes, indices, _ = self.mesh_accessors[key]
         m = self.doc["materials"][material]
         textured = any(k in m["pbrMetallicRoughness"] for k in ("baseColorTexture", "metallicRoughnessTexture")) or \
-            any(k in m for k in ("occlusionTexture", "emissiveTexture"))
+            any(k in m for k in ("occlusionTexture", "emissiveTexture", "normalTexture"))
         if textured and "TEXCOORD_0" not in attributes:
             attributes["TEXCOORD_0"] = self.add_accessor(mesh.uvs, "VEC2")
         primitive = {"attributes": dict(attributes), "indices": indices, "material": material}
         if colors is not None:
             primitive["attributes"]["COLOR_0"] = colors
+        if tangents is not None:
+            primitive["attributes"]["TANGENT"] = self.add_accessor(tangents, "VEC4")
         return primitive
 
     def add_mesh(self, name, *primitives):
         return self.append("meshes", {"name": name, "primitives": list(primitives)})
 
     def add_material(self, name, color, metallic=None, roughness=None, texture=None, double_sided=None, emissive=None,
-                     alpha_mode=None, alpha_cutoff=None, metallic_roughness=None, occlusion=None, emissive_texture=None):
+                     alpha_mode=None, alpha_cutoff=None, metallic_roughness=None, occlusion=None, emissive_texture=None,
+                     normal=None):
         """A material; metallic, roughness, doubleSided, alphaMode and
         alphaCutoff left out when None (glTF's defaults: 1, 1, false, OPAQUE, 0.5).
-        occlusion: (texture, strength)."""
+        occlusion: (texture, strength); normal: (texture, scale)."""
         pbr = {"baseColorFactor": nums(color)}
         if metallic is not None:
             pbr["metallicFactor"] = num(metallic)
@@ -499,6 +502,8 @@ class Gltf:
             material["occlusionTexture"] = {"index": occlusion[0], "strength": num(occlusion[1])}
         if emissive_texture is not None:
             material["emissiveTexture"] = {"index": emissive_texture}
+        if normal is not None:
+            material["normalTexture"] = {"index": normal[0], "scale": num(normal[1])}
         if double_sided is not None:
             material["doubleSided"] = double_sided
         if emissive is not None:
@@ -894,6 +899,44 @@ def pbr_maps():
     return g
 
 
+def dimples_normal_map(size=64, cells=4):
+    """A tangent-space normal texture of a grid of round dimples, (n + 1)/2 in
+    bytes with n = normalize(-dh/du, -dh/dv, 1); the top row of the PNG is t = 0."""
+    def height(u, v):
+        cu, cv = (u * cells) % 1 - 0.5, (v * cells) % 1 - 0.5
+        r2 = (cu * cu + cv * cv) / 0.16
+        return -(1 - r2) ** 2 if r2 < 1 else 0.0
+    def pixel(x, y):
+        u, v, e = (x + 0.5) / size, (y + 0.5) / size, 0.5 / size
+        du = (height(u + e, v) - height(u - e, v)) / (2 * e) * 0.05
+        dv = (height(u, v + e) - height(u, v - e)) / (2 * e) * 0.05
+        # v grows down the image while the tangent frame's t axis grows up the texture: dh/dt = -dh/dv.
+        n = normalize((-du, dv, 1.0))
+        return tuple(int(round(255 * (c + 1) / 2)) for c in n)
+    return png(size, size, pixel)
+
+
+def normal_map():
+    g = Gltf("A glTF normal texture of round dimples, 4 by 4 per face: on a sphere (tangents computed by facet), "
+             "on a square panel (tangents from the file's TANGENT) and on a cube at scale 2. The dimples catch the "
+             "light on the side facing it and shade on the other, with Phong and pbr shading; flat and Gouraud "
+             "shading light per triangle or vertex and show none.")
+    sampler = g.add_sampler(LINEAR, LINEAR_MIPMAP_LINEAR, REPEAT, REPEAT)
+    dimples = g.add_texture(g.add_image("dimples normal map 64x64", dimples_normal_map()), sampler)
+    blue = g.add_material("blue, dimpled", (0.25, 0.4, 0.85, 1), 0.0, 0.35, normal=(dimples, 1.0))
+    sand = g.add_material("sand, dimpled", (0.85, 0.72, 0.5, 1), 0.0, 0.5, normal=(dimples, 1.0))
+    clay = g.add_material("clay, dimpled at scale 2", (0.8, 0.35, 0.3, 1), 0.0, 0.5, normal=(dimples, 2.0))
+    g.add_node("sphere", g.add_mesh("sphere", g.primitive(uv_sphere(0.5, 64, 32), blue)), translation=(-1.2, 0.5, 0))
+    panel = quad(0.9, 0.9)
+    g.add_node("panel", g.add_mesh("panel", g.primitive(panel, sand, tangents=[(1, 0, 0, 1)] * len(panel.positions))),
+               translation=(0.05, 0.55, -0.1))
+    g.add_node("cube", g.add_mesh("cube", g.primitive(cube(0.7), clay)), translation=(1.25, 0.35, 0), rotation=axis_angle((0, 1, 0), 35))
+    add_ground(g, 5, 3)
+    g.add_camera("camera", (0, 1.3, 3.2), (0, 0.45, 0))
+    g.add_light("key", "point", (-1.5, 2.5, 2.5), intensity=14.0)
+    return g
+
+
 def height_map(size=128):
     """A greyscale height map: a round hill in the middle, a ring of ripples
     around it and a low border, h from 0 (black) to 1 (white)."""
@@ -1101,6 +1144,7 @@ SCENES = [
     (MATERIALS_DIR, "texture_transform.gltf", texture_transform),
     (MATERIALS_DIR, "alpha_mask.gltf", alpha_mask),
     (MATERIALS_DIR, "pbr_maps.gltf", pbr_maps),
+    (MATERIALS_DIR, "normal_map.gltf", normal_map),
     (ASSETS_DIR, "transformations.gltf", transformations),
     (ASSETS_DIR, "projections.gltf", projections),
     (ASSETS_DIR, "culling.gltf", culling),

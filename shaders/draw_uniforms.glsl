@@ -15,13 +15,16 @@ uniform vec3 baseColorTransform[2];// its KHR_texture_transform: the rows of st'
 
 uniform ivec4 metallicRoughnessSampler, occlusionSampler, emissiveSampler;  // shading=pbr's maps' samplers, as baseColorSampler
 uniform float occlusionStrength;   // ao = 1 + strength·(R - 1)
-uniform ivec3 mapsSrgb;            // 1 where a map's texels are sRGB colour: metallic-roughness, occlusion, emissive
+uniform ivec4 mapsSrgb;            // 1 where a map's texels are sRGB colour: metallic-roughness, occlusion, emissive, normal
+uniform ivec4 normalMapSampler;    // the normal texture's sampler, as baseColorSampler
+uniform float normalScale;         // scales its x and y
 
 layout(binding = 0) uniform sampler2DArray shadowMaps;  // pass 1: one S×S depth layer per light face
 layout(binding = 1) uniform usampler2D baseColorTexture; // sRGB-encoded bytes (GL_RGBA8UI), bottom row first
 layout(binding = 3) uniform usampler2D metallicRoughnessMap;  // data bytes: G roughness, B metallic (shading=pbr)
 layout(binding = 4) uniform usampler2D occlusionMap;          // data bytes: R occlusion
 layout(binding = 5) uniform usampler2D emissiveMap;           // sRGB-encoded bytes
+layout(binding = 6) uniform usampler2D normalMap;             // data bytes: tangent-space normal (Phong and pbr)
 
 // O_d = factor · COLOR_0 · texel at texture coordinates st, whose
 // derivatives are (dFdx(st), dFdy(st)), and its alpha

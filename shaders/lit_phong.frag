@@ -12,12 +12,14 @@
 #include "environment.glsl"
 #include "lighting.glsl"
 #include "physically_based.glsl"
+#include "normal_mapping.glsl"
 
 in vec3 worldPosition;
 in vec3 worldNormal;
 in vec2 st;
 in vec4 vertexColor;
 in vec3 modelPoint;
+in vec4 worldTangent;
 
 layout(location = 0) out vec4 color;
 
@@ -25,6 +27,10 @@ void main() {
   vec4 stDerivatives = vec4(dFdx(st), dFdy(st));  // in uniform control flow, before anything can branch
   vec3 P = worldPosition;
   vec3 N = normalize3(worldNormal);
+#if FACET_NORMAL_MAP
+  // A normal texture bends the unit interpolated normal; the result is normalized as that one is.
+  N = normalize3(normalMapped(N, worldTangent, st, stDerivatives));
+#endif
   if (!gl_FrontFacing) N = -N;  // two-sided lighting: a back face is drawn only where it is not culled
   vec4 O = baseColorAt(st, stDerivatives, vertexColor, modelPoint);
   if (!alphaKept(O.a)) discard;  // alpha mask (a no-op unless FACET_MASKED)

@@ -11,6 +11,7 @@
 #include "cpu/alpha_mask.h"
 #include "cpu/binning.h"
 #include "cpu/interpolation.h"
+#include "cpu/normal_mapping.h"
 #include "cpu/lighting.h"
 #include "cpu/passes.h"
 #include "cpu/phong_batch.h"
@@ -47,6 +48,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
   const CourseMaterial* material = nullptr;
   const Mesh* drawnMesh = nullptr;
   const Texture* texture = nullptr;
+  const Texture* normalMap = nullptr;  // Phong and pbr
   bool colored = false;
   int used = 0;  // varyings set up for the triangle: a prefix of the layout
   const bool procedural = frame.procedural != Procedural::None;
@@ -69,6 +71,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         material = &frame.materials[static_cast<std::size_t>(instance.material)];
         drawnMesh = &mesh;
         texture = baseColorTextureOf(scene, frame, *material, mesh);
+        normalMap = layout.tangent >= 0 ? normalMapOf(scene, *material, mesh) : nullptr;
         colored = !mesh.colors.empty();
         used = procedural ? layout.count : colored ? layout.model : (kMode == ShadingMode::Flat && !texture ? 0 : layout.color);
         back = !t.snapped.frontFacing;
@@ -79,7 +82,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
       if constexpr (kMode == ShadingMode::Phong) {
         // Four pixels of one untextured, uncoloured triangle in a row: interpolation on four lanes, straight into the batch.
         const std::uint32_t* row = &scratch.id[(py - ty0) * kTileSize + (px - tx0)];
-        if (!texture && !colored && !procedural && px + 3 <= tx1 && row[1] == id && row[2] == id && row[3] == id) {
+        if (!texture && !colored && !procedural && !normalMap && px + 3 <= tx1 && row[1] == id && row[2] == id && row[3] == id) {
           const __m128 w = in->inverseW4(px, py);
           const __m128 P[3] = {in->varying4(0, px, py, w), in->varying4(1, px, py, w), in->varying4(2, px, py, w)};
           const __m128 N[3] = {in->varying4(3, px, py, w), in->varying4(4, px, py, w), in->varying4(5, px, py, w)};
@@ -101,16 +104,24 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         baseColor *= glm::vec3(
             sampleBaseColorTexture(*texture, *material, {v[layout.uv], v[layout.uv + 1]}, in->quadDerivatives(layout.uv, px, py)));
       glm::vec3 color;
+      glm::vec3 interpolatedNormal(0.0f);
+      if constexpr (kMode == ShadingMode::Pbr || kMode == ShadingMode::Phong) {
+        interpolatedNormal = {v[3], v[4], v[5]};
+        // A normal texture bends the unit interpolated normal; the result is normalized as the interpolated one is.
+        if (normalMap)
+          interpolatedNormal = normalMapped(*normalMap, *material, normalize3(interpolatedNormal), {v[layout.tangent], v[layout.tangent + 1], v[layout.tangent + 2], v[layout.tangent + 3]},
+                                            {v[layout.uv], v[layout.uv + 1]}, in->quadDerivatives(layout.uv, px, py));
+      }
       if constexpr (kMode == ShadingMode::Pbr) {
         const glm::vec3 P{v[0], v[1], v[2]};
-        const glm::vec3 unit = normalize3(glm::vec3{v[3], v[4], v[5]});
+        const glm::vec3 unit = normalize3(interpolatedNormal);
         const glm::vec3 N = back ? -unit : unit;  // two-sided lighting
         const PbrSurface surface = pbrSurfaceAt(scene, *material, *drawnMesh, baseColor, {v[layout.uv], v[layout.uv + 1]}, in->quadDerivatives(layout.uv, px, py));
         color = shadePhysicallyBased(frame, maps, surface, P, N, viewVector<float>(frame, P));
       } else if constexpr (kMode == ShadingMode::Phong) {
         // N is normalized (and negated on a back face, two-sided lighting) in the batch
         batch.add(static_cast<std::size_t>(py) * static_cast<std::size_t>(image.width()) + static_cast<std::size_t>(px), {v[0], v[1], v[2]},
-                  {v[3], v[4], v[5]}, back, baseColor, *material);
+                  interpolatedNormal, back, baseColor, *material);
         continue;  // written when the batch is shaded
       } else if constexpr (kMode == ShadingMode::Gouraud) {
         const int side = back ? 6 : 0;
@@ -157,6 +168,9 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
       if (interpolatesNormals(frame.shading)) {
         put(varyings, 0, P);
         put(varyings, 3, normalize3(transformDirection(instance.normalMatrix, mesh.normals[local])));
+        // The tangent turns with the surface (TM's upper 3×3), w rides along; (0, 0, 0, 1) without one.
+        const glm::vec4 t = mesh.tangents.empty() ? glm::vec4(0.0f, 0.0f, 0.0f, 1.0f) : mesh.tangents[local];
+        put(varyings, layout.tangent, glm::vec4(transformDirection(glm::mat3(instance.worldFromModel), glm::vec3(t)), t.w));
       } else if (frame.shading == ShadingMode::Gouraud) {
         const glm::vec3 N = normalize3(transformDirection(instance.normalMatrix, mesh.normals[local]));
         const glm::vec3 V = viewVector<float>(frame, P);

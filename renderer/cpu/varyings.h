@@ -2,8 +2,8 @@
 // What the lit pass interpolates per shading mode, after a window vertex's
 // x, y, z, 1/w: the fast renderer's packed vertices and the reference's
 // clip vertices lay them out alike.
-//   Phong and pbr: world position 0-2, normal 3-5, texture coordinates 6-7, vertex colour 8-11,
-//            model position 12-14
+//   Phong and pbr: world position 0-2, normal 3-5, texture coordinates 6-7,
+//            world tangent and its w 8-11, vertex colour 12-15, model position 16-18
 //   Gouraud: front diffuse 0-2, front specular 3-5, back diffuse 6-8,
 //            back specular 9-11, texture coordinates 12-13, vertex colour 14-17,
 //            model position 18-20
@@ -23,6 +23,7 @@ struct VaryingLayout {
   int uv = 0;     // the first texture coordinate
   int color = 0;  // the vertex colour's red (COLOR_0: R, G, B, A)
   int model = 0;  // the model-space position's x (procedural textures); model = color + 4, count = model + 3
+  int tangent = -1;  // the world tangent's x, then y, z, w (normal textures; Phong and pbr only), -1 = none
 
   // The varyings a frame packs: all of them with a procedural texture, else those before the model position.
   int packed(Procedural procedural) const { return procedural == Procedural::None ? model : count; }
@@ -31,7 +32,7 @@ struct VaryingLayout {
 constexpr VaryingLayout varyingLayout(ShadingMode mode) {
   switch (mode) {
     case ShadingMode::Phong:
-    case ShadingMode::Pbr: return {15, 6, 8, 12};
+    case ShadingMode::Pbr: return {19, 6, 12, 16, 8};
     case ShadingMode::Gouraud: return {21, 12, 14, 18};
     default: return {9, 0, 2, 6};
   }

@@ -25,6 +25,7 @@ constexpr GLuint kEnvironmentUnit = 2;        // usampler2D environmentMap (envi
 constexpr GLuint kMetallicRoughnessUnit = 3;  // usampler2D metallicRoughnessMap (draw_uniforms.glsl)
 constexpr GLuint kOcclusionUnit = 4;          // usampler2D occlusionMap
 constexpr GLuint kEmissiveUnit = 5;           // usampler2D emissiveMap
+constexpr GLuint kNormalMapUnit = 6;          // usampler2D normalMap
 constexpr GLuint kMeshIndicesBinding = 0;     // storage buffers of lit_flat.vert
 constexpr GLuint kMeshPositionsBinding = 1;
 constexpr GLuint kMeshTexcoordsBinding = 2;
@@ -180,7 +181,8 @@ DrawVariant GlFrameRenderer::drawVariant(const FrameInputs& frame, const FrameIn
           material.masked,
           pbrMaps && material.metallicRoughnessMap.texture >= 0,
           pbrMaps && material.occlusionMap.texture >= 0,
-          pbrMaps && material.emissiveMap.texture >= 0};
+          pbrMaps && material.emissiveMap.texture >= 0,
+          interpolatesNormals(frame.shading) && material.normalMap.texture >= 0 && mesh.tangents};
 }
 
 DrawVariant GlFrameRenderer::maskVariant(const FrameInputs& frame, const FrameInstance& instance) const {
@@ -226,6 +228,8 @@ bool GlFrameRenderer::preparePrograms(const FrameInputs& frame) {
                                          .emissiveSampler = at("emissiveSampler"),
                                          .occlusionStrength = at("occlusionStrength"),
                                          .mapsSrgb = at("mapsSrgb"),
+                                         .normalMapSampler = at("normalMapSampler"),
+                                         .normalScale = at("normalScale"),
                                          .baseColorFactor = at("baseColorFactor"),
                                          .alpha = alphaUniforms(program),
                                          .program = std::move(program)});
@@ -397,7 +401,8 @@ void GlFrameRenderer::setMapUniforms(const LitProgram& lit, const CourseMaterial
     GLuint unit;
   } maps[] = {{variant.metallicRoughnessMap, material.metallicRoughnessMap, lit.metallicRoughnessSampler, kMetallicRoughnessUnit},
               {variant.occlusionMap, material.occlusionMap, lit.occlusionSampler, kOcclusionUnit},
-              {variant.emissiveMap, material.emissiveMap, lit.emissiveSampler, kEmissiveUnit}};
+              {variant.emissiveMap, material.emissiveMap, lit.emissiveSampler, kEmissiveUnit},
+              {variant.normalMap, material.normalMap, lit.normalMapSampler, kNormalMapUnit}};
   for (const auto& m : maps) {
     if (!m.used) continue;
     const Sampler& s = m.map.sampler;
@@ -405,8 +410,9 @@ void GlFrameRenderer::setMapUniforms(const LitProgram& lit, const CourseMaterial
     gl_.glBindTextureUnit(m.unit, scene_.texture(m.map.texture));
   }
   if (variant.occlusionMap) gl_.glProgramUniform1f(program, lit.occlusionStrength, material.occlusionStrength);
-  gl_.glProgramUniform3i(program, lit.mapsSrgb, material.metallicRoughnessMap.srgb ? 1 : 0, material.occlusionMap.srgb ? 1 : 0,
-                         material.emissiveMap.srgb ? 1 : 0);
+  if (variant.normalMap) gl_.glProgramUniform1f(program, lit.normalScale, material.normalScale);
+  gl_.glProgramUniform4i(program, lit.mapsSrgb, material.metallicRoughnessMap.srgb ? 1 : 0, material.occlusionMap.srgb ? 1 : 0,
+                         material.emissiveMap.srgb ? 1 : 0, material.normalMap.srgb ? 1 : 0);
 }
 
 void GlFrameRenderer::checkError(const char* where) const {

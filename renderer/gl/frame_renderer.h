@@ -62,7 +62,8 @@ class GlFrameRenderer {
   struct LitProgram {
     GLint clipFromModel, worldFromModel, normalMatrix;
     GLint emissive, ka, kd, ks, shininess, metallic, roughness;
-    GLint metallicRoughnessSampler, occlusionSampler, emissiveSampler, occlusionStrength, mapsSrgb;  // shading=pbr's maps
+    GLint metallicRoughnessSampler, occlusionSampler, emissiveSampler, occlusionStrength, mapsSrgb;
+    GLint normalMapSampler, normalScale;  // the normal texture (Phong and pbr)  // shading=pbr's maps
     GLint baseColorFactor;
     AlphaUniforms alpha;
     ShaderProgram program;

@@ -44,6 +44,10 @@ MeshBuffers uploadMesh(const GlFunctions& gl, const Mesh& mesh) {
     buffers.colors = uploadBuffer(gl, mesh.colors);
     addAttribute(gl, vao, kColorAttribute, buffers.colors, 4);
   }
+  if (mesh.tangents.size() == mesh.positions.size()) {
+    buffers.tangents = uploadBuffer(gl, mesh.tangents);
+    addAttribute(gl, vao, kTangentAttribute, buffers.tangents, 4);
+  }
   gl.glVertexArrayElementBuffer(vao, buffers.indices.id());
   return buffers;
 }

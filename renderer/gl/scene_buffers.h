@@ -13,12 +13,14 @@ inline constexpr GLuint kPositionAttribute = 0;  // vec3, model space
 inline constexpr GLuint kNormalAttribute = 1;    // vec3, model space
 inline constexpr GLuint kTexcoordAttribute = 2;  // vec2, TEXCOORD_0
 inline constexpr GLuint kColorAttribute = 3;     // vec4, COLOR_0 (linear RGBA)
+inline constexpr GLuint kTangentAttribute = 4;   // vec4, TANGENT (xyz unit, w ±1); (0, 0, 0, 1) when the mesh has none
 
 struct MeshBuffers {
   GlObject positions;    // x y z per vertex; also read as a storage buffer by lit_flat.vert
   GlObject normals;
   GlObject texcoords;    // none when the mesh has no TEXCOORD_0; also a storage buffer for lit_flat.vert
   GlObject colors;       // none when the mesh has no COLOR_0; also a storage buffer for lit_flat.vert
+  GlObject tangents;     // none when the mesh has no tangents
   GlObject indices;      // three per triangle; also a storage buffer for lit_flat.vert
   GlObject vertexArray;  // the attributes above and the index buffer
   GLsizei indexCount = 0;  // whole triangles only

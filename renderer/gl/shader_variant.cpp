@@ -25,6 +25,7 @@ std::string drawVariantDefines(DrawVariant variant) {
   d += "#define FACET_METALLIC_ROUGHNESS_MAP " + std::string(variant.metallicRoughnessMap ? "1" : "0") + "\n";
   d += "#define FACET_OCCLUSION_MAP " + std::string(variant.occlusionMap ? "1" : "0") + "\n";
   d += "#define FACET_EMISSIVE_MAP " + std::string(variant.emissiveMap ? "1" : "0") + "\n";
+  d += "#define FACET_NORMAL_MAP " + std::string(variant.normalMap ? "1" : "0") + "\n";
   return d;
 }
 

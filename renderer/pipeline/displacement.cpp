@@ -13,6 +13,7 @@
 #include "image/png.h"
 #include "scene/memory_budget.h"
 #include "scene/vertex_normals.h"
+#include "scene/vertex_tangents.h"
 
 namespace facet {
 namespace {
@@ -89,7 +90,8 @@ void displaceMeshes(Scene& scene, const Image& heights, float scale, int subdivi
       const std::string what = "material.displacementSubdivisions: meshes[" + std::to_string(m) + "] '" + mesh.name + "' subdivided " +
                                std::to_string(subdivisions) + " times: " + std::to_string(vertices) + " vertices and " + std::to_string(triangles) +
                                " triangles";
-      const std::uint64_t perVertex = 2 * sizeof(glm::vec3) + sizeof(glm::vec2) + (mesh.colors.empty() ? 0 : sizeof(glm::vec4));
+      const std::uint64_t perVertex = 2 * sizeof(glm::vec3) + sizeof(glm::vec2) + (mesh.colors.empty() ? 0 : sizeof(glm::vec4)) +
+                                      (mesh.tangents.empty() ? 0 : sizeof(glm::vec4));
       sceneBudget.charge(vertices * perVertex + triangles * 3 * sizeof(std::uint32_t), what);
     }
     verticesAfter[m] = vertices, trianglesAfter[m] = triangles;
@@ -114,6 +116,7 @@ void displaceMeshes(Scene& scene, const Image& heights, float scale, int subdivi
       mesh.positions[v] += static_cast<float>(scale * h) * mesh.normals[v];
     }
     computeVertexNormals(mesh);
+    if (!mesh.tangents.empty()) computeVertexTangents(mesh);  // the displaced surface's, as its normals
   }
   scene.identity.renew();
 }

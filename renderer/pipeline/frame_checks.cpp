@@ -37,6 +37,9 @@ void checkMesh(const Scene& scene, std::size_t m) {
                 " positions");
   if (!mesh.colors.empty() && mesh.colors.size() != n)
     throw Error(meshName(scene, m) + ": " + std::to_string(mesh.colors.size()) + " vertex colours for " + std::to_string(n) + " positions");
+  if (!mesh.tangents.empty() && (mesh.tangents.size() != n || mesh.texcoords.empty()))
+    throw Error(meshName(scene, m) + ": " + std::to_string(mesh.tangents.size()) + " tangents for " + std::to_string(n) + " positions" +
+                (mesh.texcoords.empty() ? " and no texture coordinates" : ""));
   if (n >= kMaxFrameVertices) throw Error(meshName(scene, m) + ": " + std::to_string(n) + " vertices, more than a frame holds");
   for (std::size_t i = 0; i < mesh.indices.size(); ++i)
     if (mesh.indices[i] >= n)
@@ -105,7 +108,8 @@ void checkScene(const Scene& scene) {
     const std::pair<const char*, int> maps[] = {{"base colour", material.baseColorTexture},
                                                 {"metallic-roughness", material.metallicRoughnessTexture},
                                                 {"occlusion", material.occlusionTexture},
-                                                {"emissive", material.emissiveTexture}};
+                                                {"emissive", material.emissiveTexture},
+                                                {"normal", material.normalTexture}};
     for (const auto& [what, texture] : maps)
       if (!textureUsable(scene, texture))
         throw Error("material " + std::to_string(m) + " '" + material.name + "': " + what + " texture " + std::to_string(texture) + " is missing or empty");
@@ -126,7 +130,8 @@ void checkFrame(const Scene& scene, const FrameInputs& frame) {
     if (instance.material < 0 || static_cast<std::size_t>(instance.material) >= frame.materials.size())
       throw Error("frame instance " + std::to_string(i) + ": material " + std::to_string(instance.material) + " is not in the frame");
     const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
-    for (const int texture : {material.baseColorTexture, material.metallicRoughnessMap.texture, material.occlusionMap.texture, material.emissiveMap.texture})
+    for (const int texture : {material.baseColorTexture, material.metallicRoughnessMap.texture, material.occlusionMap.texture, material.emissiveMap.texture,
+                               material.normalMap.texture})
       if (!textureUsable(scene, texture))
         throw Error("frame instance " + std::to_string(i) + ": texture " + std::to_string(texture) + " of its material is missing or empty");
     vertices += scene.meshes[static_cast<std::size_t>(instance.mesh)].positions.size();

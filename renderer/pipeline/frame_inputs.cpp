@@ -77,7 +77,7 @@ FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings)
     CourseMaterial course = courseMaterial(m, settings.material);
     if (course.baseColorTexture >= 0 && static_cast<std::size_t>(course.baseColorTexture) < scene.textures.size())  // else refused by checkFrame
       course.baseColorSampler = filteredSampler(scene.textures[static_cast<std::size_t>(course.baseColorTexture)].sampler, settings.textures.filter);
-    for (MaterialMap* map : {&course.metallicRoughnessMap, &course.occlusionMap, &course.emissiveMap})
+    for (MaterialMap* map : {&course.metallicRoughnessMap, &course.occlusionMap, &course.emissiveMap, &course.normalMap})
       if (map->texture >= 0 && static_cast<std::size_t>(map->texture) < scene.textures.size())
         map->sampler = filteredSampler(scene.textures[static_cast<std::size_t>(map->texture)].sampler, settings.textures.filter),
         map->srgb = scene.textures[static_cast<std::size_t>(map->texture)].encoding == TexelEncoding::Srgb;

@@ -34,6 +34,8 @@ CourseMaterial courseMaterial(const Material& material, const MaterialOverrides&
   out.occlusionMap.texture = material.occlusionTexture;
   out.emissiveMap.texture = material.emissiveTexture;
   out.occlusionStrength = material.occlusionStrength;
+  out.normalMap.texture = material.normalTexture;
+  out.normalScale = material.normalScale;
   out.doubleSided = material.doubleSided;
   return out;
 }

@@ -31,6 +31,9 @@ struct CourseMaterial {
   // shading=pbr's maps (PIPELINE.md, section 7): G and B scale r and m, R is the ambient occlusion, RGB scales k_e.
   MaterialMap metallicRoughnessMap, occlusionMap, emissiveMap;
   float occlusionStrength = 1;  // ao = 1 + strength·(R - 1)
+  // A glTF normal texture, tangent space (PIPELINE.md, section 8): Phong and pbr read it per pixel.
+  MaterialMap normalMap;
+  float normalScale = 1;        // scales its x and y
   bool doubleSided = false;
   // Alpha mask (PIPELINE.md, section 8): α = factor·COLOR_0.a·texel.a, each where present;
   // with `masked`, a fragment is kept when α ≥ alphaCutoff (NaN discards).

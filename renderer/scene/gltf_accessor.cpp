@@ -226,6 +226,15 @@ std::vector<glm::vec3> readVec3(const tinygltf::Model& model, int accessor) {
   });
 }
 
+std::vector<glm::vec4> readVec4(const tinygltf::Model& model, int accessor) {
+  const ElementSpan s = locate(model, accessor, 4);
+  if (s.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
+    throw AccessorError{name(accessor) + ": componentType " + std::to_string(s.componentType) + " is not FLOAT (MESH_PRIMITIVE_ATTRIBUTES_ACCESSOR_INVALID_FORMAT)"};
+  return readAll<glm::vec4>(model, accessor, s, [](const ElementSpan& span, std::uint64_t e) {
+    return glm::vec4(component(span, e, 0), component(span, e, 1), component(span, e, 2), component(span, e, 3));
+  });
+}
+
 std::vector<glm::vec2> readVec2(const tinygltf::Model& model, int accessor) {
   const ElementSpan s = locate(model, accessor, 2);
   const bool floatOrUnorm = s.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ||

@@ -32,6 +32,8 @@ std::uint64_t accessorCount(const tinygltf::Model& model, int accessor);
 
 // Float VEC3 (POSITION, NORMAL).
 std::vector<glm::vec3> readVec3(const tinygltf::Model& model, int accessor);
+// Float VEC4 (TANGENT).
+std::vector<glm::vec4> readVec4(const tinygltf::Model& model, int accessor);
 // VEC2 of float, or normalized unsigned byte/short (TEXCOORD_n).
 std::vector<glm::vec2> readVec2(const tinygltf::Model& model, int accessor);
 // VEC3 or VEC4 of float, or normalized unsigned byte/short (COLOR_n), as

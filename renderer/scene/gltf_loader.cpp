@@ -36,6 +36,7 @@
 #include "scene/gltf_sampler.h"
 #include "scene/memory_budget.h"
 #include "scene/vertex_normals.h"
+#include "scene/vertex_tangents.h"
 #include "settings/render_settings.h"
 
 namespace facet {
@@ -251,7 +252,7 @@ void convertTextures(const tinygltf::Model& model, const std::map<int, std::stri
   std::set<int> colour, data;
   for (const tinygltf::Material& material : model.materials) {
     colour.insert({material.pbrMetallicRoughness.baseColorTexture.index, material.emissiveTexture.index});
-    data.insert({material.pbrMetallicRoughness.metallicRoughnessTexture.index, material.occlusionTexture.index});
+    data.insert({material.pbrMetallicRoughness.metallicRoughnessTexture.index, material.occlusionTexture.index, material.normalTexture.index});
   }
   std::map<int, Image> decoded;  // images a later texture still needs
   for (std::size_t t = 0; t < model.textures.size(); ++t) {
@@ -358,6 +359,8 @@ void convertMaterials(const tinygltf::Model& model, Scene& scene, Warnings& warn
     material.metallicRoughnessTexture = reference("metallicRoughnessTexture", mr.index, mr.texCoord, mr.extensions, false);
     material.occlusionTexture = reference("occlusionTexture", src.occlusionTexture.index, src.occlusionTexture.texCoord, src.occlusionTexture.extensions, false);
     material.occlusionStrength = clamp01(src.occlusionTexture.strength, 1.0f);
+    material.normalTexture = reference("normalTexture", src.normalTexture.index, src.normalTexture.texCoord, src.normalTexture.extensions, false);
+    material.normalScale = std::isfinite(src.normalTexture.scale) ? static_cast<float>(src.normalTexture.scale) : 1.0f;
     material.emissiveTexture = reference("emissiveTexture", src.emissiveTexture.index, src.emissiveTexture.texCoord, src.emissiveTexture.extensions, false);
     scene.materials.push_back(material);
   }
@@ -400,6 +403,12 @@ bool drawable(glm::vec3 v) {
   return std::fabs(v.x) <= kMaxWorldCoordinate && std::fabs(v.y) <= kMaxWorldCoordinate && std::fabs(v.z) <= kMaxWorldCoordinate;
 }
 
+// Whether a primitive's mesh gets tangents: its material has a normal texture and it has TEXCOORD_0.
+bool needsTangents(const tinygltf::Model& model, const tinygltf::Primitive& prim) {
+  return prim.material >= 0 && static_cast<std::size_t>(prim.material) < model.materials.size() &&
+         model.materials[static_cast<std::size_t>(prim.material)].normalTexture.index >= 0 && prim.attributes.count("TEXCOORD_0");
+}
+
 // What a primitive's mesh will hold, priced from its accessors' counts
 // before any is read: positions and normals (read or computed), texture
 // coordinates, and its indices (a strip or fan's triangle list besides).
@@ -410,6 +419,7 @@ void pricePrimitive(const tinygltf::Model& model, const tinygltf::Primitive& pri
   std::uint64_t bytes = vertices * (sizeof(glm::vec3) + sizeof(glm::vec3)) + indices * sizeof(std::uint32_t);
   if (prim.attributes.count("TEXCOORD_0")) bytes += vertices * sizeof(glm::vec2);
   if (prim.attributes.count("COLOR_0")) bytes += vertices * sizeof(glm::vec4);
+  if (needsTangents(model, prim)) bytes += vertices * sizeof(glm::vec4);
   if (mode != TINYGLTF_MODE_TRIANGLES && indices > 2) bytes += 3 * (indices - 2) * sizeof(std::uint32_t);
   budget.charge(bytes, name + ": " + std::to_string(vertices) + " vertices (" + at("accessors", static_cast<std::size_t>(positionAccessor)) +
                            ") and " + std::to_string(indices) + " indices");
@@ -541,6 +551,26 @@ bool convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& p
         warnings.push_back(name + ": COLOR_0 " + e.message + "; ignored");
         mesh.colors.clear();
       }
+    }
+    // Tangents for a normal texture: the file's TANGENT (unit xyz, w ±1) where it is sound, else computed.
+    if (needsTangents(model, prim) && !mesh.texcoords.empty()) {
+      if (const auto tangent = prim.attributes.find("TANGENT"); tangent != prim.attributes.end()) {
+        try {
+          mesh.tangents = readVec4(model, tangent->second);
+          std::size_t bad = 0;
+          for (const glm::vec4& t : mesh.tangents)
+            if (!std::isfinite(t.x + t.y + t.z) || !(std::fabs(glm::length(glm::vec3(t)) - 1.0f) < 1e-2f) || !(t.w == 1.0f || t.w == -1.0f)) ++bad;
+          if (mesh.tangents.size() != vertexCount || bad) {
+            warnings.push_back(name + ": TANGENT has " + (bad ? countOf(bad, "element") + " not unit with w = +-1" : std::string("another count than POSITION")) +
+                               "; tangents computed");
+            mesh.tangents.clear();
+          }
+        } catch (const AccessorError& e) {
+          warnings.push_back(name + ": TANGENT " + e.message + "; tangents computed");
+          mesh.tangents.clear();
+        }
+      }
+      if (mesh.tangents.empty()) computeVertexTangents(mesh);
     }
   } catch (const AccessorError& e) {
     warnings.push_back(name + ": " + e.message + "; skipped");

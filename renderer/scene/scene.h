@@ -25,6 +25,9 @@ struct Mesh {
   std::vector<glm::vec3> normals;     // model space, unit length, one per position
   std::vector<glm::vec2> texcoords;   // TEXCOORD_0, empty when the mesh has none
   std::vector<glm::vec4> colors;      // COLOR_0, linear RGBA, empty when the mesh has none
+  // TANGENT: xyz the model-space unit tangent (along increasing s), w = ±1 the bitangent's side
+  // (B = w·(N × T)); read or computed (scene/vertex_tangents.h) where a normal texture needs it, else empty.
+  std::vector<glm::vec4> tangents;
   std::vector<std::uint32_t> indices; // three per triangle, counter-clockwise = front
   int material = -1;                  // index into Scene::materials, -1 = the default material
 
@@ -60,6 +63,8 @@ struct Material {
   int occlusionTexture = -1;            // R: ambient occlusion, as data (shading=pbr)
   float occlusionStrength = 1.0f;       // ao = 1 + strength·(R - 1)
   int emissiveTexture = -1;             // multiplies k_e, as colour (shading=pbr)
+  int normalTexture = -1;               // tangent-space normals, as data (Phong and pbr)
+  float normalScale = 1.0f;             // scales the normal texture's x and y
   glm::vec3 emissive{0.0f};       // k_e, linear RGB
   float metallic = 1.0f;          // glTF default
   float roughness = 1.0f;         // glTF default

@@ -57,7 +57,7 @@ std::vector<glm::vec4> evaluate(const std::string& expression, const std::vector
   const std::string probe = "#version 450 core\n#include \"frame_block.glsl\"\n#include \"transform.glsl\"\n#include \"shading_math.glsl\"\n"
                             "#include \"srgb.glsl\"\n#include \"texture.glsl\"\n#include \"procedural.glsl\"\n#include \"draw_uniforms.glsl\"\n"
                             "#include \"environment.glsl\"\n#include \"lighting.glsl\"\n#include \"physically_based.glsl\"\n"
-                            "layout(binding = 6) uniform sampler2D inputA;\nlayout(binding = 7) uniform sampler2D inputB;\nout vec4 value;\n"
+                            "layout(binding = 14) uniform sampler2D inputA;\nlayout(binding = 15) uniform sampler2D inputB;\nout vec4 value;\n"
                             "void main() {\n  vec4 a = texelFetch(inputA, ivec2(gl_FragCoord.xy), 0), b = texelFetch(inputB, ivec2(gl_FragCoord.xy), 0);\n"
                             "  value = " + expression + ";\n}\n";
   const FrameInputs frame = buildFrameInputs(makeDefaultScene(), RenderSettings{});
@@ -67,8 +67,8 @@ std::vector<glm::vec4> evaluate(const std::string& expression, const std::vector
   gl.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
   gl.glViewport(0, 0, kWidth, 1);
   gl.glUseProgram(program.id());
-  gl.glBindTextureUnit(6, textureA.id());
-  gl.glBindTextureUnit(7, textureB.id());
+  gl.glBindTextureUnit(14, textureA.id());
+  gl.glBindTextureUnit(15, textureB.id());
   gl.glBindBufferBase(GL_UNIFORM_BUFFER, 1, tables.id());
   gl.glBindBufferBase(GL_UNIFORM_BUFFER, 2, splitSumTable.id());
   gl.glBindVertexArray(vertexArray.id());

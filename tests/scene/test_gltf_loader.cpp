@@ -18,6 +18,7 @@
 #include "scene/gltf_loader.h"
 #include "scene/load_scene.h"
 #include "scene/memory_budget.h"
+#include "scene/vertex_tangents.h"
 
 using namespace facet;
 
@@ -735,4 +736,34 @@ TEST_CASE("material maps: a texture used both as colour and as data is read as c
     return d;
   }());
   CHECK(hasWarning(scene, "textures[0]: used both as a colour (sRGB) and as data (linear); read as colour everywhere"));
+}
+
+TEST_CASE("normal textures: tangents from the file's TANGENT, or computed along increasing s with w for a mirrored layout") {
+  const Scene scene = loadGltf(std::string(FACET_TEST_DATA) + "/../../assets/scenes/normal_map.gltf");
+  CHECK(scene.warnings.empty());
+  int tangentMeshes = 0;
+  for (const Mesh& mesh : scene.meshes) {
+    if (mesh.tangents.empty()) continue;
+    ++tangentMeshes;
+    REQUIRE(mesh.tangents.size() == mesh.positions.size());
+    for (std::size_t v = 0; v < mesh.tangents.size(); ++v) {
+      const glm::vec3 T(mesh.tangents[v]);
+      CHECK(std::fabs(glm::length(T) - 1.0f) < 1e-5f);
+      CHECK(std::fabs(glm::dot(T, mesh.normals[v])) < 1e-5f);
+      CHECK(std::fabs(mesh.tangents[v].w) == 1.0f);
+    }
+  }
+  CHECK(tangentMeshes == 3);  // the ground has no normal texture and gets none
+  // A quad with s to the right and t down the image (glTF's): T = +x and B = w·(N × T) up the image, +y: w = +1.
+  // With s mirrored, T = -x and B still up: w = -1.
+  Mesh quad;
+  quad.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  quad.normals.assign(4, {0, 0, 1});
+  quad.indices = {0, 1, 2, 0, 2, 3};
+  quad.texcoords = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};  // glTF's t grows downward
+  computeVertexTangents(quad);
+  CHECK(quad.tangents[0] == glm::vec4(1, 0, 0, 1));  // what the panel's TANGENT in normal_map.gltf says, as exporters write it
+  quad.texcoords = {{1, 1}, {0, 1}, {0, 0}, {1, 0}};
+  computeVertexTangents(quad);
+  CHECK(quad.tangents[0] == glm::vec4(-1, 0, 0, -1));
 }

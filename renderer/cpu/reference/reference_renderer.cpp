@@ -24,6 +24,7 @@
 #include "cpu/environment_mapping.h"
 #include "cpu/procedural.h"
 #include "cpu/interpolation.h"
+#include "cpu/normal_mapping.h"
 #include "cpu/lighting.h"
 #include "cpu/physically_based.h"
 #include "cpu/rasterize.h"
@@ -143,6 +144,7 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
     const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
     const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
     const Texture* texture = baseColorTextureOf(scene, frame, material, mesh);
+    const Texture* normalMap = interpolatesNormals(frame.shading) ? normalMapOf(scene, material, mesh) : nullptr;
     const bool colored = !mesh.colors.empty();
     // O_d = factor · COLOR_0 · texel, each factor only where the mesh has it; the texel is a
     // procedural texture's grey where the frame has one.
@@ -176,6 +178,10 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
           for (int c = 0; c < 3; ++c) out[model + c] = mesh.positions[i][c];
         if (interpolatesNormals(frame.shading)) {
           for (int c = 0; c < 3; ++c) out[c] = world[k][c], out[3 + c] = N[c];
+          const glm::vec4 tangent = mesh.tangents.empty() ? glm::vec4(0.0f, 0.0f, 0.0f, 1.0f) : mesh.tangents[i];
+          const glm::vec3 T = transformDirection(glm::mat3(instance.worldFromModel), glm::vec3(tangent));
+          for (int c = 0; c < 3; ++c) out[layout.tangent + c] = T[c];
+          out[layout.tangent + 3] = tangent.w;
         } else if (frame.shading == ShadingMode::Gouraud) {  // the illumination equation at the vertex, both sides
           const glm::vec3 V = viewVector<float>(frame, world[k]);
           const Illumination front = illuminate(frame, maps, laneMaterial(material), world[k], N, V);
@@ -197,7 +203,11 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
       const FragmentShader fragment = [&](const float* f, bool front, const Interpolation& planes, int px, int py) -> glm::vec3 {
         if (interpolatesNormals(frame.shading)) {
           const glm::vec3 P{f[0], f[1], f[2]};
-          const glm::vec3 unit = normalize3(glm::vec3{f[3], f[4], f[5]});
+          glm::vec3 normal{f[3], f[4], f[5]};
+          if (normalMap)  // the normal texture bends the unit interpolated normal, then it is normalized as that one is
+            normal = normalMapped(*normalMap, material, normalize3(normal), {f[layout.tangent], f[layout.tangent + 1], f[layout.tangent + 2], f[layout.tangent + 3]},
+                                  {f[uv], f[uv + 1]}, planes.quadDerivatives(uv, px, py));
+          const glm::vec3 unit = normalize3(normal);
           const glm::vec3 N = front ? unit : -unit;  // two-sided lighting
           if (frame.shading == ShadingMode::Pbr)
             return shadePhysicallyBased(frame, maps,

@@ -1,0 +1,17 @@
+// glTF normal textures (renderer/PIPELINE.md, section 8, "Normal textures"):
+// the tangent-space normal of the texture turned into world space by the
+// pixel's tangent frame. Mirror: renderer/cpu/normal_mapping.h.
+// Needs shading_math.glsl, texture.glsl and draw_uniforms.glsl before it.
+
+// N' before it is normalized: n = (2·texel - 1) with x, y times the scale,
+// T = normalize3(t - N·(N·t)), B = ±(N × T) by the tangent's w, N' = (T·n.x + B·n.y) + N·n.z.
+vec3 normalMapped(vec3 N, vec4 tangent, vec2 st, vec4 d) {
+  vec4 texel = sampleTexture(normalMap, mapsSrgb.w != 0, normalMapSampler, st, d);
+  precise float x = (2.0 * texel.r - 1.0) * normalScale, y = (2.0 * texel.g - 1.0) * normalScale;
+  precise float z = 2.0 * texel.b - 1.0;
+  vec3 t = tangent.xyz;
+  precise vec3 T = normalize3(t - N * dot3(N, t));
+  precise vec3 B = (tangent.w < 0.0 ? -1.0 : 1.0) * cross3(N, T);
+  precise vec3 bent = (T * x + B * y) + N * z;
+  return bent;
+}

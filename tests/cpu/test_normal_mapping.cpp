@@ -1,0 +1,46 @@
+// glTF normal textures (renderer/PIPELINE.md, section 8): a flat texel keeps
+// the normal, a tilted one turns it toward T or B by its x and y, the scale
+// multiplies x and y, and w picks the bitangent's side.
+#include <doctest/doctest.h>
+#include <glm/geometric.hpp>
+
+#include "cpu/normal_mapping.h"
+
+using namespace facet;
+
+namespace {
+
+// A 1×1 data texture holding one tangent-space normal n, as bytes round((n + 1)/2·255).
+Texture normalTexel(glm::vec3 n) {
+  Texture t;
+  const auto byte = [](float c) { return static_cast<std::uint8_t>(std::lround((c + 1.0f) * 0.5f * 255.0f)); };
+  t.image = Image(1, 1, {byte(n.x), byte(n.y), byte(n.z), 255});
+  t.encoding = TexelEncoding::Linear;
+  return t;
+}
+
+glm::vec3 bent(const Texture& map, float scale, glm::vec4 tangent) {
+  CourseMaterial m;
+  m.normalScale = scale;
+  return glm::normalize(cpu::normalMapped(map, m, {0, 0, 1}, tangent, {0.5f, 0.5f}, glm::vec4(0.0f)));
+}
+
+}  // namespace
+
+TEST_CASE("normal textures: a flat texel keeps N, a tilted one turns N toward T or B, scaled, on w's side") {
+  const glm::vec4 T(1, 0, 0, 1);
+  CHECK(glm::length(bent(normalTexel({0, 0, 1}), 1.0f, T) - glm::vec3(0, 0, 1)) < 0.01f);
+  const glm::vec3 toT = bent(normalTexel(glm::normalize(glm::vec3(0.5f, 0, 1))), 1.0f, T);
+  CHECK(toT.x > 0.4f);
+  CHECK(std::fabs(toT.y) < 0.01f);
+  const glm::vec3 toB = bent(normalTexel(glm::normalize(glm::vec3(0, 0.5f, 1))), 1.0f, T);
+  CHECK(toB.y > 0.4f);  // B = w·(N × T) = +y
+  CHECK(bent(normalTexel(glm::normalize(glm::vec3(0, 0.5f, 1))), 1.0f, {1, 0, 0, -1}).y < -0.4f);
+  // The scale multiplies x and y: twice the tilt.
+  const glm::vec3 doubled = bent(normalTexel(glm::normalize(glm::vec3(0.3f, 0, 1))), 2.0f, T);
+  const glm::vec3 once = bent(normalTexel(glm::normalize(glm::vec3(0.3f, 0, 1))), 1.0f, T);
+  CHECK(doubled.x / doubled.z == doctest::Approx(2.0f * once.x / once.z).epsilon(0.02));
+  // A tangent that is not perpendicular to N is made so: the result does not lean along N's own direction.
+  const glm::vec3 leaning = bent(normalTexel({0, 0, 1}), 1.0f, {1, 0, 0.8f, 1});
+  CHECK(glm::length(leaning - glm::vec3(0, 0, 1)) < 0.01f);
+}
