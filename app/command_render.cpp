@@ -15,6 +15,7 @@
 #include "cpu/reference/reference_renderer.h"
 #include "image/png.h"
 #include "pipeline/frame_inputs.h"
+#include "pipeline/bump_map.h"
 #include "pipeline/displacement.h"
 #include "scene/environment_map.h"
 #include "scene/load_scene.h"
@@ -66,6 +67,7 @@ Command addRenderCommand(CLI::App& app) {
     Scene scene = loadScene(options->common.scenePath);
     const RenderSettings settings = settingsFor(options->common, scene);
     useDisplacement(scene, settings.material);
+    useBumpMap(scene, settings.material);
     useEnvironment(scene, settings.environment);
     for (const std::string& warning : scene.warnings) std::fprintf(stderr, "warning: %s: %s\n", scene.source.c_str(), warning.c_str());
     const FrameInputs frame = buildFrameInputs(scene, settings);

@@ -975,6 +975,24 @@ def displacement():
     return g
 
 
+def bump():
+    g = Gltf("Bump mapping, with --set material.bumpMap=assets/displacement/height.png (and material.bumpScale): "
+             "the course's N' = N + B_u (N x P_t) - B_v (N x P_s) per pixel with Phong or pbr shading, on a flat square "
+             "and a sphere: the hill and ripples of the height map appear in the shading under a low light, while the "
+             "silhouettes and shadows stay those of the flat square and the smooth sphere (the geometry does not move, "
+             "unlike displacement mapping).")
+    white = g.add_texture(g.add_image("white 4x4", png(4, 4, lambda x, y: (255, 255, 255))),
+                          g.add_sampler(LINEAR, LINEAR_MIPMAP_LINEAR, REPEAT, REPEAT))
+    sand = g.add_material("sand", (0.85, 0.72, 0.5, 1), 0.0, 0.6, texture=white)
+    blue = g.add_material("blue", (0.25, 0.4, 0.85, 1), 0.0, 0.4, texture=white)
+    g.add_node("square", g.add_mesh("square", g.primitive(plane(2.4, 2.4), sand)), translation=(-0.9, 0.01, 0))
+    g.add_node("sphere", g.add_mesh("sphere", g.primitive(uv_sphere(0.55, 64, 32), blue)), translation=(1.2, 0.6, 0))
+    add_ground(g, 6, 5)
+    g.add_camera("camera", (0.2, 2.0, 3.2), (0.1, 0.2, 0))
+    g.add_light("low sun", "directional", (-4, 1.5, 1.0), (0, 0, 0), intensity=1.4)
+    return g
+
+
 def write_png(path, png_bytes):
     os.makedirs(os.path.dirname(path), exist_ok=True)
     with open(path, "wb") as out:
@@ -1156,6 +1174,7 @@ SCENES = [
     (ASSETS_DIR, "environment.gltf", environment),
     (ASSETS_DIR, "displacement.gltf", displacement),
     (ASSETS_DIR, "materials.gltf", materials),
+    (ASSETS_DIR, "bump.gltf", bump),
 ]
 
 

@@ -21,7 +21,7 @@ struct LightData {
 layout(std140, binding = 0) uniform Frame {
   vec4 eyePosition;         // xyz: P_eye; w: 1 perspective, 0 parallel
   vec4 towardEye;           // xyz: -k, V under parallel projection
-  vec4 ambient;             // x: I_a; y: k, the procedural texture's cells per model unit
+  vec4 ambient;             // x: I_a; y: k, the procedural texture's cells per model unit; z: k of the bump map
   vec4 shadowParams;        // x: b_slope; y: b_min; z: map size S
   vec4 background;          // rgb: linear background
   LightData lights[FACET_MAX_LIGHTS];

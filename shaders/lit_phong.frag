@@ -13,6 +13,7 @@
 #include "lighting.glsl"
 #include "physically_based.glsl"
 #include "normal_mapping.glsl"
+#include "bump_mapping.glsl"
 
 in vec3 worldPosition;
 in vec3 worldNormal;
@@ -30,6 +31,9 @@ void main() {
 #if FACET_NORMAL_MAP
   // A normal texture bends the unit interpolated normal; the result is normalized as that one is.
   N = normalize3(normalMapped(N, worldTangent, st, stDerivatives));
+#endif
+#if FACET_BUMP_MAP
+  N = normalize3(bumped(N, worldTangent, st));  // the course's bump mapping, after the normal texture
 #endif
   if (!gl_FrontFacing) N = -N;  // two-sided lighting: a back face is drawn only where it is not culled
   vec4 O = baseColorAt(st, stDerivatives, vertexColor, modelPoint);

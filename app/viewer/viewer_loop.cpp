@@ -15,6 +15,7 @@
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
+#include "pipeline/bump_map.h"
 #include "pipeline/displacement.h"
 #include "scene/environment_map.h"
 #include "common/error.h"
@@ -95,11 +96,14 @@ struct DrawnFrame {
 // with that map, made once per displacement and map.
 std::shared_ptr<const Scene> sceneFor(const ViewerState& state, DrawnFrame& drawn) {
   const std::string displacement = displacementKey(state.settings.material);
-  const auto matches = [&](const Scene& s) { return s.environment.path == state.settings.environment.map && s.displacement == displacement; };
+  const auto matches = [&](const Scene& s) {
+    return s.environment.path == state.settings.environment.map && s.displacement == displacement && s.bumpMapPath == state.settings.material.bumpMap;
+  };
   if (matches(*state.scene)) return state.scene;
   if (drawn.withEnvironment && drawn.environmentBase == state.scene && matches(*drawn.withEnvironment)) return drawn.withEnvironment;
   auto copy = std::make_shared<Scene>(*state.scene);
   useDisplacement(*copy, state.settings.material);
+  useBumpMap(*copy, state.settings.material);
   useEnvironment(*copy, state.settings.environment);
   drawn.environmentBase = state.scene;
   drawn.withEnvironment = copy;

@@ -10,6 +10,7 @@
 
 #include "cpu/alpha_mask.h"
 #include "cpu/binning.h"
+#include "cpu/bump_mapping.h"
 #include "cpu/interpolation.h"
 #include "cpu/normal_mapping.h"
 #include "cpu/lighting.h"
@@ -49,6 +50,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
   const Mesh* drawnMesh = nullptr;
   const Texture* texture = nullptr;
   const Texture* normalMap = nullptr;  // Phong and pbr
+  bool bumpable = false;               // Phong and pbr: the frame has a bump map and the mesh tangents
   bool colored = false;
   int used = 0;  // varyings set up for the triangle: a prefix of the layout
   const bool procedural = frame.procedural != Procedural::None;
@@ -72,6 +74,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         drawnMesh = &mesh;
         texture = baseColorTextureOf(scene, frame, *material, mesh);
         normalMap = layout.tangent >= 0 ? normalMapOf(scene, *material, mesh) : nullptr;
+        bumpable = layout.tangent >= 0 && frame.bump.map && !mesh.tangents.empty();
         colored = !mesh.colors.empty();
         used = procedural ? layout.count : colored ? layout.model : (kMode == ShadingMode::Flat && !texture ? 0 : layout.color);
         back = !t.snapped.frontFacing;
@@ -82,7 +85,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
       if constexpr (kMode == ShadingMode::Phong) {
         // Four pixels of one untextured, uncoloured triangle in a row: interpolation on four lanes, straight into the batch.
         const std::uint32_t* row = &scratch.id[(py - ty0) * kTileSize + (px - tx0)];
-        if (!texture && !colored && !procedural && !normalMap && px + 3 <= tx1 && row[1] == id && row[2] == id && row[3] == id) {
+        if (!texture && !colored && !procedural && !normalMap && !bumpable && px + 3 <= tx1 && row[1] == id && row[2] == id && row[3] == id) {
           const __m128 w = in->inverseW4(px, py);
           const __m128 P[3] = {in->varying4(0, px, py, w), in->varying4(1, px, py, w), in->varying4(2, px, py, w)};
           const __m128 N[3] = {in->varying4(3, px, py, w), in->varying4(4, px, py, w), in->varying4(5, px, py, w)};
@@ -108,9 +111,11 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
       if constexpr (kMode == ShadingMode::Pbr || kMode == ShadingMode::Phong) {
         interpolatedNormal = {v[3], v[4], v[5]};
         // A normal texture bends the unit interpolated normal; the result is normalized as the interpolated one is.
+        const glm::vec4 tangent{v[layout.tangent], v[layout.tangent + 1], v[layout.tangent + 2], v[layout.tangent + 3]};
+        const glm::vec2 st{v[layout.uv], v[layout.uv + 1]};
         if (normalMap)
-          interpolatedNormal = normalMapped(*normalMap, *material, normalize3(interpolatedNormal), {v[layout.tangent], v[layout.tangent + 1], v[layout.tangent + 2], v[layout.tangent + 3]},
-                                            {v[layout.uv], v[layout.uv + 1]}, in->quadDerivatives(layout.uv, px, py));
+          interpolatedNormal = normalMapped(*normalMap, *material, normalize3(interpolatedNormal), tangent, st, in->quadDerivatives(layout.uv, px, py));
+        if (bumpable) interpolatedNormal = bumped(*frame.bump.map, frame.bump.scale, normalize3(interpolatedNormal), tangent, st);
       }
       if constexpr (kMode == ShadingMode::Pbr) {
         const glm::vec3 P{v[0], v[1], v[2]};

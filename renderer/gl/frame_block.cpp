@@ -21,7 +21,7 @@ FrameBlock makeFrameBlock(const FrameInputs& frame) {
   FrameBlock block{};
   block.eyePosition = glm::vec4(frame.eyePosition, frame.perspective ? 1.0f : 0.0f);
   block.towardEye = glm::vec4(frame.towardEye, 0.0f);
-  block.ambient = glm::vec4(frame.ambient, frame.proceduralScale, 0.0f, 0.0f);
+  block.ambient = glm::vec4(frame.ambient, frame.proceduralScale, frame.bump.scale, 0.0f);
   const FrameInputs::Environment& e = frame.environment;
   block.environment = glm::vec4(e.reflectivity, e.map ? 1.0f : 0.0f, e.map && e.background ? 1.0f : 0.0f,
                                 e.map ? static_cast<float>(e.map->levelCount() - 1) : 0.0f);

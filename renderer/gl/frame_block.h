@@ -34,7 +34,7 @@ struct LightBlock {
 struct FrameBlock {
   glm::vec4 eyePosition;     // xyz: P_eye; w: 1 perspective, 0 parallel
   glm::vec4 towardEye;       // xyz: -k, V under parallel projection
-  glm::vec4 ambient;         // x: I_a; y: k of the procedural texture
+  glm::vec4 ambient;         // x: I_a; y: k of the procedural texture; z: k of the bump map
   glm::vec4 shadowParams;    // x: b_slope; y: b_min; z: map size S
   glm::vec4 background;      // rgb: linear background
   std::array<LightBlock, facet::kMaxLights> lights;

@@ -26,6 +26,7 @@ constexpr GLuint kMetallicRoughnessUnit = 3;  // usampler2D metallicRoughnessMap
 constexpr GLuint kOcclusionUnit = 4;          // usampler2D occlusionMap
 constexpr GLuint kEmissiveUnit = 5;           // usampler2D emissiveMap
 constexpr GLuint kNormalMapUnit = 6;          // usampler2D normalMap
+constexpr GLuint kBumpMapUnit = 7;            // usampler2D bumpMap (bump_mapping.glsl)
 constexpr GLuint kMeshIndicesBinding = 0;     // storage buffers of lit_flat.vert
 constexpr GLuint kMeshPositionsBinding = 1;
 constexpr GLuint kMeshTexcoordsBinding = 2;
@@ -182,7 +183,8 @@ DrawVariant GlFrameRenderer::drawVariant(const FrameInputs& frame, const FrameIn
           pbrMaps && material.metallicRoughnessMap.texture >= 0,
           pbrMaps && material.occlusionMap.texture >= 0,
           pbrMaps && material.emissiveMap.texture >= 0,
-          interpolatesNormals(frame.shading) && material.normalMap.texture >= 0 && mesh.tangents};
+          interpolatesNormals(frame.shading) && material.normalMap.texture >= 0 && mesh.tangents,
+          frame.bump.map != nullptr && mesh.tangents};
 }
 
 DrawVariant GlFrameRenderer::maskVariant(const FrameInputs& frame, const FrameInstance& instance) const {
@@ -295,6 +297,7 @@ void GlFrameRenderer::litPass(const FrameInputs& frame) {
   gl_.glDisable(GL_DEPTH_TEST);
   gl_.glDisable(GL_CULL_FACE);
   gl_.glBindTextureUnit(kEnvironmentUnit, scene_.environment());
+  gl_.glBindTextureUnit(kBumpMapUnit, frame.bump.map ? scene_.bumpMap() : 0);
   gl_.glUseProgram(backgroundProgram_->id());
   gl_.glProgramUniform2f(backgroundProgram_->id(), backgroundViewportSize_, static_cast<float>(frame.width),
                          static_cast<float>(frame.height));

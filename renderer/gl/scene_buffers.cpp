@@ -81,6 +81,7 @@ SceneBuffers::SceneBuffers(const GlFunctions& gl, const Scene& scene) {
     // Level k of the strip is 6·max(1, N >> k) wide, within the 6N >> k that storage allots it.
     environment_ = uploadTexture(gl, scene.environment.faces, scene.environment.mips);
   }
+  if (!scene.bumpMap.image.empty()) bumpMap_ = uploadTexture(gl, scene.bumpMap.image, {});  // read at level 0 only
 }
 
 const MeshBuffers& SceneBuffers::mesh(int index) const {

@@ -36,13 +36,16 @@ class SceneBuffers {
   // Throw facet::Error for an index the uploaded scene does not have.
   const MeshBuffers& mesh(int index) const;
   GLuint texture(int index) const;
-  // The scene's environment cube strip (GL_RGBA8UI, one level); 0 when it has none.
+  // The scene's environment cube strip (GL_RGBA8UI, with its mips); 0 when it has none.
   GLuint environment() const { return environment_ ? environment_.id() : 0; }
+  // The scene's bump map (GL_RGBA8UI, level 0); 0 when it has none.
+  GLuint bumpMap() const { return bumpMap_ ? bumpMap_.id() : 0; }
 
  private:
   std::vector<MeshBuffers> meshes_;
   std::vector<GlObject> textures_;  // GL_RGBA8UI: the sRGB-encoded bytes as stored, bottom row first
   GlObject environment_;
+  GlObject bumpMap_;
 };
 
 }  // namespace facet::gl

@@ -26,6 +26,7 @@ std::string drawVariantDefines(DrawVariant variant) {
   d += "#define FACET_OCCLUSION_MAP " + std::string(variant.occlusionMap ? "1" : "0") + "\n";
   d += "#define FACET_EMISSIVE_MAP " + std::string(variant.emissiveMap ? "1" : "0") + "\n";
   d += "#define FACET_NORMAL_MAP " + std::string(variant.normalMap ? "1" : "0") + "\n";
+  d += "#define FACET_BUMP_MAP " + std::string(variant.bumped ? "1" : "0") + "\n";
   return d;
 }
 

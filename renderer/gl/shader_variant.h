@@ -21,13 +21,15 @@ struct DrawVariant {
   // shading=pbr's maps, through TEXCOORD_0: metallic-roughness, occlusion, emissive.
   bool metallicRoughnessMap = false, occlusionMap = false, emissiveMap = false;
   bool normalMap = false;  // a normal texture and tangents (Phong and pbr)
-  static constexpr int kCount = 128;
+  bool bumped = false;     // the frame's bump map and the mesh's tangents (Phong and pbr)
+  static constexpr int kCount = 256;
   int index() const {
     return (textured ? 1 : 0) + (colored ? 2 : 0) + (masked ? 4 : 0) + (metallicRoughnessMap ? 8 : 0) + (occlusionMap ? 16 : 0) + (emissiveMap ? 32 : 0) +
-           (normalMap ? 64 : 0);
+           (normalMap ? 64 : 0) + (bumped ? 128 : 0);
   }
   static DrawVariant of(int index) {
-    return {(index & 1) != 0, (index & 2) != 0, (index & 4) != 0, (index & 8) != 0, (index & 16) != 0, (index & 32) != 0, (index & 64) != 0};
+    return {(index & 1) != 0,  (index & 2) != 0,  (index & 4) != 0,  (index & 8) != 0,
+            (index & 16) != 0, (index & 32) != 0, (index & 64) != 0, (index & 128) != 0};
   }
 };
 

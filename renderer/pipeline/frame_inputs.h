@@ -74,6 +74,11 @@ struct FrameInputs {
     // D at pixel (x, y) in NDC: (forward + x·right) + y·up (right = up = 0 under parallel projection).
     glm::vec3 forward{0.0f, 0.0f, -1.0f}, right{0.0f}, up{0.0f};
   } environment;
+  // Bump mapping (PIPELINE.md, section 8), Phong and pbr: `map` points into the Scene (its bumpMap), null when none.
+  struct Bump {
+    const Texture* map = nullptr;
+    float scale = 0.0f;  // k
+  } bump;
   Procedural procedural = Procedural::None;  // a pattern in place of every base colour texture
   float proceduralScale = 1.0f;              // k: cells per model unit
 

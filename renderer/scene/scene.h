@@ -180,6 +180,8 @@ struct Scene {
   std::vector<SceneCamera> cameras;
   EnvironmentMap environment;        // the settings' environment.map, once loaded
   std::string displacement;          // the settings its meshes were displaced with (pipeline/displacement.h); empty: none
+  std::string bumpMapPath;           // the settings' material.bumpMap, once loaded (pipeline/bump_map.h); empty: none
+  Texture bumpMap;                   // its heights as a data texture (grey / 255), level 0 read
   std::vector<std::string> warnings; // what a loader skipped or repaired
 
   std::size_t triangleCount() const;  // over all instances

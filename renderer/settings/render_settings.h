@@ -108,6 +108,9 @@ struct MaterialOverrides {
   std::string displacementMap;      // a greyscale PNG height map h in [0, 1], read at TEXCOORD_0; empty: none
   float displacementScale = 0.1f;   // model units at h = 1
   int displacementSubdivisions = 3; // each triangle split into 4^k
+  // Bump mapping (PIPELINE.md, section 8): the course's N' = N + B_u·(N × P_t) - B_v·(N × P_s) per pixel, Phong and pbr.
+  std::string bumpMap;              // a greyscale PNG height map h in [0, 1], read at TEXCOORD_0; empty: none
+  float bumpScale = 0.05f;          // k: B = k·h, in texture-coordinate units
 };
 inline constexpr int kMaxDisplacementSubdivisions = 6;
 

@@ -70,6 +70,8 @@ void visitSettings(Visitor& v, RenderSettings& s) {
     v.field({"displacementScale", "model units a vertex moves along N where h = 1", -1000, 1000}, m.displacementScale);
     v.field({"displacementSubdivisions", "k: each triangle of a displaced mesh is split into 4^k first", 0, kMaxDisplacementSubdivisions},
             m.displacementSubdivisions);
+    v.field({"bumpMap", "a greyscale PNG height map h read at TEXCOORD_0 that bends N per pixel (phong, pbr); empty: none"}, m.bumpMap);
+    v.field({"bumpScale", "k of the bump B = k h, in texture-coordinate units", -10, 10}, m.bumpScale);
   });
   v.group("shadows", [&] {
     ShadowSettings& sh = s.shadows;

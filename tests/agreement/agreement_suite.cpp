@@ -35,6 +35,7 @@
 #include "gl/gl_renderer.h"
 #include "image/png.h"
 #include "pipeline/frame_inputs.h"
+#include "pipeline/bump_map.h"
 #include "pipeline/displacement.h"
 #include "scene/environment_map.h"
 #include "scene/load_scene.h"
@@ -111,7 +112,9 @@ Scene sceneOf(Case& c, const std::string& assets) {
                                                : loadScene(resolve(c.scene));
   c.settings.environment.map = resolve(c.settings.environment.map);
   c.settings.material.displacementMap = resolve(c.settings.material.displacementMap);
+  c.settings.material.bumpMap = resolve(c.settings.material.bumpMap);
   useDisplacement(scene, c.settings.material);
+  useBumpMap(scene, c.settings.material);
   useEnvironment(scene, c.settings.environment);
   return scene;
 }

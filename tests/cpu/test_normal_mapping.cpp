@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 #include <glm/geometric.hpp>
 
+#include "cpu/bump_mapping.h"
 #include "cpu/normal_mapping.h"
 
 using namespace facet;
@@ -43,4 +44,22 @@ TEST_CASE("normal textures: a flat texel keeps N, a tilted one turns N toward T 
   // A tangent that is not perpendicular to N is made so: the result does not lean along N's own direction.
   const glm::vec3 leaning = bent(normalTexel({0, 0, 1}), 1.0f, {1, 0, 0.8f, 1});
   CHECK(glm::length(leaning - glm::vec3(0, 0, 1)) < 0.01f);
+}
+
+TEST_CASE("bump mapping: a level height map keeps N, a ramp tilts N away from uphill by the course's formula, scaled by k") {
+  Texture level, ramp;
+  level.image = Image(8, 8, {128, 128, 128, 255});
+  ramp.image = Image(8, 8);
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 8; ++x) ramp.image.at(x, y) = {static_cast<std::uint8_t>(16 * x + 8), static_cast<std::uint8_t>(16 * x + 8), static_cast<std::uint8_t>(16 * x + 8), 255};
+  level.encoding = ramp.encoding = TexelEncoding::Linear;
+  const glm::vec3 N(0, 0, 1);
+  const glm::vec4 T(1, 0, 0, 1);
+  CHECK(glm::length(cpu::bumped(level, 0.5f, N, T, {0.5f, 0.5f}) - N) < 1e-6f);
+  // h rises along s by 16/255 per texel, 8 texels per unit: dh/ds = 128/255; N' = N - k·(dh/ds)·T.
+  const glm::vec3 tilted = cpu::bumped(ramp, 0.5f, N, T, {0.5f, 0.5f});
+  CHECK(tilted.x == doctest::Approx(-0.5 * 128.0 / 255.0).epsilon(1e-4));
+  CHECK(std::fabs(tilted.y) < 1e-6f);
+  CHECK(tilted.z == 1.0f);
+  CHECK(cpu::bumped(ramp, 1.0f, N, T, {0.5f, 0.5f}).x == doctest::Approx(2.0 * tilted.x).epsilon(1e-4));
 }

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "cpu/alpha_mask.h"
+#include "cpu/bump_mapping.h"
 #include "cpu/clipper.h"
 #include "cpu/environment_mapping.h"
 #include "cpu/procedural.h"
@@ -145,6 +146,7 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
     const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
     const Texture* texture = baseColorTextureOf(scene, frame, material, mesh);
     const Texture* normalMap = interpolatesNormals(frame.shading) ? normalMapOf(scene, material, mesh) : nullptr;
+    const bool bumpable = interpolatesNormals(frame.shading) && frame.bump.map && !mesh.tangents.empty();
     const bool colored = !mesh.colors.empty();
     // O_d = factor · COLOR_0 · texel, each factor only where the mesh has it; the texel is a
     // procedural texture's grey where the frame has one.
@@ -204,9 +206,10 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
         if (interpolatesNormals(frame.shading)) {
           const glm::vec3 P{f[0], f[1], f[2]};
           glm::vec3 normal{f[3], f[4], f[5]};
-          if (normalMap)  // the normal texture bends the unit interpolated normal, then it is normalized as that one is
-            normal = normalMapped(*normalMap, material, normalize3(normal), {f[layout.tangent], f[layout.tangent + 1], f[layout.tangent + 2], f[layout.tangent + 3]},
-                                  {f[uv], f[uv + 1]}, planes.quadDerivatives(uv, px, py));
+          // The normal texture, then the bump map, bend the unit normal; the result is normalized as the interpolated one is.
+          const glm::vec4 tangent{f[layout.tangent], f[layout.tangent + 1], f[layout.tangent + 2], f[layout.tangent + 3]};
+          if (normalMap) normal = normalMapped(*normalMap, material, normalize3(normal), tangent, {f[uv], f[uv + 1]}, planes.quadDerivatives(uv, px, py));
+          if (bumpable) normal = bumped(*frame.bump.map, frame.bump.scale, normalize3(normal), tangent, {f[uv], f[uv + 1]});
           const glm::vec3 unit = normalize3(normal);
           const glm::vec3 N = front ? unit : -unit;  // two-sided lighting
           if (frame.shading == ShadingMode::Pbr)

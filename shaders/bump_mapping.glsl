@@ -1,0 +1,26 @@
+// Bump mapping (renderer/PIPELINE.md, section 8, "Bump mapping"): the
+// course's perturbed normal from a height map's partial derivatives and the
+// surface's. Mirror: renderer/cpu/bump_mapping.h. Needs shading_math.glsl
+// and texture.glsl before it.
+
+layout(binding = 7) uniform usampler2D bumpMap;  // grey bytes, read as data at level 0
+
+// h at st: level 0, LINEAR, REPEAT, grey / 255.
+float bumpHeight(vec2 st) {
+  ivec2 size = textureSize(bumpMap, 0);
+  return sampleRegion(bumpMap, false, 0, ivec2(0, 0), size, true, 0, 0, st).r;
+}
+
+// N' = N + B_u·(N × P_t) - B_v·(N × P_s) before it is normalized (renderer/cpu/bump_mapping.h says how).
+vec3 bumped(vec3 N, vec4 tangent, vec2 st) {
+  ivec2 size = textureSize(bumpMap, 0);
+  precise float ds = 1.0 / float(size.x), dt = 1.0 / float(size.y);
+  float k = frame.ambient.z;
+  precise float Bu = k * ((bumpHeight(vec2(st.x + ds, st.y)) - bumpHeight(vec2(st.x - ds, st.y))) / (2.0 * ds));
+  precise float Bv = k * ((bumpHeight(vec2(st.x, st.y - dt)) - bumpHeight(vec2(st.x, st.y + dt))) / (2.0 * dt));
+  vec3 t = tangent.xyz;
+  precise vec3 Ps = normalize3(t - N * dot3(N, t));
+  precise vec3 Pt = (tangent.w < 0.0 ? -1.0 : 1.0) * cross3(N, Ps);
+  precise vec3 bent = (N + Bu * cross3(N, Pt)) - Bv * cross3(N, Ps);
+  return bent;
+}
