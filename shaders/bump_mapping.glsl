@@ -1,7 +1,7 @@
 // Bump mapping (renderer/PIPELINE.md, section 8, "Bump mapping"): the
 // course's perturbed normal from a height map's partial derivatives and the
-// surface's. Mirror: renderer/cpu/bump_mapping.h. Needs shading_math.glsl
-// and texture.glsl before it.
+// surface's. Mirror: renderer/cpu/bump_mapping.h. Needs shading_math.glsl,
+// texture.glsl and normal_mapping.glsl (tangentFrame) before it.
 
 layout(binding = 7) uniform usampler2D bumpMap;  // grey bytes, read as data at level 0
 
@@ -18,9 +18,7 @@ vec3 bumped(vec3 N, vec4 tangent, vec2 st) {
   float k = frame.ambient.z;
   precise float Bu = k * ((bumpHeight(vec2(st.x + ds, st.y)) - bumpHeight(vec2(st.x - ds, st.y))) / (2.0 * ds));
   precise float Bv = k * ((bumpHeight(vec2(st.x, st.y - dt)) - bumpHeight(vec2(st.x, st.y + dt))) / (2.0 * dt));
-  vec3 t = tangent.xyz;
-  precise vec3 Ps = normalize3(t - N * dot3(N, t));
-  precise vec3 Pt = (tangent.w < 0.0 ? -1.0 : 1.0) * cross3(N, Ps);
-  precise vec3 bent = (N + Bu * cross3(N, Pt)) - Bv * cross3(N, Ps);
+  TangentFrame f = tangentFrame(N, tangent);  // P_s = T, P_t = B
+  precise vec3 bent = (N + Bu * cross3(N, f.B)) - Bv * cross3(N, f.T);
   return bent;
 }

@@ -3,15 +3,26 @@
 // pixel's tangent frame. Mirror: renderer/cpu/normal_mapping.h.
 // Needs shading_math.glsl, texture.glsl and draw_uniforms.glsl before it.
 
+// The pixel's unit tangent frame: T = normalize3(t - N·(N·t)), B = (w < 0 ? -1 : 1)·(N × T).
+// Normal textures and bump mapping share it.
+struct TangentFrame {
+  vec3 T;
+  vec3 B;
+};
+TangentFrame tangentFrame(vec3 N, vec4 tangent) {
+  vec3 t = tangent.xyz;
+  precise vec3 T = normalize3(t - N * dot3(N, t));
+  precise vec3 B = (tangent.w < 0.0 ? -1.0 : 1.0) * cross3(N, T);
+  return TangentFrame(T, B);
+}
+
 // N' before it is normalized: n = (2·texel - 1) with x, y times the scale,
 // T = normalize3(t - N·(N·t)), B = ±(N × T) by the tangent's w, N' = (T·n.x + B·n.y) + N·n.z.
 vec3 normalMapped(vec3 N, vec4 tangent, vec2 st, vec4 d) {
   vec4 texel = sampleTexture(normalMap, mapsSrgb.w != 0, normalMapSampler, st, d);
   precise float x = (2.0 * texel.r - 1.0) * normalScale, y = (2.0 * texel.g - 1.0) * normalScale;
   precise float z = 2.0 * texel.b - 1.0;
-  vec3 t = tangent.xyz;
-  precise vec3 T = normalize3(t - N * dot3(N, t));
-  precise vec3 B = (tangent.w < 0.0 ? -1.0 : 1.0) * cross3(N, T);
-  precise vec3 bent = (T * x + B * y) + N * z;
+  TangentFrame f = tangentFrame(N, tangent);
+  precise vec3 bent = (f.T * x + f.B * y) + N * z;
   return bent;
 }

@@ -6,6 +6,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "cpu/normal_mapping.h"
 #include "cpu/shading_math.h"
 #include "cpu/texture_sampling.h"
 
@@ -23,10 +24,8 @@ inline glm::vec3 bumped(const Texture& map, float k, glm::vec3 N, glm::vec4 tang
   const float ds = 1.0f / static_cast<float>(map.image.width()), dt = 1.0f / static_cast<float>(map.image.height());
   const float Bu = k * ((bumpHeight(map, {st.x + ds, st.y}) - bumpHeight(map, {st.x - ds, st.y})) / (2.0f * ds));
   const float Bv = k * ((bumpHeight(map, {st.x, st.y - dt}) - bumpHeight(map, {st.x, st.y + dt})) / (2.0f * dt));
-  const glm::vec3 t(tangent);
-  const glm::vec3 Ps = normalize3(t - N * dot3(N, t));
-  const glm::vec3 Pt = (tangent.w < 0.0f ? -1.0f : 1.0f) * cross3(N, Ps);
-  return (N + Bu * cross3(N, Pt)) - Bv * cross3(N, Ps);
+  const TangentFrame f = tangentFrame(N, tangent);  // P_s = T, P_t = B
+  return (N + Bu * cross3(N, f.B)) - Bv * cross3(N, f.T);
 }
 
 }  // namespace facet::cpu

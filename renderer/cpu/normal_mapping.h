@@ -17,6 +17,17 @@ inline const Texture* normalMapOf(const Scene& scene, const CourseMaterial& mate
   return &scene.textures[static_cast<std::size_t>(material.normalMap.texture)];
 }
 
+// The pixel's unit tangent frame from the unit normal N and the interpolated tangent t and its w:
+// T = normalize3(t - N·(N·t)), B = (w < 0 ? -1 : 1)·(N × T). Normal textures and bump mapping share it.
+struct TangentFrame {
+  glm::vec3 T, B;
+};
+inline TangentFrame tangentFrame(glm::vec3 N, glm::vec4 tangent) {
+  const glm::vec3 t(tangent);
+  const glm::vec3 T = normalize3(t - N * dot3(N, t));
+  return {T, (tangent.w < 0.0f ? -1.0f : 1.0f) * cross3(N, T)};
+}
+
 // N' before it is normalized: n = (2·texel - 1) with x, y times the scale,
 // T = normalize3(t - N·(N·t)), B = ±(N × T) by the tangent's w, N' = (T·n.x + B·n.y) + N·n.z.
 // N is the unit interpolated normal, `tangent` the interpolated world tangent and w, st and d as the base colour's.
@@ -24,10 +35,8 @@ inline glm::vec3 normalMapped(const Texture& map, const CourseMaterial& material
   const glm::vec4 texel = sampleTexture(map, material.normalMap.sampler, st, d);
   const float x = (2.0f * texel.r - 1.0f) * material.normalScale, y = (2.0f * texel.g - 1.0f) * material.normalScale;
   const float z = 2.0f * texel.b - 1.0f;
-  const glm::vec3 t(tangent);
-  const glm::vec3 T = normalize3(t - N * dot3(N, t));
-  const glm::vec3 B = (tangent.w < 0.0f ? -1.0f : 1.0f) * cross3(N, T);
-  return (T * x + B * y) + N * z;
+  const TangentFrame f = tangentFrame(N, tangent);
+  return (f.T * x + f.B * y) + N * z;
 }
 
 }  // namespace facet::cpu
