@@ -1,5 +1,6 @@
 #include "cpu/clipper.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "cpu/window_transform.h"
@@ -125,6 +126,28 @@ void clipTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
     out.insert(out.end(), {previous, current, first});
     previous = current;
   }
+}
+
+bool clipSegment(const ClipVertex& a, const ClipVertex& b, const WindowVertex& windowA, const WindowVertex& windowB, float halfWidth,
+                 float halfHeight, int varyingCount, WindowVertex& outA, WindowVertex& outB) {
+  const unsigned ma = clipMask(a.clip), mb = clipMask(b.clip);
+  if ((ma | mb) == 0) {
+    outA = windowA, outB = windowB;
+    return true;
+  }
+  if (ma & mb) return false;  // both outside one plane
+  float t0 = 0.0f, t1 = 0.0f;
+  for (unsigned mask = ma | mb; mask; mask &= mask - 1) {
+    const int plane = __builtin_ctz(mask);
+    const float dp0 = planeDistance(a.clip, kPlanes[plane]), dp1 = planeDistance(b.clip, kPlanes[plane]);
+    if (!std::isfinite(dp0) || !std::isfinite(dp1)) return false;
+    if (dp1 < 0.0f) t1 = std::max(t1, dp1 / (dp1 - dp0));
+    if (dp0 < 0.0f) t0 = std::max(t0, dp0 / (dp0 - dp1));
+    if (t0 + t1 >= 1.0f) return false;
+  }
+  outA = ma ? windowVertex(interpolate(t0, a, b, varyingCount), halfWidth, halfHeight, varyingCount, true) : windowA;
+  outB = mb ? windowVertex(interpolate(t1, b, a, varyingCount), halfWidth, halfHeight, varyingCount, true) : windowB;
+  return true;
 }
 
 }  // namespace facet::cpu

@@ -39,6 +39,14 @@ void clipTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
                   const WindowVertex& windowB, const WindowVertex& windowC, float halfWidth, float halfHeight, int varyingCount,
                   std::vector<WindowVertex>& out);
 
+// Clips segment (a, b) as draw's do_clip_line: for each plane it crosses,
+// t0 and t1 (how much of each end is cut) grow to the largest cut; nothing
+// is left when t0 + t1 ≥ 1 or a distance is not finite. An end outside
+// becomes a + t0·(b - a) (b's likewise), with the clipper's window
+// arithmetic; an end inside keeps `windowA` / `windowB`. False when nothing is left.
+bool clipSegment(const ClipVertex& a, const ClipVertex& b, const WindowVertex& windowA, const WindowVertex& windowB, float halfWidth,
+                 float halfHeight, int varyingCount, WindowVertex& outA, WindowVertex& outB);
+
 // The clip mask of one vertex: bit i set when it is outside plane i (order above).
 unsigned clipMask(const glm::vec4& p);
 

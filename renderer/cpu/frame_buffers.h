@@ -21,6 +21,7 @@
 #include "cpu/clipper.h"
 #include "cpu/interpolation.h"
 #include "cpu/lighting.h"
+#include "cpu/line_raster.h"
 #include "cpu/triangle_setup.h"
 #include "scene/memory_budget.h"
 
@@ -106,6 +107,7 @@ inline std::size_t trianglesInTile(const std::vector<WorkerBins>& workers, int t
 struct FrameBuffers {
   PassVertices vertices;
   std::vector<WorkerBins> workers;
+  std::vector<DrawnLine> lines;  // the lit pass's segments and points (line_pass.h)
 };
 
 }  // namespace facet::cpu

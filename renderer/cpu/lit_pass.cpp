@@ -14,6 +14,7 @@
 #include "cpu/interpolation.h"
 #include "cpu/normal_mapping.h"
 #include "cpu/lighting.h"
+#include "cpu/line_pass.h"
 #include "cpu/passes.h"
 #include "cpu/phong_batch.h"
 #include "cpu/physically_based.h"
@@ -211,14 +212,18 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
                  frame.shading == ShadingMode::Flat ? &flat : nullptr);
   });
 
-  // Tiles: visibility (z-buffer, triangle order), then shading of what is visible.
+  // Segments and points, drawn after every triangle (not in the triangle-id pass).
+  if (triangleIds) buffers.lines.clear();
+  else setUpLines(scene, frame, v, layout.color, buffers.lines);
+
+  // Tiles: visibility (z-buffer, triangle order), then shading of what is visible, then lines and points.
   // Which worker takes which tile changes from frame to frame; every worker
   // sizes its tile scratch for the fullest tile, so none grows later.
   std::size_t fullestTile = 0;
   for (int tile = 0; tile < grid.count(); ++tile) fullestTile = std::max(fullestTile, trianglesInTile(buffers.workers, tile));
   for (WorkerBins& bins : buffers.workers) bins.tile.triangles.reserve(fullestTile);
   forEachTile(pool, grid, [&](int worker, int tile, const TileRect& r) {
-    if (trianglesInTile(buffers.workers, tile) == 0) return;
+    if (trianglesInTile(buffers.workers, tile) == 0 && buffers.lines.empty()) return;
     WorkerBins::TileScratch& scratch = buffers.workers[static_cast<std::size_t>(worker)].tile;
     std::fill(std::begin(scratch.depth), std::end(scratch.depth), 1.0f);
     std::fill(std::begin(scratch.id), std::end(scratch.id), kNoTriangle);
@@ -271,6 +276,7 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
       case ShadingMode::Gouraud: shadeTile<ShadingMode::Gouraud>(scene, frame, maps, scratch, r.x0, r.y0, r.x1, r.y1, image); break;
       default: shadeTile<ShadingMode::Flat>(scene, frame, maps, scratch, r.x0, r.y0, r.x1, r.y1, image); break;
     }
+    drawLines(buffers.lines, r, scratch.depth, kTileSize, image);
   });
 }
 

@@ -248,6 +248,12 @@ bool GlFrameRenderer::preparePrograms(const FrameInputs& frame) {
     backgroundViewportSize_ = uniformLocation(gl_, *backgroundProgram_, "viewportSize");
     compiled = true;
   }
+  if (!lineProgram_) {
+    ShaderProgram program = buildProgram(gl_, {"line.vert", "line.frag"});
+    const auto at = [&](const char* name) { return uniformLocation(gl_, program, name); };
+    lineProgram_.emplace(LineProgram{at("clipFromModel"), at("colored"), at("baseColorFactor"), std::move(program)});
+    compiled = true;
+  }
   return compiled;
 }
 
@@ -318,6 +324,34 @@ void GlFrameRenderer::litPass(const FrameInputs& frame) {
     if (lit->program.id() != current) gl_.glUseProgram(current = lit->program.id());
     setCulling(instance.cullBackFaces);
     drawInstance(*lit, frame, instance, frame.shading == ShadingMode::Flat);
+  }
+  drawLines(frame);
+}
+
+void GlFrameRenderer::drawLines(const FrameInputs& frame) {
+  // After every triangle, instance by instance: its segments, then its points (the CPU backend's order).
+  const GLuint program = lineProgram_->program.id();
+  bool bound = false;
+  for (const FrameInstance& instance : frame.instances) {
+    const MeshBuffers& mesh = scene_.mesh(instance.mesh);
+    if (mesh.lineIndexCount == 0 && mesh.pointCount == 0) continue;
+    if (!bound) {
+      gl_.glUseProgram(program);
+      setCulling(false);  // a segment or point has no face
+      bound = true;
+    }
+    gl_.glProgramUniformMatrix4fv(program, lineProgram_->clipFromModel, 1, GL_FALSE, glm::value_ptr(instance.clipFromModel));
+    gl_.glProgramUniform1i(program, lineProgram_->colored, mesh.colors ? 1 : 0);
+    gl_.glProgramUniform3fv(program, lineProgram_->baseColorFactor, 1,
+                            glm::value_ptr(frame.materials[static_cast<std::size_t>(instance.material)].baseColor));
+    if (mesh.lineIndexCount) {
+      gl_.glBindVertexArray(mesh.lineVertexArray.id());
+      gl_.glDrawElements(GL_LINES, mesh.lineIndexCount, GL_UNSIGNED_INT, nullptr);
+    }
+    if (mesh.pointCount) {
+      gl_.glBindVertexArray(mesh.pointVertexArray.id());
+      gl_.glDrawElements(GL_POINTS, mesh.pointCount, GL_UNSIGNED_INT, nullptr);
+    }
   }
 }
 

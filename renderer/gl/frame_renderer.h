@@ -96,6 +96,7 @@ class GlFrameRenderer {
   void shadowPass(const FrameInputs& frame);
   void litPass(const FrameInputs& frame);
   void drawInstance(const LitProgram& lit, const FrameInputs& frame, const FrameInstance& instance, bool flat);
+  void drawLines(const FrameInputs& frame);
   void checkError(const char* where) const;
 
   GlFunctions gl_;
@@ -106,6 +107,11 @@ class GlFrameRenderer {
   std::map<int, DepthProgram> depthPrograms_;  // by DrawVariant::index(); only masked draws differ
   std::optional<ShaderProgram> backgroundProgram_;
   GLint backgroundViewportSize_ = -1;  // its uniform vec2 viewportSize
+  struct LineProgram {
+    GLint clipFromModel, colored, baseColorFactor;
+    ShaderProgram program;
+  };
+  std::optional<LineProgram> lineProgram_;  // segments and points (line.vert, line.frag)
   struct TriangleIdProgram {
     GLint clipFromModel, firstTriangle;
     AlphaUniforms alpha;

@@ -21,34 +21,45 @@ void addAttribute(const GlFunctions& gl, GLuint vertexArray, GLuint location, co
   gl.glEnableVertexArrayAttrib(vertexArray, location);
 }
 
+// A vertex array with the mesh's attributes and `indices` as its index buffer.
+GlObject attributeArray(const GlFunctions& gl, const MeshBuffers& buffers, const GlObject& indices) {
+  GlObject array = createVertexArray(gl);
+  const GLuint vao = array.id();
+  addAttribute(gl, vao, kPositionAttribute, buffers.positions, 3);
+  addAttribute(gl, vao, kNormalAttribute, buffers.normals, 3);
+  if (buffers.texcoords) addAttribute(gl, vao, kTexcoordAttribute, buffers.texcoords, 2);
+  if (buffers.colors) addAttribute(gl, vao, kColorAttribute, buffers.colors, 4);
+  if (buffers.tangents) addAttribute(gl, vao, kTangentAttribute, buffers.tangents, 4);
+  gl.glVertexArrayElementBuffer(vao, indices.id());
+  return array;
+}
+
 MeshBuffers uploadMesh(const GlFunctions& gl, const Mesh& mesh) {
   MeshBuffers buffers;
-  buffers.indexCount = static_cast<GLsizei>(mesh.indices.size() / 3 * 3);
-  if (buffers.indexCount == 0 || mesh.positions.empty()) {
-    buffers.indexCount = 0;  // nothing to draw; GL refuses empty buffer storage
-    return buffers;
-  }
+  const auto triangles = static_cast<GLsizei>(mesh.indices.size() / 3 * 3), segments = static_cast<GLsizei>(mesh.lines.size() / 2 * 2),
+             points = static_cast<GLsizei>(mesh.points.size());
+  if ((triangles == 0 && segments == 0 && points == 0) || mesh.positions.empty()) return buffers;  // nothing to draw; GL refuses empty storage
   if (mesh.normals.size() != mesh.positions.size()) return {};  // checkScene refuses it; no frame draws it
   buffers.positions = uploadBuffer(gl, mesh.positions);
   buffers.normals = uploadBuffer(gl, mesh.normals);
-  buffers.indices = uploadBuffer(gl, mesh.indices);
-  buffers.vertexArray = createVertexArray(gl);
-  const GLuint vao = buffers.vertexArray.id();
-  addAttribute(gl, vao, kPositionAttribute, buffers.positions, 3);
-  addAttribute(gl, vao, kNormalAttribute, buffers.normals, 3);
-  if (mesh.texcoords.size() == mesh.positions.size()) {
-    buffers.texcoords = uploadBuffer(gl, mesh.texcoords);
-    addAttribute(gl, vao, kTexcoordAttribute, buffers.texcoords, 2);
+  if (mesh.texcoords.size() == mesh.positions.size()) buffers.texcoords = uploadBuffer(gl, mesh.texcoords);
+  if (mesh.colors.size() == mesh.positions.size()) buffers.colors = uploadBuffer(gl, mesh.colors);
+  if (mesh.tangents.size() == mesh.positions.size()) buffers.tangents = uploadBuffer(gl, mesh.tangents);
+  if (triangles) {
+    buffers.indexCount = triangles;
+    buffers.indices = uploadBuffer(gl, mesh.indices);
+    buffers.vertexArray = attributeArray(gl, buffers, buffers.indices);
   }
-  if (mesh.colors.size() == mesh.positions.size()) {
-    buffers.colors = uploadBuffer(gl, mesh.colors);
-    addAttribute(gl, vao, kColorAttribute, buffers.colors, 4);
+  if (segments) {
+    buffers.lineIndexCount = segments;
+    buffers.lineIndices = uploadBuffer(gl, mesh.lines);
+    buffers.lineVertexArray = attributeArray(gl, buffers, buffers.lineIndices);
   }
-  if (mesh.tangents.size() == mesh.positions.size()) {
-    buffers.tangents = uploadBuffer(gl, mesh.tangents);
-    addAttribute(gl, vao, kTangentAttribute, buffers.tangents, 4);
+  if (points) {
+    buffers.pointCount = points;
+    buffers.pointIndices = uploadBuffer(gl, mesh.points);
+    buffers.pointVertexArray = attributeArray(gl, buffers, buffers.pointIndices);
   }
-  gl.glVertexArrayElementBuffer(vao, buffers.indices.id());
   return buffers;
 }
 

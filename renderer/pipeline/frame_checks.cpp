@@ -41,10 +41,11 @@ void checkMesh(const Scene& scene, std::size_t m) {
     throw Error(meshName(scene, m) + ": " + std::to_string(mesh.tangents.size()) + " tangents for " + std::to_string(n) + " positions" +
                 (mesh.texcoords.empty() ? " and no texture coordinates" : ""));
   if (n >= kMaxFrameVertices) throw Error(meshName(scene, m) + ": " + std::to_string(n) + " vertices, more than a frame holds");
-  for (std::size_t i = 0; i < mesh.indices.size(); ++i)
-    if (mesh.indices[i] >= n)
-      throw Error(meshName(scene, m) + ": index " + std::to_string(mesh.indices[i]) + " (at " + std::to_string(i) + ") is not below its " +
-                  std::to_string(n) + " positions");
+  for (const std::vector<std::uint32_t>* list : {&mesh.indices, &mesh.lines, &mesh.points})
+    for (std::size_t i = 0; i < list->size(); ++i)
+      if ((*list)[i] >= n)
+        throw Error(meshName(scene, m) + ": " + (list == &mesh.indices ? "index " : list == &mesh.lines ? "line index " : "point index ") +
+                    std::to_string((*list)[i]) + " (at " + std::to_string(i) + ") is not below its " + std::to_string(n) + " positions");
   if (mesh.material < -1 || mesh.material >= static_cast<int>(scene.materials.size()))
     throw Error(meshName(scene, m) + ": material " + std::to_string(mesh.material) + " does not exist");
 }
@@ -60,7 +61,8 @@ void checkFrameMemory(const Scene& scene, const FrameInputs& frame) {
     const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
     vertices += mesh.positions.size();
     triangles += mesh.triangleCount();
-    geometry += instanceFrameBytes(mesh.positions.size(), mesh.triangleCount());
+    // a segment or a point is priced as a triangle: its set-up is no larger
+    geometry += instanceFrameBytes(mesh.positions.size(), mesh.triangleCount() + mesh.segmentCount() + mesh.points.size());
   }
   const std::uint64_t shadows = shadowMapBytes(frame.shadows.mapSize, frame.shadowLayerCount);
   if (geometry <= kFrameMemoryBudget && shadows <= kFrameMemoryBudget - geometry) return;

@@ -389,6 +389,28 @@ void toTriangleList(std::vector<std::uint32_t>& idx, int mode) {
   idx = std::move(out);
 }
 
+// The same for lines (mode 1 list, 2 loop, 3 strip): two indices per segment,
+// a loop closed from its last vertex back to its first.
+void toSegmentList(std::vector<std::uint32_t>& idx, int mode) {
+  if (mode == TINYGLTF_MODE_LINE) {
+    idx.resize(idx.size() / 2 * 2);
+    return;
+  }
+  std::vector<std::uint32_t> out;
+  out.reserve(2 * idx.size());
+  for (std::size_t i = 1; i < idx.size(); ++i) out.insert(out.end(), {idx[i - 1], idx[i]});
+  if (mode == TINYGLTF_MODE_LINE_LOOP && idx.size() > 2) out.insert(out.end(), {idx.back(), idx.front()});
+  idx = std::move(out);
+}
+
+// Indices per primitive of a glTF mode: 1 for POINTS, 2 for the line modes, 3 for the triangle modes, 0 for no mode.
+int indicesPerPrimitive(int mode) {
+  if (mode == TINYGLTF_MODE_POINTS) return 1;
+  if (mode == TINYGLTF_MODE_LINE || mode == TINYGLTF_MODE_LINE_LOOP || mode == TINYGLTF_MODE_LINE_STRIP) return 2;
+  if (mode == TINYGLTF_MODE_TRIANGLES || mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN) return 3;
+  return 0;
+}
+
 bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // "1e+18": the limit as messages show it.
@@ -420,7 +442,9 @@ void pricePrimitive(const tinygltf::Model& model, const tinygltf::Primitive& pri
   if (prim.attributes.count("TEXCOORD_0")) bytes += vertices * sizeof(glm::vec2);
   if (prim.attributes.count("COLOR_0")) bytes += vertices * sizeof(glm::vec4);
   if (needsTangents(model, prim)) bytes += vertices * sizeof(glm::vec4);
-  if (mode != TINYGLTF_MODE_TRIANGLES && indices > 2) bytes += 3 * (indices - 2) * sizeof(std::uint32_t);
+  const bool strip = mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN;
+  if (strip && indices > 2) bytes += 3 * (indices - 2) * sizeof(std::uint32_t);
+  if (mode == TINYGLTF_MODE_LINE_LOOP || mode == TINYGLTF_MODE_LINE_STRIP) bytes += 2 * indices * sizeof(std::uint32_t);
   budget.charge(bytes, name + ": " + std::to_string(vertices) + " vertices (" + at("accessors", static_cast<std::size_t>(positionAccessor)) +
                            ") and " + std::to_string(indices) + " indices");
 }
@@ -430,11 +454,12 @@ void pricePrimitive(const tinygltf::Model& model, const tinygltf::Primitive& pri
 bool convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& prim, const std::string& name, MemoryBudget& budget, Mesh& mesh,
                       Warnings& warnings) {
   const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
-  if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
-    static const char* kModes[] = {"POINTS", "LINES", "LINE_LOOP", "LINE_STRIP"};
-    warnings.push_back(name + ": mode " + (mode >= 0 && mode < 4 ? kModes[mode] : std::to_string(mode)) + " is not triangles; skipped");
+  const int corners = indicesPerPrimitive(mode);  // 1 point, 2 segment, 3 triangle
+  if (corners == 0) {
+    warnings.push_back(name + ": mode " + std::to_string(mode) + " is not a glTF primitive mode (0 to 6); skipped");
     return false;
   }
+  const char* primitive = corners == 3 ? "triangle" : corners == 2 ? "segment" : "point";
   const auto position = prim.attributes.find("POSITION");
   if (position == prim.attributes.end()) {
     warnings.push_back(name + ": no POSITION attribute; skipped");
@@ -451,13 +476,15 @@ bool convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& p
       triangles.resize(mesh.positions.size());
       for (std::size_t i = 0; i < triangles.size(); ++i) triangles[i] = static_cast<std::uint32_t>(i);
     }
-    if (mode == TINYGLTF_MODE_TRIANGLES && triangles.size() % 3 != 0)
-      warnings.push_back(name + ": " + std::to_string(triangles.size()) + " indices is not a multiple of 3; the last " +
-                         std::to_string(triangles.size() % 3) + " ignored");
-    toTriangleList(triangles, mode);
+    if ((mode == TINYGLTF_MODE_TRIANGLES || mode == TINYGLTF_MODE_LINE) && triangles.size() % static_cast<std::size_t>(corners) != 0)
+      warnings.push_back(name + ": " + std::to_string(triangles.size()) + " indices is not a multiple of " + std::to_string(corners) + "; the last " +
+                         std::to_string(triangles.size() % static_cast<std::size_t>(corners)) + " ignored");
+    if (corners == 3) toTriangleList(triangles, mode);
+    if (corners == 2) toSegmentList(triangles, mode);
 
-    // Keep the triangles whose three indices are in range and whose corners
-    // are finite and inside the coordinates facet draws (compacted in place).
+    // Keep the primitives (triangles, segments, points) whose indices are in
+    // range and whose vertices are finite and inside the coordinates facet
+    // draws (compacted in place).
     const auto vertexCount = mesh.positions.size();
     std::vector<char> usable(vertexCount);
     std::size_t notFinite = 0, tooFar = 0;
@@ -468,32 +495,38 @@ bool convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& p
       else if (!drawable(p)) ++tooFar;
     }
     std::size_t outOfRange = 0, kept = 0;
-    for (std::size_t t = 0; t + 2 < triangles.size(); t += 3) {
-      const std::uint32_t a = triangles[t], b = triangles[t + 1], c = triangles[t + 2];
-      if (a >= vertexCount || b >= vertexCount || c >= vertexCount) { ++outOfRange; continue; }
-      if (!usable[a] || !usable[b] || !usable[c]) continue;  // counted per vertex above
-      triangles[kept++] = a, triangles[kept++] = b, triangles[kept++] = c;
+    const auto per = static_cast<std::size_t>(corners);
+    for (std::size_t t = 0; t + per <= triangles.size(); t += per) {
+      bool inRange = true, drawn = true;
+      for (std::size_t j = 0; j < per; ++j) {
+        inRange = inRange && triangles[t + j] < vertexCount;
+        drawn = drawn && inRange && usable[triangles[t + j]];  // an unusable vertex is counted once, above
+      }
+      if (!inRange) ++outOfRange;
+      if (!drawn) continue;
+      for (std::size_t j = 0; j < per; ++j) triangles[kept++] = triangles[t + j];
     }
     triangles.resize(kept);
-    mesh.indices = std::move(triangles);
+    std::vector<std::uint32_t>& drawnIndices = corners == 3 ? mesh.indices : corners == 2 ? mesh.lines : mesh.points;
+    drawnIndices = std::move(triangles);
     if (outOfRange)
-      warnings.push_back(name + ": " + countOf(outOfRange, "triangle") + " with an index past the " + countOf(vertexCount, "vertex", "vertices") +
+      warnings.push_back(name + ": " + countOf(outOfRange, primitive) + " with an index past the " + countOf(vertexCount, "vertex", "vertices") +
                          " (ACCESSOR_INDEX_OOB); dropped");
     if (notFinite)
       warnings.push_back(name + ": " + positions + " has " + countOf(notFinite, "NaN or infinite position") +
-                         " (ACCESSOR_INVALID_FLOAT); their triangles dropped");
+                         " (ACCESSOR_INVALID_FLOAT); their " + primitive + "s dropped");
     if (tooFar)
       warnings.push_back(name + ": " + positions + " has " + countOf(tooFar, "position") + " beyond +-" + coordinateLimit() +
-                         ", farther than facet draws; their triangles dropped");
-    if (mesh.indices.empty()) {
-      warnings.push_back(name + ": no drawable triangles; skipped");
+                         ", farther than facet draws; their " + primitive + "s dropped");
+    if (drawnIndices.empty()) {
+      warnings.push_back(name + ": no drawable " + primitive + "s; skipped");
       return false;
     }
-    // The vertices no kept triangle uses move onto one that is, so that the
+    // The vertices no kept primitive uses move onto one that is, so that the
     // bounds (and the framing) see only what is drawn.
     if (notFinite || tooFar)
       for (std::size_t v = 0; v < vertexCount; ++v)
-        if (!usable[v]) mesh.positions[v] = mesh.positions[mesh.indices[0]];
+        if (!usable[v]) mesh.positions[v] = mesh.positions[drawnIndices[0]];
 
     bool normalsOk = false;
     if (const auto normal = prim.attributes.find("NORMAL"); normal != prim.attributes.end()) {
@@ -516,7 +549,7 @@ bool convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& p
         warnings.push_back(name + ": NORMAL " + e.message + "; normals recomputed");
       }
     }
-    if (!normalsOk) computeVertexNormals(mesh);
+    if (!normalsOk) computeVertexNormals(mesh);  // points and lines, which are unlit, get (0, 0, 1)
 
     if (const auto uv = prim.attributes.find("TEXCOORD_0"); uv != prim.attributes.end()) {
       try {
@@ -553,7 +586,7 @@ bool convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& p
       }
     }
     // Tangents for a normal texture: the file's TANGENT (unit xyz, w ±1) where it is sound, else computed.
-    if (needsTangents(model, prim) && !mesh.texcoords.empty()) {
+    if (corners == 3 && needsTangents(model, prim) && !mesh.texcoords.empty()) {
       if (const auto tangent = prim.attributes.find("TANGENT"); tangent != prim.attributes.end()) {
         try {
           mesh.tangents = readVec4(model, tangent->second);

@@ -29,9 +29,15 @@ struct Mesh {
   // (B = w·(N × T)); read or computed (scene/vertex_tangents.h) where a normal texture needs it, else empty.
   std::vector<glm::vec4> tangents;
   std::vector<std::uint32_t> indices; // three per triangle, counter-clockwise = front
+  // glTF's POINTS and LINES (LINE_LOOP and LINE_STRIP as their segments), drawn
+  // unlit after the triangles (renderer/PIPELINE.md, section 6, "Lines and points").
+  // A mesh from a glTF primitive holds one kind: triangles, segments or points.
+  std::vector<std::uint32_t> lines;   // two per segment
+  std::vector<std::uint32_t> points;  // one per point
   int material = -1;                  // index into Scene::materials, -1 = the default material
 
   std::size_t triangleCount() const { return indices.size() / 3; }
+  std::size_t segmentCount() const { return lines.size() / 2; }
 };
 
 // A mesh placed in the world: TM is the node's world transform (T·R·S, parents first).

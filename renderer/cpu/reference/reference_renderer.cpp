@@ -27,6 +27,7 @@
 #include "cpu/interpolation.h"
 #include "cpu/normal_mapping.h"
 #include "cpu/lighting.h"
+#include "cpu/line_pass.h"
 #include "cpu/physically_based.h"
 #include "cpu/rasterize.h"
 #include "cpu/shadow_maps.h"
@@ -229,6 +230,33 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
   }
 }
 
+// Pass 2's lines and points, after every triangle: each instance's
+// segments, then its points, from their own vertex stage.
+void linePass(const Scene& scene, const FrameInputs& frame, Target& target) {
+  const float halfWidth = 0.5f * static_cast<float>(frame.width), halfHeight = 0.5f * static_cast<float>(frame.height);
+  std::vector<DrawnLine> lines;
+  for (const FrameInstance& instance : frame.instances) {
+    const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
+    const glm::vec3 baseColor = frame.materials[static_cast<std::size_t>(instance.material)].baseColor;
+    const auto vertex = [&](std::uint32_t i) {
+      ClipVertex v;
+      v.clip = transformPoint(instance.clipFromModel, mesh.positions[i]);
+      const glm::vec4 rgba = mesh.colors.empty() ? glm::vec4(1.0f) : mesh.colors[i];
+      for (int c = 0; c < 3; ++c) v.varyings[static_cast<std::size_t>(c)] = rgba[c];
+      return v;
+    };
+    for (std::size_t s = 0; s + 1 < mesh.lines.size(); s += 2) {
+      const ClipVertex a = vertex(mesh.lines[s]), b = vertex(mesh.lines[s + 1]);
+      addSegment(a, b, toWindow(a, halfWidth, halfHeight, 3), toWindow(b, halfWidth, halfHeight, 3), frame, baseColor, lines);
+    }
+    for (const std::uint32_t i : mesh.points) {
+      const ClipVertex v = vertex(i);
+      addPoint(v, toWindow(v, halfWidth, halfHeight, 3), frame, baseColor, lines);
+    }
+  }
+  drawLines(lines, {0, 0, frame.width - 1, frame.height - 1}, target.depth.data(), frame.width, *target.image);
+}
+
 class ReferenceRenderer final : public Renderer {
  public:
   std::string description() const override { return "cpu reference, one triangle at a time (renderer/cpu/reference)"; }
@@ -244,6 +272,7 @@ class ReferenceRenderer final : public Renderer {
     Target target{frame.width, frame.height, std::vector<float>(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 1.0f)};
     target.image = &result.image;
     litPass(scene, frame, maps, target);
+    linePass(scene, frame, target);
     result.timings.push_back({"both passes", std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count()});
     return result;
   }
