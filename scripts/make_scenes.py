@@ -762,6 +762,52 @@ def leaf_texture(size=64):
     return png(size, size, pixel, alpha=True)
 
 
+def lines_points():
+    g = Gltf("POINTS, LINES, LINE_LOOP and LINE_STRIP, unlit (base colour times COLOR_0) and depth-tested "
+             "against the triangles: a wireframe cube (LINES) whose edges run between its corners' colours "
+             "(red along x, green along y, blue along z) around a solid grey box, which hides the far edges' "
+             "middles; a yellow LINE_LOOP circle on the ground around it; a LINE_STRIP helix rising from "
+             "blue to white on the right; a cloud of 400 white POINTS on a sphere on the left, its back half "
+             "hidden by a solid sphere inside it.")
+    POINTS, LINES, LINE_LOOP, LINE_STRIP = 0, 1, 2, 3
+
+    def raw(mode, positions, material, colors=None, indices=None):
+        attributes = {"POSITION": g.add_accessor(positions, "VEC3", bounds=True)}
+        if colors is not None:
+            attributes["COLOR_0"] = g.add_accessor(colors, "VEC3")
+        primitive = {"attributes": attributes, "mode": mode, "material": material}
+        if indices is not None:
+            primitive["indices"] = g.add_indices(indices)
+        return primitive
+
+    white = g.add_material("unlit white", (1, 1, 1, 1), 0.0, 1.0)
+    corners = [(x, y, z) for x in (-0.6, 0.6) for y in (-0.6, 0.6) for z in (-0.6, 0.6)]
+    colors = [(0.1 + (x > 0) * 0.9, 0.1 + (y > 0) * 0.9, 0.1 + (z > 0) * 0.9) for x, y, z in corners]
+    edges = [a for i in range(8) for j in range(i + 1, 8) if bin(i ^ j).count("1") == 1 for a in (i, j)]
+    g.add_node("wire cube", g.add_mesh("wire cube", raw(LINES, corners, white, colors, edges)), translation=(0, 0.8, 0))
+    box = g.add_material("box", (0.55, 0.55, 0.6, 1), 0.0, 0.7)
+    g.add_node("box", g.add_mesh("box", g.primitive(cube(0.7), box)), translation=(0, 0.8, 0))
+    yellow = g.add_material("yellow", (1.0, 0.85, 0.1, 1), 0.0, 1.0)
+    circle = [(1.3 * math.cos(2 * math.pi * k / 48), 0.02, 1.3 * math.sin(2 * math.pi * k / 48)) for k in range(48)]
+    g.add_node("circle", g.add_mesh("circle", raw(LINE_LOOP, circle, yellow)))
+    helix = [(0.35 * math.cos(0.35 * k), 0.05 + 0.025 * k, 0.35 * math.sin(0.35 * k)) for k in range(64)]
+    ramp = [(0.2 + 0.8 * k / 63, 0.3 + 0.7 * k / 63, 1.0) for k in range(64)]
+    g.add_node("helix", g.add_mesh("helix", raw(LINE_STRIP, helix, white, ramp)), translation=(1.9, 0, 0))
+    golden = math.pi * (3 - math.sqrt(5))
+    cloud = []
+    for k in range(400):
+        y = 1 - 2 * (k + 0.5) / 400
+        r = math.sqrt(1 - y * y)
+        cloud.append((0.6 * r * math.cos(golden * k), 0.6 * y, 0.6 * r * math.sin(golden * k)))
+    g.add_node("cloud", g.add_mesh("cloud", raw(POINTS, cloud, white)), translation=(-1.9, 0.8, 0))
+    ball = g.add_material("ball", (0.2, 0.35, 0.7, 1), 0.0, 0.5)
+    g.add_node("ball", g.add_mesh("ball", g.primitive(uv_sphere(0.5, 32, 16), ball)), translation=(-1.9, 0.8, 0))
+    add_ground(g, 7, 5)
+    g.add_camera("camera", (0, 2.2, 4.6), (0, 0.6, 0))
+    g.add_light("key", "point", (2.0, 4.0, 3.0), intensity=20)
+    return g
+
+
 def alpha_mask():
     g = Gltf("alphaMode MASK: three double-sided panels in front of a wall, each cut by its alpha. Left: a leaf "
              "texture (alpha falling off at the rim, veins at a quarter alpha) with alphaCutoff 0.5: the leaf with its "
@@ -1163,6 +1209,7 @@ SCENES = [
     (MATERIALS_DIR, "alpha_mask.gltf", alpha_mask),
     (MATERIALS_DIR, "pbr_maps.gltf", pbr_maps),
     (MATERIALS_DIR, "normal_map.gltf", normal_map),
+    (MATERIALS_DIR, "lines_points.gltf", lines_points),
     (ASSETS_DIR, "transformations.gltf", transformations),
     (ASSETS_DIR, "projections.gltf", projections),
     (ASSETS_DIR, "culling.gltf", culling),

@@ -190,6 +190,16 @@ int main(int argc, char** argv) {
       const auto t2 = std::chrono::steady_clock::now();
       long covered = 0;
       const long mismatches = triangleMismatches(gl->visibleTriangles(scene, frame), cpu->visibleTriangles(scene, frame), covered);
+      if (covered == 0) {  // lines and points keep no triangle: what they drew is what differs from the frame without them
+        FrameInputs empty = frame;
+        empty.instances.clear();
+        const Image background = cpu->render(scene, empty).image;
+        for (int y = 0; y < cpuImage.height(); ++y)
+          for (int x = 0; x < cpuImage.width(); ++x) {
+            const Rgba8 a = cpuImage.at(x, y), b = background.at(x, y);
+            covered += a.r != b.r || a.g != b.g || a.b != b.b;
+          }
+      }
       const std::string glPath = (fs::path(outDir) / "gl" / (c.name + ".png")).string();
       const std::string cpuPath = (fs::path(outDir) / "cpu" / (c.name + ".png")).string();
       writePng(glPath, glImage);

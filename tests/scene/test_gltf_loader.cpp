@@ -767,3 +767,31 @@ TEST_CASE("normal textures: tangents from the file's TANGENT, or computed along 
   computeVertexTangents(quad);
   CHECK(quad.tangents[0] == glm::vec4(-1, 0, 0, -1));
 }
+
+TEST_CASE("glTF POINTS, LINES, LINE_LOOP and LINE_STRIP load as points and segments; an unknown mode is skipped by name") {
+  const auto load = [](int mode) {
+    return loadGltfFromMemory(asset([&](nlohmann::json& j) { j["meshes"][0]["primitives"][0]["mode"] = mode; }, false), "modes.gltf", "");
+  };
+  const Scene points = load(0), lines = load(1), loop = load(2), strip = load(3), fan = load(6);
+  REQUIRE(points.meshes.size() == 1);
+  CHECK(points.meshes[0].points == std::vector<std::uint32_t>{0, 1, 2});
+  CHECK(points.meshes[0].indices.empty());
+  CHECK(points.meshes[0].normals.size() == 3);  // unlit, but every vertex has one
+  CHECK(lines.meshes[0].lines == std::vector<std::uint32_t>{0, 1});
+  CHECK(hasWarning(lines, "3 indices is not a multiple of 2; the last 1 ignored"));
+  CHECK(loop.meshes[0].lines == std::vector<std::uint32_t>{0, 1, 1, 2, 2, 0});
+  CHECK(strip.meshes[0].lines == std::vector<std::uint32_t>{0, 1, 1, 2});
+  CHECK(fan.meshes[0].indices == std::vector<std::uint32_t>{0, 1, 2});
+  CHECK(fan.meshes[0].lines.empty());
+  const Scene unknown = load(7);
+  CHECK(unknown.meshes.empty());
+  CHECK(hasWarning(unknown, "meshes[0].primitives[0]: mode 7 is not a glTF primitive mode (0 to 6); skipped"));
+
+  // The sample's LINE_LOOP with indices [0, 3, 2, 1]: four segments, closed.
+  const Scene sample = loadScene(kModels + "/glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_09.gltf");
+  REQUIRE(sample.meshes.size() == 1);
+  CHECK(sample.meshes[0].lines == std::vector<std::uint32_t>{0, 3, 3, 2, 2, 1, 1, 0});
+  const Scene many = loadScene(kModels + "/glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_07.gltf");
+  REQUIRE(many.meshes.size() == 1);
+  CHECK(many.meshes[0].points.size() == 1024);
+}
