@@ -9,7 +9,9 @@
 //
 // A segment of width 1 becomes a parallelogram: its ends on the 1/256 grid,
 // moved along the major axis where the diamond-exit rule says an end pixel
-// is (or is not) drawn, widened by ±1/2 pixel across the minor axis. Its
+// is (or is not) drawn and the plain quad would not (or would) draw it, by
+// Mesa 22.3's tests (later releases changed the second), widened by ±1/2
+// pixel across the minor axis. Its
 // four edges cover a pixel by the triangle rule (triangle_setup.h). Its
 // attributes vary along the major axis only:
 //
