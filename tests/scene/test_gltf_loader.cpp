@@ -768,7 +768,7 @@ TEST_CASE("normal textures: tangents from the file's TANGENT, or computed along 
   CHECK(quad.tangents[0] == glm::vec4(-1, 0, 0, -1));
 }
 
-TEST_CASE("glTF POINTS, LINES, LINE_LOOP and LINE_STRIP load as points and segments; an unknown mode is skipped by name") {
+TEST_CASE("glTF POINTS, LINES, LINE_LOOP and LINE_STRIP load as points and segments, and an unknown mode is skipped by name") {
   const auto load = [](int mode) {
     return loadGltfFromMemory(asset([&](nlohmann::json& j) { j["meshes"][0]["primitives"][0]["mode"] = mode; }, false), "modes.gltf", "");
   };
