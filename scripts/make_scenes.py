@@ -455,10 +455,11 @@ class Gltf:
 
     # -- meshes
 
-    def primitive(self, mesh, material, colors=None, tangents=None):
+    def primitive(self, mesh, material, colors=None, tangents=None, uv1=None, texcoord0=True):
         """A primitive of `mesh` with `material`; the mesh's accessors are
         written the first time it is used and shared after. TEXCOORD_0 is
-        written only for a material with a texture; `colors` is a COLOR_0 accessor."""
+        written only for a material with a texture (and `texcoord0`); `colors`
+        is a COLOR_0 accessor; `uv1` the rows of a TEXCOORD_1 of its own."""
         key = id(mesh)
         if key not in self.mesh_accessors:
             attributes = {
@@ -470,9 +471,13 @@ class Gltf:
         m = self.doc["materials"][material]
         textured = any(k in m["pbrMetallicRoughness"] for k in ("baseColorTexture", "metallicRoughnessTexture")) or \
             any(k in m for k in ("occlusionTexture", "emissiveTexture", "normalTexture"))
-        if textured and "TEXCOORD_0" not in attributes:
+        if textured and texcoord0 and "TEXCOORD_0" not in attributes:
             attributes["TEXCOORD_0"] = self.add_accessor(mesh.uvs, "VEC2")
         primitive = {"attributes": dict(attributes), "indices": indices, "material": material}
+        if not texcoord0:
+            primitive["attributes"].pop("TEXCOORD_0", None)
+        if uv1 is not None:
+            primitive["attributes"]["TEXCOORD_1"] = self.add_accessor(uv1, "VEC2")
         if colors is not None:
             primitive["attributes"]["COLOR_0"] = colors
         if tangents is not None:
@@ -513,6 +518,13 @@ class Gltf:
         if alpha_cutoff is not None:
             material["alphaCutoff"] = num(alpha_cutoff)
         return self.append("materials", material)
+
+    def read_at(self, material, set_index, *keys):
+        """Makes the named texture references of `material` read TEXCOORD_<set_index>."""
+        m = self.doc["materials"][material]
+        for key in keys:
+            (m["pbrMetallicRoughness"] if key in ("baseColorTexture", "metallicRoughnessTexture") else m)[key]["texCoord"] = set_index
+        return material
 
     # -- textures
 
@@ -945,6 +957,58 @@ def pbr_maps():
     return g
 
 
+def texcoord_sets():
+    g = Gltf("Texture references reading TEXCOORD_0 and TEXCOORD_1 (glTF's texCoord). Left: a cube whose base "
+             "colour brick texture repeats 3 times per face on TEXCOORD_0, while its occlusion texture (dark edges "
+             "and a dark cross), its emissive texture (a green frame) and its normal texture (4 by 4 dimples) read "
+             "TEXCOORD_1, once per face; with the course's shading only the bricks and the dimples show, with "
+             "shading=pbr all four. Middle: a leaf cut by alphaMode MASK whose texture reads TEXCOORD_1, the "
+             "primitive's TEXCOORD_0 all zero (read by mistake, it would keep or cut the whole panel); its shadow "
+             "on the wall is leaf-shaped. Right: a panel with only TEXCOORD_1, a checker read from it; below it, a "
+             "panel whose texture asks for TEXCOORD_1, which it lacks: its factor alone (orange), with a warning.")
+    sampler = g.add_sampler(LINEAR, LINEAR_MIPMAP_LINEAR, REPEAT, REPEAT)
+    bricks = g.add_texture(g.add_image("bricks 64x64", brick_texture()), sampler)
+    def ao(x, y):
+        u, v = (x + 0.5) / 64, (y + 0.5) / 64
+        level = min(1.0, 0.3 + 5 * min(u, 1 - u, v, 1 - v))
+        return (int(round(255 * (level * 0.35 if abs(u - 0.5) < 0.05 or abs(v - 0.5) < 0.05 else level))),) * 3
+    occlusion = g.add_texture(g.add_image("occlusion 64x64", png(64, 64, ao)), sampler)
+    def frame(x, y):
+        return (30, 255, 80) if min(x, 63 - x, y, 63 - y) in (4, 5, 6) else (0, 0, 0)
+    glow = g.add_texture(g.add_image("emissive frame 64x64", png(64, 64, frame)), sampler)
+    dimples = g.add_texture(g.add_image("dimples normal map 64x64", dimples_normal_map()), sampler)
+    box = g.add_material("bricks on TEXCOORD_0; occlusion, emissive and normal on TEXCOORD_1", (1, 1, 1, 1), 0.0, 0.6,
+                         texture=bricks, occlusion=(occlusion, 1.0), emissive=(1, 1, 1), emissive_texture=glow, normal=(dimples, 1.0))
+    g.read_at(box, 1, "occlusionTexture", "emissiveTexture", "normalTexture")
+    block = cube(0.9)
+    tiled = Mesh(block.positions, block.normals, block.indices, [(3 * u, 3 * v) for u, v in block.uvs])
+    g.add_node("cube", g.add_mesh("cube", g.primitive(tiled, box, uv1=block.uvs)), translation=(-1.3, 0.45, 0),
+               rotation=axis_angle((0, 1, 0), 35))
+    leaf_texture_index = g.add_texture(g.add_image("leaf 64x64 RGBA", leaf_texture()),
+                                       g.add_sampler(LINEAR, LINEAR_MIPMAP_LINEAR, CLAMP_TO_EDGE, CLAMP_TO_EDGE))
+    leaf = g.read_at(g.add_material("leaf on TEXCOORD_1, cutoff 0.5", (1, 1, 1, 1), 0.0, 0.6, texture=leaf_texture_index,
+                                    double_sided=True, alpha_mode="MASK"), 1, "baseColorTexture")
+    panel = quad(1.0, 1.4)
+    zeros = Mesh(panel.positions, panel.normals, panel.indices, [(0, 0)] * 4)
+    g.add_node("leaf", g.add_mesh("leaf", g.primitive(zeros, leaf, uv1=panel.uvs)), translation=(0.1, 1.0, 0.2))
+    checker_texture = g.add_texture(g.add_image("checker 32x32", png(32, 32, checker(32, 8, (40, 40, 160), (230, 230, 230)))),
+                                    g.add_sampler(NEAREST, NEAREST, REPEAT, REPEAT))
+    only1 = g.read_at(g.add_material("checker on TEXCOORD_1, the only set", (1, 1, 1, 1), 0.0, 0.6, texture=checker_texture),
+                      1, "baseColorTexture")
+    small = quad(0.8, 0.8)
+    g.add_node("TEXCOORD_1 only", g.add_mesh("TEXCOORD_1 only", g.primitive(small, only1, uv1=small.uvs, texcoord0=False)),
+               translation=(1.35, 1.35, 0))
+    missing = g.read_at(g.add_material("checker on TEXCOORD_1, which the panel lacks", (0.9, 0.45, 0.1, 1), 0.0, 0.6,
+                                       texture=checker_texture), 1, "baseColorTexture")
+    g.add_node("no TEXCOORD_1", g.add_mesh("no TEXCOORD_1", g.primitive(small, missing)), translation=(1.35, 0.45, 0))
+    wall = g.add_material("wall", (0.75, 0.75, 0.8, 1), 0.0, 0.9)
+    g.add_node("wall", g.add_mesh("wall", g.primitive(quad(6, 3), wall)), translation=(0, 1.2, -1.0))
+    add_ground(g, 6, 4)
+    g.add_camera("camera", (0.2, 1.5, 3.6), (0.1, 0.8, 0))
+    g.add_light("key", "point", (-0.6, 2.6, 2.6), intensity=12)
+    return g
+
+
 def dimples_normal_map(size=64, cells=4):
     """A tangent-space normal texture of a grid of round dimples, (n + 1)/2 in
     bytes with n = normalize(-dh/du, -dh/dv, 1); the top row of the PNG is t = 0."""
@@ -1210,6 +1274,7 @@ SCENES = [
     (MATERIALS_DIR, "pbr_maps.gltf", pbr_maps),
     (MATERIALS_DIR, "normal_map.gltf", normal_map),
     (MATERIALS_DIR, "lines_points.gltf", lines_points),
+    (MATERIALS_DIR, "texcoord_sets.gltf", texcoord_sets),
     (ASSETS_DIR, "transformations.gltf", transformations),
     (ASSETS_DIR, "projections.gltf", projections),
     (ASSETS_DIR, "culling.gltf", culling),

@@ -12,6 +12,8 @@ uniform float baseAlpha;           // its alpha
 uniform float alphaCutoff;         // alphaMode MASK: the least alpha a fragment keeps
 uniform ivec4 baseColorSampler;    // its texture's magFilter, minFilter, wrapS, wrapT: scene/scene.h's enum values
 uniform vec3 baseColorTransform[2];// its KHR_texture_transform: the rows of st' = M·(s, t, 1)
+uniform int baseColorSet;          // the texture coordinates it reads: 1 TEXCOORD_1, else TEXCOORD_0
+uniform ivec4 mapSets;             // those of the metallic-roughness, occlusion, emissive and normal textures
 
 uniform ivec4 metallicRoughnessSampler, occlusionSampler, emissiveSampler;  // shading=pbr's maps' samplers, as baseColorSampler
 uniform float occlusionStrength;   // ao = 1 + strength·(R - 1)
@@ -26,13 +28,31 @@ layout(binding = 4) uniform usampler2D occlusionMap;          // data bytes: R o
 layout(binding = 5) uniform usampler2D emissiveMap;           // sRGB-encoded bytes
 layout(binding = 6) uniform usampler2D normalMap;             // data bytes: tangent-space normal (Phong and pbr)
 
-// O_d = factor · COLOR_0 · texel at texture coordinates st, whose
-// derivatives are (dFdx(st), dFdy(st)), and its alpha
-// (factor.a · COLOR_0.a) · texel.a (renderer/PIPELINE.md, section 8); with
-// FACET_PROCEDURAL, the texel is the pattern's at modelPoint.
-// FACET_COLORED: the draw's mesh has COLOR_0; FACET_TEXTURED: its material
-// has a base colour texture and its mesh TEXCOORD_0.
-vec4 baseColorAt(vec2 st, vec4 stDerivatives, vec4 vertexColor, vec3 modelPoint) {
+// Both texture coordinate sets at the fragment, st.xy TEXCOORD_0 and st.zw
+// TEXCOORD_1, with their derivatives dFdx(st) and dFdy(st); (0, 0) for a set
+// the mesh lacks (renderer/PIPELINE.md, section 8).
+struct Texcoords {
+  vec4 st, dx, dy;
+};
+
+// Fragment stages only (a macro, so that vertex stages never see dFdx), in
+// uniform control flow, before anything can branch.
+#define texcoordsAt(st) Texcoords(st, dFdx(st), dFdy(st))
+
+// A texture reference's set (1: TEXCOORD_1, else TEXCOORD_0) and its derivatives (ds/dx, dt/dx, ds/dy, dt/dy).
+vec2 setOf(Texcoords t, int set) {
+  return set == 1 ? t.st.zw : t.st.xy;
+}
+vec4 derivativesOf(Texcoords t, int set) {
+  return set == 1 ? vec4(t.dx.zw, t.dy.zw) : vec4(t.dx.xy, t.dy.xy);
+}
+
+// O_d = factor · COLOR_0 · texel at the base colour texture's set of t, and
+// its alpha (factor.a · COLOR_0.a) · texel.a (renderer/PIPELINE.md,
+// section 8); with FACET_PROCEDURAL, the texel is the pattern's at
+// modelPoint. FACET_COLORED: the draw's mesh has COLOR_0; FACET_TEXTURED:
+// its material has a base colour texture and its mesh that texture's set.
+vec4 baseColorAt(Texcoords t, vec4 vertexColor, vec3 modelPoint) {
   precise vec3 O = baseColorFactor;
   precise float alpha = baseAlpha;
 #if FACET_COLORED
@@ -45,6 +65,8 @@ vec4 baseColorAt(vec2 st, vec4 stDerivatives, vec4 vertexColor, vec3 modelPoint)
 #elif FACET_TEXTURED
   // KHR_texture_transform: st' by the 2×3 matrix, the derivatives by its linear part (renderer/cpu/texture_sampling.h).
   vec3 a = baseColorTransform[0], b = baseColorTransform[1];
+  vec2 st = setOf(t, baseColorSet);
+  vec4 stDerivatives = derivativesOf(t, baseColorSet);
   precise vec2 uv = vec2((a.x * st.x + a.y * st.y) + a.z, (b.x * st.x + b.y * st.y) + b.z);
   precise vec4 d = vec4(a.x * stDerivatives.x + a.y * stDerivatives.y, b.x * stDerivatives.x + b.y * stDerivatives.y,
                         a.x * stDerivatives.z + a.y * stDerivatives.w, b.x * stDerivatives.z + b.y * stDerivatives.w);

@@ -23,12 +23,13 @@ layout(std430, binding = 0) readonly buffer MeshIndices { uint indices[]; };    
 layout(std430, binding = 1) readonly buffer MeshPositions { float positions[]; }; // model space, x y z per vertex
 layout(std430, binding = 2) readonly buffer MeshTexcoords { float texcoords[]; }; // s t per vertex (read only when textured)
 layout(std430, binding = 3) readonly buffer MeshColors { float colors[]; };       // COLOR_0 r g b a per vertex (read only when coloured)
+layout(std430, binding = 4) readonly buffer MeshTexcoords1 { float texcoords1[]; }; // TEXCOORD_1 s t per vertex (read only when textured from it)
 
 flat out vec3 frontDiffuse;  // Illumination with N
 flat out vec3 frontSpecular;
 flat out vec3 backDiffuse;   // Illumination with -N, for back faces where they are not culled
 flat out vec3 backSpecular;
-out vec2 st;                 // a texture still varies O_d per pixel
+out vec4 st;                 // a texture still varies O_d per pixel: TEXCOORD_0 in xy, TEXCOORD_1 in zw
 out vec4 vertexColor;        // and so do vertex colours
 out vec3 modelPoint;      // and procedural textures
 
@@ -58,9 +59,10 @@ void main() {
   backDiffuse = back.diffuse;
   backSpecular = back.specular;
 #if FACET_TEXTURED
-  st = vec2(texcoords[2u * v], texcoords[2u * v + 1u]);
+  // Only the base colour texture's set is read: the other stays (0, 0).
+  st = baseColorSet == 1 ? vec4(0.0, 0.0, texcoords1[2u * v], texcoords1[2u * v + 1u]) : vec4(texcoords[2u * v], texcoords[2u * v + 1u], 0.0, 0.0);
 #else
-  st = vec2(0.0);
+  st = vec4(0.0);
 #endif
   modelPoint = modelPosition(v);
 #if FACET_COLORED

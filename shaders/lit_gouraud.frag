@@ -15,16 +15,16 @@ in vec3 frontDiffuse;
 in vec3 frontSpecular;
 in vec3 backDiffuse;
 in vec3 backSpecular;
-in vec2 st;
+in vec4 st;  // TEXCOORD_0 in xy, TEXCOORD_1 in zw
 in vec4 vertexColor;
 in vec3 modelPoint;
 
 layout(location = 0) out vec4 color;
 
 void main() {
-  vec4 stDerivatives = vec4(dFdx(st), dFdy(st));  // in uniform control flow, before anything can branch
+  Texcoords t = texcoordsAt(st);  // in uniform control flow, before anything can branch
   Illumination I = gl_FrontFacing ? Illumination(frontDiffuse, frontSpecular) : Illumination(backDiffuse, backSpecular);
-  vec4 O = baseColorAt(st, stDerivatives, vertexColor, modelPoint);
+  vec4 O = baseColorAt(t, vertexColor, modelPoint);
   if (!alphaKept(O.a)) discard;  // alpha mask (a no-op unless FACET_MASKED)
   color = encodeSrgb(shade(I, O.rgb));
 }

@@ -15,13 +15,14 @@
 layout(location = 0) in vec3 position;  // model space
 layout(location = 1) in vec3 normal;    // model space, unit length
 layout(location = 2) in vec2 texcoord;  // TEXCOORD_0 (0, 0 when the mesh has none)
+layout(location = 5) in vec2 texcoord1; // TEXCOORD_1 (0, 0 when the mesh has none)
 layout(location = 3) in vec4 color0;    // COLOR_0, linear RGBA (read only when the mesh has it)
 
 out vec3 frontDiffuse;   // Illumination with N
 out vec3 frontSpecular;
 out vec3 backDiffuse;    // Illumination with -N, for back faces where they are not culled
 out vec3 backSpecular;
-out vec2 st;
+out vec4 st;  // TEXCOORD_0 in xy, TEXCOORD_1 in zw
 out vec4 vertexColor;
 out vec3 modelPoint;      // procedural textures
 
@@ -36,7 +37,7 @@ void main() {
   frontSpecular = front.specular;
   backDiffuse = back.diffuse;
   backSpecular = back.specular;
-  st = texcoord;
+  st = vec4(texcoord, texcoord1);
   vertexColor = color0;
   modelPoint = position;
 }

@@ -17,7 +17,7 @@
 
 in vec3 worldPosition;
 in vec3 worldNormal;
-in vec2 st;
+in vec4 st;  // TEXCOORD_0 in xy, TEXCOORD_1 in zw
 in vec4 vertexColor;
 in vec3 modelPoint;
 in vec4 worldTangent;
@@ -25,21 +25,21 @@ in vec4 worldTangent;
 layout(location = 0) out vec4 color;
 
 void main() {
-  vec4 stDerivatives = vec4(dFdx(st), dFdy(st));  // in uniform control flow, before anything can branch
+  Texcoords t = texcoordsAt(st);  // in uniform control flow, before anything can branch
   vec3 P = worldPosition;
   vec3 N = normalize3(worldNormal);
 #if FACET_NORMAL_MAP
   // A normal texture bends the unit interpolated normal; the result is normalized as that one is.
-  N = normalize3(normalMapped(N, worldTangent, st, stDerivatives));
+  N = normalize3(normalMapped(N, worldTangent, t));
 #endif
 #if FACET_BUMP_MAP
-  N = normalize3(bumped(N, worldTangent, st));  // the course's bump mapping, after the normal texture
+  N = normalize3(bumped(N, worldTangent, st.xy));  // the course's bump mapping, after the normal texture
 #endif
   if (!gl_FrontFacing) N = -N;  // two-sided lighting: a back face is drawn only where it is not culled
-  vec4 O = baseColorAt(st, stDerivatives, vertexColor, modelPoint);
+  vec4 O = baseColorAt(t, vertexColor, modelPoint);
   if (!alphaKept(O.a)) discard;  // alpha mask (a no-op unless FACET_MASKED)
 #if FACET_PBR
-  color = encodeSrgb(shadePhysicallyBased(pbrSurfaceAt(O.rgb, st, stDerivatives), P, N, viewVector(P)));
+  color = encodeSrgb(shadePhysicallyBased(pbrSurfaceAt(O.rgb, t), P, N, viewVector(P)));
 #else
   color = encodeSrgb(shade(illuminate(material, P, N, viewVector(P)), O.rgb));
 #endif

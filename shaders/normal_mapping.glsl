@@ -18,8 +18,8 @@ TangentFrame tangentFrame(vec3 N, vec4 tangent) {
 
 // N' before it is normalized: n = (2·texel - 1) with x, y times the scale,
 // T = normalize3(t - N·(N·t)), B = ±(N × T) by the tangent's w, N' = (T·n.x + B·n.y) + N·n.z.
-vec3 normalMapped(vec3 N, vec4 tangent, vec2 st, vec4 d) {
-  vec4 texel = sampleTexture(normalMap, mapsSrgb.w != 0, normalMapSampler, st, d);
+vec3 normalMapped(vec3 N, vec4 tangent, Texcoords t) {
+  vec4 texel = sampleTexture(normalMap, mapsSrgb.w != 0, normalMapSampler, setOf(t, mapSets.w), derivativesOf(t, mapSets.w));
   precise float x = (2.0 * texel.r - 1.0) * normalScale, y = (2.0 * texel.g - 1.0) * normalScale;
   precise float z = 2.0 * texel.b - 1.0;
   TangentFrame f = tangentFrame(N, tangent);

@@ -20,24 +20,25 @@ struct PbrSurface {
   vec3 emissive;   // k_e
 };
 
-// The pixel's surface: O_d, the material's factors times its maps read at
-// TEXCOORD_0 st with derivatives d (no texture transform), the maps the
-// draw's variant has (FACET_*_MAP: the material has it, the mesh TEXCOORD_0):
+// The pixel's surface: O_d, the material's factors times its maps, each read
+// at its own set of t (mapSets) with that set's derivatives (no texture
+// transform), the maps the draw's variant has (FACET_*_MAP: the material has
+// it, the mesh its set):
 //   r·G, m·B of the metallic-roughness map; ao = 1 + strength·(R - 1); k_e·RGB of the emissive map.
-PbrSurface pbrSurfaceAt(vec3 baseColor, vec2 st, vec4 d) {
+PbrSurface pbrSurfaceAt(vec3 baseColor, Texcoords t) {
   PbrSurface s = PbrSurface(baseColor, material.metallic, material.roughness, 1.0, material.emissive);
 #if FACET_METALLIC_ROUGHNESS_MAP
-  vec4 t = sampleTexture(metallicRoughnessMap, mapsSrgb.x != 0, metallicRoughnessSampler, st, d);
-  precise float r = s.roughness * t.g, m = s.metallic * t.b;
+  vec4 texel = sampleTexture(metallicRoughnessMap, mapsSrgb.x != 0, metallicRoughnessSampler, setOf(t, mapSets.x), derivativesOf(t, mapSets.x));
+  precise float r = s.roughness * texel.g, m = s.metallic * texel.b;
   s.roughness = r;
   s.metallic = m;
 #endif
 #if FACET_OCCLUSION_MAP
-  precise float ao = 1.0 + occlusionStrength * (sampleTexture(occlusionMap, mapsSrgb.y != 0, occlusionSampler, st, d).r - 1.0);
+  precise float ao = 1.0 + occlusionStrength * (sampleTexture(occlusionMap, mapsSrgb.y != 0, occlusionSampler, setOf(t, mapSets.y), derivativesOf(t, mapSets.y)).r - 1.0);
   s.occlusion = ao;
 #endif
 #if FACET_EMISSIVE_MAP
-  precise vec3 e = s.emissive * sampleTexture(emissiveMap, mapsSrgb.z != 0, emissiveSampler, st, d).rgb;
+  precise vec3 e = s.emissive * sampleTexture(emissiveMap, mapsSrgb.z != 0, emissiveSampler, setOf(t, mapSets.z), derivativesOf(t, mapSets.z)).rgb;
   s.emissive = e;
 #endif
   return s;

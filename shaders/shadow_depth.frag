@@ -8,10 +8,10 @@
 #include "procedural.glsl"
 #include "draw_uniforms.glsl"
 
-in vec2 st;
+in vec4 st;  // TEXCOORD_0 in xy, TEXCOORD_1 in zw
 in vec4 vertexColor;
 
 void main() {
-  vec4 stDerivatives = vec4(dFdx(st), dFdy(st));
-  if (!alphaKept(baseColorAt(st, stDerivatives, vertexColor, vec3(0.0)).a)) discard;
+  Texcoords t = texcoordsAt(st);
+  if (!alphaKept(baseColorAt(t, vertexColor, vec3(0.0)).a)) discard;
 }

@@ -11,13 +11,13 @@
 
 uniform uint firstTriangle;
 
-in vec2 st;
+in vec4 st;  // TEXCOORD_0 in xy, TEXCOORD_1 in zw
 in vec4 vertexColor;
 
 layout(location = 0) out uint id;
 
 void main() {
-  vec4 stDerivatives = vec4(dFdx(st), dFdy(st));
-  if (!alphaKept(baseColorAt(st, stDerivatives, vertexColor, vec3(0.0)).a)) discard;
+  Texcoords t = texcoordsAt(st);
+  if (!alphaKept(baseColorAt(t, vertexColor, vec3(0.0)).a)) discard;
   id = firstTriangle + uint(gl_PrimitiveID) + 1u;
 }

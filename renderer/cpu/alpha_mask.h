@@ -30,8 +30,9 @@ inline bool keepsFragment(const CourseMaterial& material, const Texture* texture
                           int px, int py) {
   glm::vec4 texel{1.0f};
   if (texture) {
-    const glm::vec2 st{in.varyingAt(layout.uv, px, py), in.varyingAt(layout.uv + 1, px, py)};
-    texel = sampleBaseColorTexture(*texture, material, st, in.quadDerivatives(layout.uv, px, py));
+    const int uv = layout.texcoord(material.baseColorSet);
+    const glm::vec2 st{in.varyingAt(uv, px, py), in.varyingAt(uv + 1, px, py)};
+    texel = sampleBaseColorTexture(*texture, material, st, in.quadDerivatives(uv, px, py));
   }
   const float vertexAlpha = colored ? in.varyingAt(layout.color + 3, px, py) : 1.0f;
   return alphaKept(material, fragmentAlpha(material, colored ? &vertexAlpha : nullptr, texture ? &texel : nullptr));

@@ -10,7 +10,7 @@
 
 namespace facet::cpu {
 
-inline constexpr int kMaxVaryings = 21;  // the most varyingLayout (varyings.h) uses
+inline constexpr int kMaxVaryings = 23;  // the most varyingLayout (varyings.h) uses
 
 // A vertex after the vertex stage: clip position and the attributes that
 // are interpolated across the triangle.

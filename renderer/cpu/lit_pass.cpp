@@ -99,30 +99,32 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
 #endif
       float v[layout.count];
       if (used) in->varyingsAt(px, py, v);
+      // A texture coordinate set at the pixel, and its quad derivatives (ds/dx, dt/dx, ds/dy, dt/dy).
+      const auto stAt = [&](int set) { return glm::vec2(v[layout.texcoord(set)], v[layout.texcoord(set) + 1]); };
+      const auto derivativesAt = [&](int set) { return in->quadDerivatives(layout.texcoord(set), px, py); };
       // O_d = factor · COLOR_0 · texel (PIPELINE.md, section 8)
       glm::vec3 baseColor = material->baseColor;
       if (colored) baseColor *= glm::vec3(v[layout.color], v[layout.color + 1], v[layout.color + 2]);
       if (procedural)
         baseColor *= proceduralGrey(frame.procedural, {v[layout.model], v[layout.model + 1], v[layout.model + 2]}, frame.proceduralScale);
       else if (texture)
-        baseColor *= glm::vec3(
-            sampleBaseColorTexture(*texture, *material, {v[layout.uv], v[layout.uv + 1]}, in->quadDerivatives(layout.uv, px, py)));
+        baseColor *= glm::vec3(sampleBaseColorTexture(*texture, *material, stAt(material->baseColorSet), derivativesAt(material->baseColorSet)));
       glm::vec3 color;
       glm::vec3 interpolatedNormal(0.0f);
       if constexpr (kMode == ShadingMode::Pbr || kMode == ShadingMode::Phong) {
         interpolatedNormal = {v[3], v[4], v[5]};
         // A normal texture bends the unit interpolated normal; the result is normalized as the interpolated one is.
         const glm::vec4 tangent{v[layout.tangent], v[layout.tangent + 1], v[layout.tangent + 2], v[layout.tangent + 3]};
-        const glm::vec2 st{v[layout.uv], v[layout.uv + 1]};
         if (normalMap)
-          interpolatedNormal = normalMapped(*normalMap, *material, normalize3(interpolatedNormal), tangent, st, in->quadDerivatives(layout.uv, px, py));
-        if (bumpable) interpolatedNormal = bumped(*frame.bump.map, frame.bump.scale, normalize3(interpolatedNormal), tangent, st);
+          interpolatedNormal = normalMapped(*normalMap, *material, normalize3(interpolatedNormal), tangent, stAt(material->normalMap.set),
+                                            derivativesAt(material->normalMap.set));
+        if (bumpable) interpolatedNormal = bumped(*frame.bump.map, frame.bump.scale, normalize3(interpolatedNormal), tangent, stAt(0));
       }
       if constexpr (kMode == ShadingMode::Pbr) {
         const glm::vec3 P{v[0], v[1], v[2]};
         const glm::vec3 unit = normalize3(interpolatedNormal);
         const glm::vec3 N = back ? -unit : unit;  // two-sided lighting
-        const PbrSurface surface = pbrSurfaceAt(scene, *material, *drawnMesh, baseColor, {v[layout.uv], v[layout.uv + 1]}, in->quadDerivatives(layout.uv, px, py));
+        const PbrSurface surface = pbrSurfaceAt(scene, *material, *drawnMesh, baseColor, {stAt(0), stAt(1)}, {derivativesAt(0), derivativesAt(1)});
         color = shadePhysicallyBased(frame, maps, surface, P, N, viewVector<float>(frame, P));
       } else if constexpr (kMode == ShadingMode::Phong) {
         // N is normalized (and negated on a back face, two-sided lighting) in the batch
@@ -166,9 +168,7 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
       const glm::vec3 P = v.world[g];
       float* out = v.window.data() + g * stride;
       float* varyings = out + 4;
-      const glm::vec2 uv = mesh.texcoords.empty() ? glm::vec2(0.0f) : mesh.texcoords[local];
-      varyings[layout.uv] = uv.x;
-      varyings[layout.uv + 1] = uv.y;
+      putTexcoords(varyings, layout.uv, mesh, local);
       put(varyings, layout.color, mesh.colors.empty() ? glm::vec4(1.0f) : mesh.colors[local]);
       if (packed == layout.count) put(varyings, layout.model, mesh.positions[local]);
       if (interpolatesNormals(frame.shading)) {

@@ -13,7 +13,7 @@ namespace facet::cpu {
 
 // The normal texture a draw of `mesh` with `material` reads in Phong and pbr: none without one or without tangents.
 inline const Texture* normalMapOf(const Scene& scene, const CourseMaterial& material, const Mesh& mesh) {
-  if (material.normalMap.texture < 0 || mesh.tangents.empty()) return nullptr;
+  if (material.normalMap.texture < 0 || mesh.tangents.empty() || mesh.texcoordSet(material.normalMap.set).empty()) return nullptr;
   return &scene.textures[static_cast<std::size_t>(material.normalMap.texture)];
 }
 

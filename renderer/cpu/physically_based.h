@@ -30,21 +30,27 @@ struct PbrSurface {
   glm::vec3 emissive{0.0f};  // k_e
 };
 
+// Whether a draw of `mesh` reads `map`: the material has it and the mesh has the set it reads.
+inline bool readsMap(const MaterialMap& map, const Mesh& mesh) { return map.texture >= 0 && !mesh.texcoordSet(map.set).empty(); }
+
 // The pixel's surface: O_d as section 8 makes it, the material's factors
-// times its maps read at TEXCOORD_0 st with derivatives d (no texture
-// transform), where the mesh has texture coordinates:
+// times its maps, each read at its set's st[set] with derivatives d[set]
+// (no texture transform) where the mesh has that set:
 //   r·G, m·B of the metallic-roughness map; ao = 1 + strength·(R - 1); k_e·RGB of the emissive map.
-inline PbrSurface pbrSurfaceAt(const Scene& scene, const CourseMaterial& m, const Mesh& mesh, glm::vec3 baseColor, glm::vec2 st, glm::vec4 d) {
+inline PbrSurface pbrSurfaceAt(const Scene& scene, const CourseMaterial& m, const Mesh& mesh, glm::vec3 baseColor, const glm::vec2 (&st)[2],
+                               const glm::vec4 (&d)[2]) {
   PbrSurface s{baseColor, m.metallic, m.roughness, 1.0f, m.emissive};
-  if (mesh.texcoords.empty()) return s;
-  const auto sample = [&](const MaterialMap& map) { return sampleTexture(scene.textures[static_cast<std::size_t>(map.texture)], map.sampler, st, d); };
-  if (m.metallicRoughnessMap.texture >= 0) {
+  const auto sample = [&](const MaterialMap& map) {
+    const int set = map.set == 1 ? 1 : 0;
+    return sampleTexture(scene.textures[static_cast<std::size_t>(map.texture)], map.sampler, st[set], d[set]);
+  };
+  if (readsMap(m.metallicRoughnessMap, mesh)) {
     const glm::vec4 t = sample(m.metallicRoughnessMap);
     s.roughness = s.roughness * t.g;
     s.metallic = s.metallic * t.b;
   }
-  if (m.occlusionMap.texture >= 0) s.occlusion = 1.0f + m.occlusionStrength * (sample(m.occlusionMap).r - 1.0f);
-  if (m.emissiveMap.texture >= 0) s.emissive = s.emissive * glm::vec3(sample(m.emissiveMap));
+  if (readsMap(m.occlusionMap, mesh)) s.occlusion = 1.0f + m.occlusionStrength * (sample(m.occlusionMap).r - 1.0f);
+  if (readsMap(m.emissiveMap, mesh)) s.emissive = s.emissive * glm::vec3(sample(m.emissiveMap));
   return s;
 }
 

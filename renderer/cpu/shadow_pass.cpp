@@ -43,9 +43,8 @@ void shadowPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, con
       while (g >= v.firstVertex[i + 1]) ++i;
       const Mesh& mesh = scene.meshes[static_cast<std::size_t>(frame.instances[i].mesh)];
       const std::size_t local = g - v.firstVertex[i];
-      const glm::vec2 uv = mesh.texcoords.empty() ? glm::vec2(0.0f) : mesh.texcoords[local];
       const glm::vec4 color = mesh.colors.empty() ? glm::vec4(1.0f) : mesh.colors[local];
-      out[4 + mask.uv] = uv.x, out[4 + mask.uv + 1] = uv.y;
+      putTexcoords(out + 4, mask.uv, mesh, local);
       for (int c = 0; c < 4; ++c) out[4 + mask.color + c] = color[c];
     }
   });

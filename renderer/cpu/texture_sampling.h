@@ -13,10 +13,10 @@
 namespace facet::cpu {
 
 // The base colour texture a draw of `mesh` with `material` samples: none when
-// the material has none, the mesh has no TEXCOORD_0, or a procedural texture
-// takes its place (PIPELINE.md, section 8).
+// the material has none, the mesh lacks the set it reads, or a procedural
+// texture takes its place (PIPELINE.md, section 8).
 inline const Texture* baseColorTextureOf(const Scene& scene, const FrameInputs& frame, const CourseMaterial& material, const Mesh& mesh) {
-  if (frame.procedural != Procedural::None || material.baseColorTexture < 0 || mesh.texcoords.empty()) return nullptr;
+  if (frame.procedural != Procedural::None || material.baseColorTexture < 0 || mesh.texcoordSet(material.baseColorSet).empty()) return nullptr;
   return &scene.textures[static_cast<std::size_t>(material.baseColorTexture)];
 }
 
@@ -59,7 +59,7 @@ float footprintSquared(glm::vec4 derivatives, int width, int height);
 // (Interpolation::quadDerivatives): linear RGB and alpha.
 glm::vec4 sampleTexture(const Texture& texture, const Sampler& sampler, glm::vec2 st, glm::vec4 derivatives);
 
-// A material's base colour texture at the fragment's TEXCOORD_0 st and its derivatives: transformed, then sampled.
+// A material's base colour texture at the fragment's st (of its set) and its derivatives: transformed, then sampled.
 inline glm::vec4 sampleBaseColorTexture(const Texture& texture, const CourseMaterial& m, glm::vec2 st, glm::vec4 derivatives) {
   const TransformedTexcoords t = transformTexcoords(m, st, derivatives);
   return sampleTexture(texture, m.baseColorSampler, t.st, t.derivatives);

@@ -31,7 +31,8 @@ constexpr GLuint kMeshIndicesBinding = 0;     // storage buffers of lit_flat.ver
 constexpr GLuint kMeshPositionsBinding = 1;
 constexpr GLuint kMeshTexcoordsBinding = 2;
 constexpr GLuint kMeshColorsBinding = 3;
-constexpr GLint kMeshStorageBuffers = 4;
+constexpr GLuint kMeshTexcoords1Binding = 4;
+constexpr GLint kMeshStorageBuffers = 5;
 
 // The vertex and fragment shader of each shading mode, indexed by ShadingMode.
 constexpr std::array<std::string_view, 2> kLitStages[] = {
@@ -176,14 +177,16 @@ DrawVariant GlFrameRenderer::drawVariant(const FrameInputs& frame, const FrameIn
   const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
   // A procedural texture takes the base colour texture's place (renderer/cpu/texture_sampling.h, baseColorTextureOf);
   // shading=pbr alone reads the other maps (renderer/cpu/physically_based.h, pbrSurfaceAt).
-  const bool pbrMaps = frame.shading == ShadingMode::Pbr && mesh.texcoords;
-  return {frame.procedural == Procedural::None && material.baseColorTexture >= 0 && mesh.texcoords,
+  // Each map only where the mesh has the texture coordinate set it reads.
+  const auto reads = [&](const MaterialMap& map) { return map.texture >= 0 && mesh.hasSet(map.set); };
+  const bool pbr = frame.shading == ShadingMode::Pbr;
+  return {frame.procedural == Procedural::None && material.baseColorTexture >= 0 && mesh.hasSet(material.baseColorSet),
           static_cast<bool>(mesh.colors),
           material.masked,
-          pbrMaps && material.metallicRoughnessMap.texture >= 0,
-          pbrMaps && material.occlusionMap.texture >= 0,
-          pbrMaps && material.emissiveMap.texture >= 0,
-          interpolatesNormals(frame.shading) && material.normalMap.texture >= 0 && mesh.tangents,
+          pbr && reads(material.metallicRoughnessMap),
+          pbr && reads(material.occlusionMap),
+          pbr && reads(material.emissiveMap),
+          interpolatesNormals(frame.shading) && reads(material.normalMap) && mesh.tangents,
           frame.bump.map != nullptr && mesh.tangents};
 }
 
@@ -232,6 +235,7 @@ bool GlFrameRenderer::preparePrograms(const FrameInputs& frame) {
                                          .mapsSrgb = at("mapsSrgb"),
                                          .normalMapSampler = at("normalMapSampler"),
                                          .normalScale = at("normalScale"),
+                                         .mapSets = at("mapSets"),
                                          .baseColorFactor = at("baseColorFactor"),
                                          .alpha = alphaUniforms(program),
                                          .program = std::move(program)});
@@ -386,7 +390,8 @@ void GlFrameRenderer::drawInstance(const LitProgram& lit, const FrameInputs& fra
     gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshIndicesBinding, mesh.indices.id());
     gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshPositionsBinding, mesh.positions.id());
     // Read only when textured; something valid is bound either way.
-    gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshTexcoordsBinding, textured ? mesh.texcoords.id() : mesh.positions.id());
+    gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshTexcoordsBinding, textured && mesh.texcoords ? mesh.texcoords.id() : mesh.positions.id());
+    gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshTexcoords1Binding, textured && mesh.texcoords1 ? mesh.texcoords1.id() : mesh.positions.id());
     gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshColorsBinding, variant.colored ? mesh.colors.id() : mesh.positions.id());
     gl_.glBindVertexArray(emptyVertexArray_.id());
     gl_.glDrawArrays(GL_TRIANGLES, 0, mesh.indexCount);
@@ -398,7 +403,7 @@ void GlFrameRenderer::drawInstance(const LitProgram& lit, const FrameInputs& fra
 
 GlFrameRenderer::AlphaUniforms GlFrameRenderer::alphaUniforms(const ShaderProgram& program) const {
   return {uniformLocation(gl_, program, "baseColorSampler"), uniformLocation(gl_, program, "baseColorTransform"),
-          uniformLocation(gl_, program, "baseAlpha"), uniformLocation(gl_, program, "alphaCutoff")};
+          uniformLocation(gl_, program, "baseColorSet"), uniformLocation(gl_, program, "baseAlpha"), uniformLocation(gl_, program, "alphaCutoff")};
 }
 
 template <class Program, class Make>
@@ -420,6 +425,7 @@ void GlFrameRenderer::setBaseColorUniforms(GLuint program, const AlphaUniforms& 
   const glm::vec3 rows[2] = {material.uvRow0, material.uvRow1};
   gl_.glProgramUniform3fv(program, uniforms.baseColorTransform, 2, glm::value_ptr(rows[0]));
   gl_.glProgramUniform1f(program, uniforms.alphaCutoff, material.alphaCutoff);
+  gl_.glProgramUniform1i(program, uniforms.baseColorSet, material.baseColorSet == 1 ? 1 : 0);
   const Sampler& sampler = material.baseColorSampler;
   static_assert(static_cast<int>(MagFilter::Linear) == 1 && static_cast<int>(MinFilter::NearestMipmapNearest) == 2 &&
                     static_cast<int>(MinFilter::LinearMipmapLinear) == 5 && static_cast<int>(Wrap::MirroredRepeat) == 2,
@@ -448,6 +454,9 @@ void GlFrameRenderer::setMapUniforms(const LitProgram& lit, const CourseMaterial
   }
   if (variant.occlusionMap) gl_.glProgramUniform1f(program, lit.occlusionStrength, material.occlusionStrength);
   if (variant.normalMap) gl_.glProgramUniform1f(program, lit.normalScale, material.normalScale);
+  const auto set = [](const MaterialMap& map) { return map.set == 1 ? 1 : 0; };
+  gl_.glProgramUniform4i(program, lit.mapSets, set(material.metallicRoughnessMap), set(material.occlusionMap), set(material.emissiveMap),
+                         set(material.normalMap));
   gl_.glProgramUniform4i(program, lit.mapsSrgb, material.metallicRoughnessMap.srgb ? 1 : 0, material.occlusionMap.srgb ? 1 : 0,
                          material.emissiveMap.srgb ? 1 : 0, material.normalMap.srgb ? 1 : 0);
 }

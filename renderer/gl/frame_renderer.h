@@ -57,13 +57,14 @@ class GlFrameRenderer {
   // the locations are looked up before the program is moved in.
   // The base colour texture's sampler and the alpha mask's uniforms of a program that reads them.
   struct AlphaUniforms {
-    GLint baseColorSampler, baseColorTransform, baseAlpha, alphaCutoff;
+    GLint baseColorSampler, baseColorTransform, baseColorSet, baseAlpha, alphaCutoff;
   };
   struct LitProgram {
     GLint clipFromModel, worldFromModel, normalMatrix;
     GLint emissive, ka, kd, ks, shininess, metallic, roughness;
     GLint metallicRoughnessSampler, occlusionSampler, emissiveSampler, occlusionStrength, mapsSrgb;
-    GLint normalMapSampler, normalScale;  // the normal texture (Phong and pbr)  // shading=pbr's maps
+    GLint normalMapSampler, normalScale;  // the normal texture (Phong and pbr)
+    GLint mapSets;                        // the texture coordinate set of each map above
     GLint baseColorFactor;
     AlphaUniforms alpha;
     ShaderProgram program;

@@ -28,6 +28,7 @@ GlObject attributeArray(const GlFunctions& gl, const MeshBuffers& buffers, const
   addAttribute(gl, vao, kPositionAttribute, buffers.positions, 3);
   addAttribute(gl, vao, kNormalAttribute, buffers.normals, 3);
   if (buffers.texcoords) addAttribute(gl, vao, kTexcoordAttribute, buffers.texcoords, 2);
+  if (buffers.texcoords1) addAttribute(gl, vao, kTexcoord1Attribute, buffers.texcoords1, 2);
   if (buffers.colors) addAttribute(gl, vao, kColorAttribute, buffers.colors, 4);
   if (buffers.tangents) addAttribute(gl, vao, kTangentAttribute, buffers.tangents, 4);
   gl.glVertexArrayElementBuffer(vao, indices.id());
@@ -43,6 +44,7 @@ MeshBuffers uploadMesh(const GlFunctions& gl, const Mesh& mesh) {
   buffers.positions = uploadBuffer(gl, mesh.positions);
   buffers.normals = uploadBuffer(gl, mesh.normals);
   if (mesh.texcoords.size() == mesh.positions.size()) buffers.texcoords = uploadBuffer(gl, mesh.texcoords);
+  if (mesh.texcoords1.size() == mesh.positions.size()) buffers.texcoords1 = uploadBuffer(gl, mesh.texcoords1);
   if (mesh.colors.size() == mesh.positions.size()) buffers.colors = uploadBuffer(gl, mesh.colors);
   if (mesh.tangents.size() == mesh.positions.size()) buffers.tangents = uploadBuffer(gl, mesh.tangents);
   if (triangles) {

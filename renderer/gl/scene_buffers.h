@@ -14,11 +14,13 @@ inline constexpr GLuint kNormalAttribute = 1;    // vec3, model space
 inline constexpr GLuint kTexcoordAttribute = 2;  // vec2, TEXCOORD_0
 inline constexpr GLuint kColorAttribute = 3;     // vec4, COLOR_0 (linear RGBA)
 inline constexpr GLuint kTangentAttribute = 4;   // vec4, TANGENT (xyz unit, w ±1); (0, 0, 0, 1) when the mesh has none
+inline constexpr GLuint kTexcoord1Attribute = 5; // vec2, TEXCOORD_1
 
 struct MeshBuffers {
   GlObject positions;    // x y z per vertex; also read as a storage buffer by lit_flat.vert
   GlObject normals;
   GlObject texcoords;    // none when the mesh has no TEXCOORD_0; also a storage buffer for lit_flat.vert
+  GlObject texcoords1;   // none when the mesh has no TEXCOORD_1; also a storage buffer for lit_flat.vert
   GlObject colors;       // none when the mesh has no COLOR_0; also a storage buffer for lit_flat.vert
   GlObject tangents;     // none when the mesh has no tangents
   GlObject indices;      // three per triangle; also a storage buffer for lit_flat.vert
@@ -27,6 +29,8 @@ struct MeshBuffers {
   GlObject lineIndices, pointIndices;          // two per segment, one per point
   GlObject lineVertexArray, pointVertexArray;  // the attributes with those as index buffers
   GLsizei lineIndexCount = 0, pointCount = 0;
+  // Whether texture coordinate set `set` (1: TEXCOORD_1, else TEXCOORD_0) was uploaded.
+  bool hasSet(int set) const { return static_cast<bool>(set == 1 ? texcoords1 : texcoords); }
 };
 
 class SceneBuffers {

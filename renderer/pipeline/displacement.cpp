@@ -20,7 +20,7 @@ namespace {
 
 // Four triangles for each of `mesh`, by its edge midpoints, each made once per edge.
 void subdivide(Mesh& mesh) {
-  const bool colored = !mesh.colors.empty();
+  const bool colored = !mesh.colors.empty(), withSet1 = !mesh.texcoords1.empty();
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> midpoints;
   const auto midpoint = [&](std::uint32_t a, std::uint32_t b) {
     const std::pair<std::uint32_t, std::uint32_t> key = std::minmax(a, b);
@@ -30,6 +30,7 @@ void subdivide(Mesh& mesh) {
     mesh.positions.push_back((mesh.positions[a] + mesh.positions[b]) * 0.5f);
     mesh.normals.push_back(glm::normalize(mesh.normals[a] + mesh.normals[b]));
     mesh.texcoords.push_back((mesh.texcoords[a] + mesh.texcoords[b]) * 0.5f);
+    if (withSet1) mesh.texcoords1.push_back((mesh.texcoords1[a] + mesh.texcoords1[b]) * 0.5f);
     if (colored) mesh.colors.push_back((mesh.colors[a] + mesh.colors[b]) * 0.5f);
     midpoints.emplace(key, m);
     return m;
@@ -90,7 +91,8 @@ void displaceMeshes(Scene& scene, const Image& heights, float scale, int subdivi
       const std::string what = "material.displacementSubdivisions: meshes[" + std::to_string(m) + "] '" + mesh.name + "' subdivided " +
                                std::to_string(subdivisions) + " times: " + std::to_string(vertices) + " vertices and " + std::to_string(triangles) +
                                " triangles";
-      const std::uint64_t perVertex = 2 * sizeof(glm::vec3) + sizeof(glm::vec2) + (mesh.colors.empty() ? 0 : sizeof(glm::vec4)) +
+      const std::uint64_t perVertex = 2 * sizeof(glm::vec3) + sizeof(glm::vec2) + (mesh.texcoords1.empty() ? 0 : sizeof(glm::vec2)) +
+                                      (mesh.colors.empty() ? 0 : sizeof(glm::vec4)) +
                                       (mesh.tangents.empty() ? 0 : sizeof(glm::vec4));
       sceneBudget.charge(vertices * perVertex + triangles * 3 * sizeof(std::uint32_t), what);
     }
@@ -116,7 +118,7 @@ void displaceMeshes(Scene& scene, const Image& heights, float scale, int subdivi
       mesh.positions[v] += static_cast<float>(scale * h) * mesh.normals[v];
     }
     computeVertexNormals(mesh);
-    if (!mesh.tangents.empty()) computeVertexTangents(mesh);  // the displaced surface's, as its normals
+    if (!mesh.tangents.empty()) computeVertexTangents(mesh, tangentSetOf(scene, mesh));  // the displaced surface's, as its normals
   }
   scene.identity.renew();
 }

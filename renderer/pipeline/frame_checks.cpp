@@ -32,14 +32,16 @@ void checkMesh(const Scene& scene, std::size_t m) {
   const std::size_t n = mesh.positions.size();
   if (mesh.normals.size() != n)
     throw Error(meshName(scene, m) + ": " + std::to_string(mesh.normals.size()) + " normals for " + std::to_string(n) + " positions");
-  if (!mesh.texcoords.empty() && mesh.texcoords.size() != n)
-    throw Error(meshName(scene, m) + ": " + std::to_string(mesh.texcoords.size()) + " texture coordinates for " + std::to_string(n) +
-                " positions");
+  for (int set = 0; set < 2; ++set)
+    if (const std::vector<glm::vec2>& uv = mesh.texcoordSet(set); !uv.empty() && uv.size() != n)
+      throw Error(meshName(scene, m) + ": " + std::to_string(uv.size()) + " TEXCOORD_" + std::to_string(set) + " texture coordinates for " +
+                  std::to_string(n) + " positions");
   if (!mesh.colors.empty() && mesh.colors.size() != n)
     throw Error(meshName(scene, m) + ": " + std::to_string(mesh.colors.size()) + " vertex colours for " + std::to_string(n) + " positions");
-  if (!mesh.tangents.empty() && (mesh.tangents.size() != n || mesh.texcoords.empty()))
+  const bool untextured = mesh.texcoords.empty() && mesh.texcoords1.empty();
+  if (!mesh.tangents.empty() && (mesh.tangents.size() != n || untextured))
     throw Error(meshName(scene, m) + ": " + std::to_string(mesh.tangents.size()) + " tangents for " + std::to_string(n) + " positions" +
-                (mesh.texcoords.empty() ? " and no texture coordinates" : ""));
+                (untextured ? " and no texture coordinates" : ""));
   if (n >= kMaxFrameVertices) throw Error(meshName(scene, m) + ": " + std::to_string(n) + " vertices, more than a frame holds");
   for (const std::vector<std::uint32_t>* list : {&mesh.indices, &mesh.lines, &mesh.points})
     for (std::size_t i = 0; i < list->size(); ++i)

@@ -23,6 +23,12 @@ CourseMaterial courseMaterial(const Material& material, const MaterialOverrides&
   out.masked = material.alphaMode == AlphaMode::Mask;
   out.alphaCutoff = material.alphaCutoff;
   out.baseColorTexture = material.baseColorTexture;
+  const TexcoordSets& sets = material.texcoordSets;
+  out.baseColorSet = sets.baseColor;
+  out.metallicRoughnessMap.set = sets.metallicRoughness;
+  out.occlusionMap.set = sets.occlusion;
+  out.emissiveMap.set = sets.emissive;
+  out.normalMap.set = sets.normal;
   out.emissive = material.emissive;
   out.kd = overrides.kd.value_or(1.0f - 0.6f * m);
   out.ka = overrides.ka.value_or(1.0f - 0.6f * m);

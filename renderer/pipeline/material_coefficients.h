@@ -11,6 +11,7 @@ struct MaterialMap {
   int texture = -1;  // index into Scene::textures, -1 = none
   Sampler sampler;   // its sampler with textures.filter applied
   bool srgb = false; // its texels are read as sRGB colour (a texture a file also uses as colour), not as data
+  int set = 0;       // the texture coordinates it reads: TEXCOORD_0 or TEXCOORD_1
 };
 
 // A material in the course's terms: the coefficients of
@@ -21,6 +22,7 @@ struct CourseMaterial {
   glm::vec3 baseColor{1.0f};  // O_d, linear RGB (multiplied by the texture when there is one)
   int baseColorTexture = -1;  // index into Scene::textures, -1 = none
   Sampler baseColorSampler;   // its sampler with textures.filter applied (pipeline/texture_filter.h)
+  int baseColorSet = 0;       // the texture coordinates it reads: TEXCOORD_0 or TEXCOORD_1
   // Its KHR_texture_transform as the rows of a 2×3 matrix: (s', t') = ((r0.x·s + r0.y·t) + r0.z, (r1.x·s + r1.y·t) + r1.z).
   glm::vec3 uvRow0{1.0f, 0.0f, 0.0f}, uvRow1{0.0f, 1.0f, 0.0f};
   glm::vec3 emissive{0.0f};   // k_e, linear RGB

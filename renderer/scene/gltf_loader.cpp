@@ -337,8 +337,9 @@ void convertMaterials(const tinygltf::Model& model, Scene& scene, Warnings& warn
       warnings.push_back(at("materials", m) + ": alphaMode BLEND is drawn opaque (facet does not blend yet)");
     }
     material.baseColorTransform = textureTransformOf(pbr.baseColorTexture.extensions, at("materials", m) + ": baseColorTexture");
-    // A texture reference: its index when it names a texture with an image, else -1 with a warning.
-    const auto reference = [&](const char* key, int texture, int texCoord, const tinygltf::ExtensionMap& extensions, bool transformed) {
+    // A texture reference: its index when it names a texture with an image, else -1 with a warning;
+    // `set` gets the TEXCOORD_n it reads (0 or 1).
+    const auto reference = [&](const char* key, int texture, int texCoord, const tinygltf::ExtensionMap& extensions, bool transformed, int& set) {
       if (texture < 0) return -1;
       if (static_cast<std::size_t>(texture) >= scene.textures.size()) {
         warnings.push_back(at("materials", m) + ": " + key + " " + std::to_string(texture) + " does not exist (UNRESOLVED_REFERENCE); ignored");
@@ -348,20 +349,27 @@ void convertMaterials(const tinygltf::Model& model, Scene& scene, Warnings& warn
         warnings.push_back(at("materials", m) + ": " + key + " " + std::to_string(texture) + " has no image; ignored");
         return -1;
       }
-      if (texCoord != 0)
-        warnings.push_back(at("materials", m) + ": " + key + " uses TEXCOORD_" + std::to_string(texCoord) + "; TEXCOORD_0 is used instead");
+      set = texCoord == 1 ? 1 : 0;
+      if (texCoord < 0 || texCoord > 1)
+        warnings.push_back(at("materials", m) + ": " + key + " uses TEXCOORD_" + std::to_string(texCoord) +
+                           "; facet reads TEXCOORD_0 and TEXCOORD_1, and TEXCOORD_0 is used instead");
       if (!transformed && extensions.count("KHR_texture_transform"))
         warnings.push_back(at("materials", m) + ": " + key + "'s KHR_texture_transform is ignored (only the base colour texture's is applied)");
       return texture;
     };
-    material.baseColorTexture = reference("baseColorTexture", pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, pbr.baseColorTexture.extensions, true);
+    TexcoordSets& sets = material.texcoordSets;
+    const auto& base = pbr.baseColorTexture;
+    material.baseColorTexture = reference("baseColorTexture", base.index, base.texCoord, base.extensions, true, sets.baseColor);
     const auto& mr = pbr.metallicRoughnessTexture;
-    material.metallicRoughnessTexture = reference("metallicRoughnessTexture", mr.index, mr.texCoord, mr.extensions, false);
-    material.occlusionTexture = reference("occlusionTexture", src.occlusionTexture.index, src.occlusionTexture.texCoord, src.occlusionTexture.extensions, false);
-    material.occlusionStrength = clamp01(src.occlusionTexture.strength, 1.0f);
-    material.normalTexture = reference("normalTexture", src.normalTexture.index, src.normalTexture.texCoord, src.normalTexture.extensions, false);
-    material.normalScale = std::isfinite(src.normalTexture.scale) ? static_cast<float>(src.normalTexture.scale) : 1.0f;
-    material.emissiveTexture = reference("emissiveTexture", src.emissiveTexture.index, src.emissiveTexture.texCoord, src.emissiveTexture.extensions, false);
+    material.metallicRoughnessTexture = reference("metallicRoughnessTexture", mr.index, mr.texCoord, mr.extensions, false, sets.metallicRoughness);
+    const auto& occlusion = src.occlusionTexture;
+    material.occlusionTexture = reference("occlusionTexture", occlusion.index, occlusion.texCoord, occlusion.extensions, false, sets.occlusion);
+    material.occlusionStrength = clamp01(occlusion.strength, 1.0f);
+    const auto& normal = src.normalTexture;
+    material.normalTexture = reference("normalTexture", normal.index, normal.texCoord, normal.extensions, false, sets.normal);
+    material.normalScale = std::isfinite(normal.scale) ? static_cast<float>(normal.scale) : 1.0f;
+    const auto& emissive = src.emissiveTexture;
+    material.emissiveTexture = reference("emissiveTexture", emissive.index, emissive.texCoord, emissive.extensions, false, sets.emissive);
     scene.materials.push_back(material);
   }
 }
@@ -425,10 +433,20 @@ bool drawable(glm::vec3 v) {
   return std::fabs(v.x) <= kMaxWorldCoordinate && std::fabs(v.y) <= kMaxWorldCoordinate && std::fabs(v.z) <= kMaxWorldCoordinate;
 }
 
-// Whether a primitive's mesh gets tangents: its material has a normal texture and it has TEXCOORD_0.
+// The TEXCOORD_n attribute name of set 0 or 1.
+const char* texcoordAttribute(int set) { return set == 1 ? "TEXCOORD_1" : "TEXCOORD_0"; }
+
+// The set a primitive's normal texture reads (as loadMaterials resolves texCoord), or -1 when its material has none.
+int normalTextureSet(const tinygltf::Model& model, const tinygltf::Primitive& prim) {
+  if (prim.material < 0 || static_cast<std::size_t>(prim.material) >= model.materials.size()) return -1;
+  const tinygltf::NormalTextureInfo& normal = model.materials[static_cast<std::size_t>(prim.material)].normalTexture;
+  return normal.index < 0 ? -1 : normal.texCoord == 1 ? 1 : 0;
+}
+
+// Whether a primitive's mesh gets tangents: its material has a normal texture and it has that texture's set.
 bool needsTangents(const tinygltf::Model& model, const tinygltf::Primitive& prim) {
-  return prim.material >= 0 && static_cast<std::size_t>(prim.material) < model.materials.size() &&
-         model.materials[static_cast<std::size_t>(prim.material)].normalTexture.index >= 0 && prim.attributes.count("TEXCOORD_0");
+  const int set = normalTextureSet(model, prim);
+  return set >= 0 && prim.attributes.count(texcoordAttribute(set));
 }
 
 // What a primitive's mesh will hold, priced from its accessors' counts
@@ -439,7 +457,8 @@ void pricePrimitive(const tinygltf::Model& model, const tinygltf::Primitive& pri
   const std::uint64_t vertices = accessorCount(model, positionAccessor);
   const std::uint64_t indices = prim.indices >= 0 ? accessorCount(model, prim.indices) : vertices;
   std::uint64_t bytes = vertices * (sizeof(glm::vec3) + sizeof(glm::vec3)) + indices * sizeof(std::uint32_t);
-  if (prim.attributes.count("TEXCOORD_0")) bytes += vertices * sizeof(glm::vec2);
+  for (int set = 0; set < 2; ++set)
+    if (prim.attributes.count(texcoordAttribute(set))) bytes += vertices * sizeof(glm::vec2);
   if (prim.attributes.count("COLOR_0")) bytes += vertices * sizeof(glm::vec4);
   if (needsTangents(model, prim)) bytes += vertices * sizeof(glm::vec4);
   const bool strip = mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN;
@@ -551,16 +570,20 @@ bool convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& p
     }
     if (!normalsOk) computeVertexNormals(mesh);  // points and lines, which are unlit, get (0, 0, 1)
 
-    if (const auto uv = prim.attributes.find("TEXCOORD_0"); uv != prim.attributes.end()) {
+    for (int set = 0; set < 2; ++set) {
+      const char* key = texcoordAttribute(set);
+      const auto uv = prim.attributes.find(key);
+      if (uv == prim.attributes.end()) continue;
+      std::vector<glm::vec2>& texcoords = set == 1 ? mesh.texcoords1 : mesh.texcoords;
       try {
-        mesh.texcoords = readVec2(model, uv->second);
-        if (mesh.texcoords.size() != vertexCount) {
-          warnings.push_back(name + ": TEXCOORD_0 count differs from POSITION (MESH_PRIMITIVE_UNEQUAL_ACCESSOR_COUNT); ignored");
-          mesh.texcoords.clear();
+        texcoords = readVec2(model, uv->second);
+        if (texcoords.size() != vertexCount) {
+          warnings.push_back(name + ": " + key + " count differs from POSITION (MESH_PRIMITIVE_UNEQUAL_ACCESSOR_COUNT); ignored");
+          texcoords.clear();
         }
       } catch (const AccessorError& e) {
-        warnings.push_back(name + ": TEXCOORD_0 " + e.message + "; ignored");
-        mesh.texcoords.clear();
+        warnings.push_back(name + ": " + key + " " + e.message + "; ignored");
+        texcoords.clear();
       }
     }
 
@@ -586,7 +609,7 @@ bool convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& p
       }
     }
     // Tangents for a normal texture: the file's TANGENT (unit xyz, w ±1) where it is sound, else computed.
-    if (corners == 3 && needsTangents(model, prim) && !mesh.texcoords.empty()) {
+    if (corners == 3 && needsTangents(model, prim) && !mesh.texcoordSet(normalTextureSet(model, prim)).empty()) {
       if (const auto tangent = prim.attributes.find("TANGENT"); tangent != prim.attributes.end()) {
         try {
           mesh.tangents = readVec4(model, tangent->second);
@@ -603,7 +626,7 @@ bool convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& p
           mesh.tangents.clear();
         }
       }
-      if (mesh.tangents.empty()) computeVertexTangents(mesh);
+      if (mesh.tangents.empty()) computeVertexTangents(mesh, normalTextureSet(model, prim));
     }
   } catch (const AccessorError& e) {
     warnings.push_back(name + ": " + e.message + "; skipped");
@@ -616,6 +639,32 @@ bool convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& p
   }
   if (!prim.targets.empty()) warnings.push_back(name + ": morph targets are not supported; base shape drawn");
   return true;
+}
+
+// One warning per texture a mesh's material has and the mesh cannot read: it
+// lacks the texture coordinate set the reference names (PIPELINE.md,
+// section 8: the factor alone). Lines and points read no texture.
+void warnUnreadTextures(const Scene& scene, const std::vector<std::vector<int>>& meshTable, Warnings& warnings) {
+  for (std::size_t m = 0; m < meshTable.size(); ++m)
+    for (std::size_t p = 0; p < meshTable[m].size(); ++p) {
+      if (meshTable[m][p] < 0) continue;
+      const Mesh& mesh = scene.meshes[static_cast<std::size_t>(meshTable[m][p])];
+      if (mesh.indices.empty() || mesh.material < 0 || static_cast<std::size_t>(mesh.material) >= scene.materials.size()) continue;
+      const Material& material = scene.materials[static_cast<std::size_t>(mesh.material)];
+      const TexcoordSets& sets = material.texcoordSets;
+      const struct {
+        const char* key;
+        int texture, set;
+      } references[] = {{"baseColorTexture", material.baseColorTexture, sets.baseColor},
+                        {"metallicRoughnessTexture", material.metallicRoughnessTexture, sets.metallicRoughness},
+                        {"occlusionTexture", material.occlusionTexture, sets.occlusion},
+                        {"emissiveTexture", material.emissiveTexture, sets.emissive},
+                        {"normalTexture", material.normalTexture, sets.normal}};
+      for (const auto& r : references)
+        if (r.texture >= 0 && mesh.texcoordSet(r.set).empty())
+          warnings.push_back(at("meshes", m) + "." + at("primitives", p) + ": " + at("materials", static_cast<std::size_t>(mesh.material)) + "'s " +
+                             r.key + " reads " + texcoordAttribute(r.set) + ", which the primitive does not have; not read");
+    }
 }
 
 // scene mesh index per glTF mesh and primitive (-1: skipped)
@@ -973,6 +1022,7 @@ Scene loadGltfFromMemory(const std::string& bytes, const std::string& path, cons
     meshTable = convertMeshes(model, sceneBudget, scene, warnings);
     convertTextures(model, images.encoded, sceneBudget, scene, warnings);
     convertMaterials(model, scene, warnings);
+    warnUnreadTextures(scene, meshTable, warnings);
   } catch (const Error& e) {
     throw Error(path + ": " + e.what());
   }

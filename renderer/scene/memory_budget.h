@@ -40,10 +40,10 @@ class MemoryBudget {
 // What a frame works in for one instance, priced after the larger of the two
 // backends, the CPU rasterizer (the GL backend uploads each mesh once and
 // draws its instances from it): per vertex its packed window vertex (x, y,
-// z, 1/w and up to 21 varyings), clip coordinates, flags and world position
-// (129 bytes; cpu/frame_buffers.h checks it); per triangle its binned record
+// z, 1/w and up to 23 varyings), clip coordinates, flags and world position
+// (137 bytes; cpu/frame_buffers.h checks it); per triangle its binned record
 // and tile references.
-inline constexpr std::uint64_t kFrameBytesPerVertex = 136;
+inline constexpr std::uint64_t kFrameBytesPerVertex = 144;
 inline constexpr std::uint64_t kFrameBytesPerTriangle = 96;
 std::uint64_t instanceFrameBytes(std::uint64_t vertices, std::uint64_t triangles);
 

@@ -24,6 +24,7 @@ struct Mesh {
   std::vector<glm::vec3> positions;   // model space
   std::vector<glm::vec3> normals;     // model space, unit length, one per position
   std::vector<glm::vec2> texcoords;   // TEXCOORD_0, empty when the mesh has none
+  std::vector<glm::vec2> texcoords1;  // TEXCOORD_1, empty when the mesh has none
   std::vector<glm::vec4> colors;      // COLOR_0, linear RGBA, empty when the mesh has none
   // TANGENT: xyz the model-space unit tangent (along increasing s), w = ±1 the bitangent's side
   // (B = w·(N × T)); read or computed (scene/vertex_tangents.h) where a normal texture needs it, else empty.
@@ -36,6 +37,8 @@ struct Mesh {
   std::vector<std::uint32_t> points;  // one per point
   int material = -1;                  // index into Scene::materials, -1 = the default material
 
+  // The texture coordinate set a texture reference names (Material::TexcoordSets): TEXCOORD_0 or TEXCOORD_1.
+  const std::vector<glm::vec2>& texcoordSet(int set) const { return set == 1 ? texcoords1 : texcoords; }
   std::size_t triangleCount() const { return indices.size() / 3; }
   std::size_t segmentCount() const { return lines.size() / 2; }
 };
@@ -58,6 +61,12 @@ struct TextureTransform {
   bool identity() const { return offset == glm::vec2(0.0f) && rotation == 0.0f && scale == glm::vec2(1.0f); }
 };
 
+// The TEXCOORD_n set (0 or 1) each texture reference of a material reads
+// (glTF's `texCoord`; renderer/PIPELINE.md, section 8).
+struct TexcoordSets {
+  int baseColor = 0, metallicRoughness = 0, occlusion = 0, emissive = 0, normal = 0;
+};
+
 // glTF metallic-roughness material; the course coefficients k_a, k_d, k_s, n
 // are derived from it in pipeline/material_coefficients.
 struct Material {
@@ -71,6 +80,7 @@ struct Material {
   int emissiveTexture = -1;             // multiplies k_e, as colour (shading=pbr)
   int normalTexture = -1;               // tangent-space normals, as data (Phong and pbr)
   float normalScale = 1.0f;             // scales the normal texture's x and y
+  TexcoordSets texcoordSets;            // which set each of the textures above reads
   glm::vec3 emissive{0.0f};       // k_e, linear RGB
   float metallic = 1.0f;          // glTF default
   float roughness = 1.0f;         // glTF default

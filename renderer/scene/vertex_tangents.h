@@ -3,7 +3,8 @@
 
 namespace facet {
 
-// Tangents for a mesh with TEXCOORD_0 and no TANGENT (renderer/PIPELINE.md,
+// Tangents for a mesh with texture coordinate set `set` (TEXCOORD_0 or
+// TEXCOORD_1, the normal texture's) and no TANGENT (renderer/PIPELINE.md,
 // section 8, "Normal textures"): each triangle's ∂P/∂s and ∂P/∂t from its
 // edges and texture-coordinate differences (Lengyel), summed at its
 // vertices; at each vertex T is that sum made perpendicular to N and unit,
@@ -14,6 +15,9 @@ namespace facet {
 // Fills mesh.tangents, one per position. Not MikkTSpace (no Debian package
 // provides it): the two agree where a mesh's texture layout has no seams
 // between mirrored or split vertices.
-void computeVertexTangents(Mesh& mesh);
+void computeVertexTangents(Mesh& mesh, int set = 0);
+
+// The set a mesh's tangents follow: its material's normal texture's, else TEXCOORD_0.
+int tangentSetOf(const Scene& scene, const Mesh& mesh);
 
 }  // namespace facet

@@ -178,7 +178,7 @@ TEST_CASE("pbr: the maps scale roughness by G and metallic by B as data, occlusi
   m.emissiveMap.texture = texture({255, 128, 0, 255}, TexelEncoding::Srgb);
   Mesh mesh;
   mesh.texcoords = {{0.5f, 0.5f}};
-  const cpu::PbrSurface s = cpu::pbrSurfaceAt(scene, m, mesh, glm::vec3(1.0f), {0.5f, 0.5f}, glm::vec4(0.0f));
+  const cpu::PbrSurface s = cpu::pbrSurfaceAt(scene, m, mesh, glm::vec3(1.0f), {glm::vec2(0.5f), glm::vec2(0.5f)}, {glm::vec4(0.0f), glm::vec4(0.0f)});
   CHECK(s.roughness == doctest::Approx(0.8 * 128.0 / 255.0));
   CHECK(s.metallic == doctest::Approx(0.5));
   CHECK(s.occlusion == doctest::Approx(1.0 + 0.5 * (64.0 / 255.0 - 1.0)));
@@ -186,7 +186,7 @@ TEST_CASE("pbr: the maps scale roughness by G and metallic by B as data, occlusi
   CHECK(s.emissive.g == doctest::Approx(2.0 * srgbTables().decoded[128]));  // colour: decoded, not 128/255
   CHECK(s.emissive.b == 0.0f);
   // Without texture coordinates the maps are not read: the factors alone.
-  const cpu::PbrSurface bare = cpu::pbrSurfaceAt(scene, m, Mesh{}, glm::vec3(1.0f), {0.5f, 0.5f}, glm::vec4(0.0f));
+  const cpu::PbrSurface bare = cpu::pbrSurfaceAt(scene, m, Mesh{}, glm::vec3(1.0f), {glm::vec2(0.5f), glm::vec2(0.5f)}, {glm::vec4(0.0f), glm::vec4(0.0f)});
   CHECK(bare.roughness == 0.8f);
   CHECK(bare.occlusion == 1.0f);
 }

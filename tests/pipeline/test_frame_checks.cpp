@@ -54,7 +54,7 @@ TEST_CASE("a scene's bad mesh data is refused by name, by the shared check that 
   {
     Scene s = good;
     s.meshes[0].texcoords.assign(3, glm::vec2(0.0f));
-    CHECK_THROWS_WITH_AS(makeCpuRenderer(1)->render(s, frame), "mesh 0 'cube': 3 texture coordinates for 24 positions", Error);
+    CHECK_THROWS_WITH_AS(makeCpuRenderer(1)->render(s, frame), "mesh 0 'cube': 3 TEXCOORD_0 texture coordinates for 24 positions", Error);
   }
   {
     Scene s = good;

@@ -121,9 +121,8 @@ ShadowMaps shadowPass(const Scene& scene, const FrameInputs& frame) {
             const std::uint32_t i = mesh.indices[t + k];
             const glm::vec3 world = glm::vec3(transformPoint(instance.worldFromModel, mesh.positions[i]));
             v[k].clip = transformPoint(light.frustum.clipFromWorld[static_cast<std::size_t>(face)], world);
-            const glm::vec2 st = mesh.texcoords.empty() ? glm::vec2(0.0f) : mesh.texcoords[i];
             const glm::vec4 rgba = colored ? mesh.colors[i] : glm::vec4(1.0f);
-            v[k].varyings[static_cast<std::size_t>(mask.uv)] = st.x, v[k].varyings[static_cast<std::size_t>(mask.uv + 1)] = st.y;
+            putTexcoords(v[k].varyings.data(), mask.uv, mesh, i);
             for (int c = 0; c < 4; ++c) v[k].varyings[static_cast<std::size_t>(mask.color + c)] = rgba[c];
           }
           drawTriangle(v, material.masked ? mask.count : 0, false, 0, target, nullptr, material.masked ? keep : nullptr);
@@ -140,7 +139,7 @@ ShadowMaps shadowPass(const Scene& scene, const FrameInputs& frame) {
 // illumination of both sides; all: texture coordinates and vertex colour).
 void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, Target& target) {
   const VaryingLayout layout = varyingLayout(frame.shading);
-  const int count = layout.packed(frame.procedural), uv = layout.uv, color = layout.color, model = layout.model;
+  const int count = layout.packed(frame.procedural), color = layout.color, model = layout.model;
   std::uint32_t id = 0;
   for (const FrameInstance& instance : frame.instances) {
     const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
@@ -149,6 +148,8 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
     const Texture* normalMap = interpolatesNormals(frame.shading) ? normalMapOf(scene, material, mesh) : nullptr;
     const bool bumpable = interpolatesNormals(frame.shading) && frame.bump.map && !mesh.tangents.empty();
     const bool colored = !mesh.colors.empty();
+    // A texture coordinate set at a pixel, from its varyings.
+    const auto stOf = [&](const float* v, int set) { return glm::vec2(v[layout.texcoord(set)], v[layout.texcoord(set) + 1]); };
     // O_d = factor · COLOR_0 · texel, each factor only where the mesh has it; the texel is a
     // procedural texture's grey where the frame has one.
     const auto baseColor = [&](const float* v, const Interpolation& planes, int px, int py) {
@@ -157,7 +158,7 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
       if (frame.procedural != Procedural::None)
         O = O * proceduralGrey(frame.procedural, {v[model], v[model + 1], v[model + 2]}, frame.proceduralScale);
       else if (texture)
-        O = O * glm::vec3(sampleBaseColorTexture(*texture, material, {v[uv], v[uv + 1]}, planes.quadDerivatives(uv, px, py)));
+        O = O * glm::vec3(sampleBaseColorTexture(*texture, material, stOf(v, material.baseColorSet), planes.quadDerivatives(layout.texcoord(material.baseColorSet), px, py)));
       return O;
     };
     const FragmentTest keep = [&](const Interpolation& planes, int px, int py) {
@@ -173,8 +174,7 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
         world[k] = glm::vec3(transformPoint(instance.worldFromModel, mesh.positions[i]));
         const glm::vec3 N = normalize3(transformDirection(instance.normalMatrix, mesh.normals[i]));
         float* out = v[k].varyings.data();
-        const glm::vec2 st = mesh.texcoords.empty() ? glm::vec2(0.0f) : mesh.texcoords[i];
-        out[uv] = st.x, out[uv + 1] = st.y;
+        putTexcoords(out, layout.uv, mesh, i);
         const glm::vec4 rgba = colored ? mesh.colors[i] : glm::vec4(1.0f);
         for (int c = 0; c < 4; ++c) out[color + c] = rgba[c];
         if (count == layout.count)
@@ -209,13 +209,16 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
           glm::vec3 normal{f[3], f[4], f[5]};
           // The normal texture, then the bump map, bend the unit normal; the result is normalized as the interpolated one is.
           const glm::vec4 tangent{f[layout.tangent], f[layout.tangent + 1], f[layout.tangent + 2], f[layout.tangent + 3]};
-          if (normalMap) normal = normalMapped(*normalMap, material, normalize3(normal), tangent, {f[uv], f[uv + 1]}, planes.quadDerivatives(uv, px, py));
-          if (bumpable) normal = bumped(*frame.bump.map, frame.bump.scale, normalize3(normal), tangent, {f[uv], f[uv + 1]});
+          const int normalSet = material.normalMap.set;
+          if (normalMap)
+            normal = normalMapped(*normalMap, material, normalize3(normal), tangent, stOf(f, normalSet), planes.quadDerivatives(layout.texcoord(normalSet), px, py));
+          if (bumpable) normal = bumped(*frame.bump.map, frame.bump.scale, normalize3(normal), tangent, stOf(f, 0));
           const glm::vec3 unit = normalize3(normal);
           const glm::vec3 N = front ? unit : -unit;  // two-sided lighting
           if (frame.shading == ShadingMode::Pbr)
             return shadePhysicallyBased(frame, maps,
-                                        pbrSurfaceAt(scene, material, mesh, baseColor(f, planes, px, py), {f[uv], f[uv + 1]}, planes.quadDerivatives(uv, px, py)),
+                                        pbrSurfaceAt(scene, material, mesh, baseColor(f, planes, px, py), {stOf(f, 0), stOf(f, 1)},
+                                                     {planes.quadDerivatives(layout.texcoord(0), px, py), planes.quadDerivatives(layout.texcoord(1), px, py)}),
                                         P, N, viewVector<float>(frame, P));
           return shade(illuminate(frame, maps, laneMaterial(material), P, N, viewVector<float>(frame, P)), baseColor(f, planes, px, py));
         }
