@@ -961,8 +961,7 @@ def texcoord_sets():
     g = Gltf("Texture references reading TEXCOORD_0 and TEXCOORD_1 (glTF's texCoord). Left: a cube whose base "
              "colour brick texture repeats 3 times per face on TEXCOORD_0, while its occlusion texture (dark edges "
              "and a dark cross), its emissive texture (a green frame) and its normal texture (4 by 4 dimples) read "
-             "TEXCOORD_1, once per face; with the course's shading only the bricks and the dimples show, with "
-             "shading=pbr all four. Middle: a leaf cut by alphaMode MASK whose texture reads TEXCOORD_1, the "
+             "TEXCOORD_1, once per face; the course's shading shows all but the occlusion, shading=pbr all four. Middle: a leaf cut by alphaMode MASK whose texture reads TEXCOORD_1, the "
              "primitive's TEXCOORD_0 all zero (read by mistake, it would keep or cut the whole panel); its shadow "
              "on the wall is leaf-shaped. Right: a panel with only TEXCOORD_1, a checker read from it; below it, a "
              "panel whose texture asks for TEXCOORD_1, which it lacks: its factor alone (orange), with a warning.")
@@ -982,7 +981,7 @@ def texcoord_sets():
     g.read_at(box, 1, "occlusionTexture", "emissiveTexture", "normalTexture")
     block = cube(0.9)
     tiled = Mesh(block.positions, block.normals, block.indices, [(3 * u, 3 * v) for u, v in block.uvs])
-    g.add_node("cube", g.add_mesh("cube", g.primitive(tiled, box, uv1=block.uvs)), translation=(-1.3, 0.45, 0),
+    g.add_node("cube", g.add_mesh("cube", g.primitive(tiled, box, uv1=block.uvs)), translation=(-1.05, 0.45, 0),
                rotation=axis_angle((0, 1, 0), 35))
     leaf_texture_index = g.add_texture(g.add_image("leaf 64x64 RGBA", leaf_texture()),
                                        g.add_sampler(LINEAR, LINEAR_MIPMAP_LINEAR, CLAMP_TO_EDGE, CLAMP_TO_EDGE))
@@ -997,14 +996,14 @@ def texcoord_sets():
                       1, "baseColorTexture")
     small = quad(0.8, 0.8)
     g.add_node("TEXCOORD_1 only", g.add_mesh("TEXCOORD_1 only", g.primitive(small, only1, uv1=small.uvs, texcoord0=False)),
-               translation=(1.35, 1.35, 0))
+               translation=(1.15, 1.35, 0))
     missing = g.read_at(g.add_material("checker on TEXCOORD_1, which the panel lacks", (0.9, 0.45, 0.1, 1), 0.0, 0.6,
                                        texture=checker_texture), 1, "baseColorTexture")
-    g.add_node("no TEXCOORD_1", g.add_mesh("no TEXCOORD_1", g.primitive(small, missing)), translation=(1.35, 0.45, 0))
+    g.add_node("no TEXCOORD_1", g.add_mesh("no TEXCOORD_1", g.primitive(small, missing)), translation=(1.15, 0.45, 0))
     wall = g.add_material("wall", (0.75, 0.75, 0.8, 1), 0.0, 0.9)
     g.add_node("wall", g.add_mesh("wall", g.primitive(quad(6, 3), wall)), translation=(0, 1.2, -1.0))
     add_ground(g, 6, 4)
-    g.add_camera("camera", (0.2, 1.5, 3.6), (0.1, 0.8, 0))
+    g.add_camera("camera", (0.0, 1.7, 4.4), (0.0, 0.75, 0))
     g.add_light("key", "point", (-0.6, 2.6, 2.6), intensity=12)
     return g
 

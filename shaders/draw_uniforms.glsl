@@ -77,6 +77,24 @@ vec4 baseColorAt(Texcoords t, vec4 vertexColor, vec3 modelPoint) {
   return vec4(O, alpha);
 }
 
+// k_e·E: the emissive texture's RGB at its set of t, times k_e
+// (renderer/PIPELINE.md, section 5). Mirror: emissionAt in
+// renderer/cpu/texture_sampling.h. For draws with FACET_EMISSIVE_MAP.
+vec3 emissionAt(Texcoords t) {
+  precise vec3 e = material.emissive * sampleTexture(emissiveMap, mapsSrgb.z != 0, emissiveSampler, setOf(t, mapSets.z), derivativesOf(t, mapSets.z)).rgb;
+  return e;
+}
+
+// The material Gouraud and flat shading sum at a vertex or a triangle: k_e = 0
+// where an emissive texture adds k_e·E at the pixel instead.
+CourseMaterial summedMaterial() {
+  CourseMaterial m = material;
+#if FACET_EMISSIVE_MAP
+  m.emissive = vec3(0.0);
+#endif
+  return m;
+}
+
 // alphaMode MASK: a fragment is kept when its alpha is at least the cutoff
 // (NaN discards). Mirror: renderer/cpu/alpha_mask.h. FACET_MASKED: the
 // draw's material is masked; without it nothing is discarded, and the

@@ -21,9 +21,9 @@
 
 layout(std430, binding = 0) readonly buffer MeshIndices { uint indices[]; };      // three per triangle
 layout(std430, binding = 1) readonly buffer MeshPositions { float positions[]; }; // model space, x y z per vertex
-layout(std430, binding = 2) readonly buffer MeshTexcoords { float texcoords[]; }; // s t per vertex (read only when textured)
+layout(std430, binding = 2) readonly buffer MeshTexcoords { float texcoords[]; }; // TEXCOORD_0 s t per vertex (read only when textured)
 layout(std430, binding = 3) readonly buffer MeshColors { float colors[]; };       // COLOR_0 r g b a per vertex (read only when coloured)
-layout(std430, binding = 4) readonly buffer MeshTexcoords1 { float texcoords1[]; }; // TEXCOORD_1 s t per vertex (read only when textured from it)
+layout(std430, binding = 4) readonly buffer MeshTexcoords1 { float texcoords1[]; }; // TEXCOORD_1 s t per vertex (read only when textured)
 
 flat out vec3 frontDiffuse;  // Illumination with N
 flat out vec3 frontSpecular;
@@ -52,15 +52,16 @@ void main() {
   vec3 N = normalize3(cross3(p1 - p0, p2 - p0));
   precise vec3 centre = (p0 + p1 + p2) / 3.0;  // the centroid (`centroid` is a GLSL keyword)
   vec3 V = viewVector(centre);
-  Illumination front = illuminate(material, centre, N, V);
-  Illumination back = illuminate(material, centre, -N, V);
+  CourseMaterial summed = summedMaterial();
+  Illumination front = illuminate(summed, centre, N, V);
+  Illumination back = illuminate(summed, centre, -N, V);
   frontDiffuse = front.diffuse;
   frontSpecular = front.specular;
   backDiffuse = back.diffuse;
   backSpecular = back.specular;
-#if FACET_TEXTURED
-  // Only the base colour texture's set is read: the other stays (0, 0).
-  st = baseColorSet == 1 ? vec4(0.0, 0.0, texcoords1[2u * v], texcoords1[2u * v + 1u]) : vec4(texcoords[2u * v], texcoords[2u * v + 1u], 0.0, 0.0);
+#if FACET_TEXTURED || FACET_EMISSIVE_MAP
+  // Both sets; a set the mesh lacks reads whatever is bound in its place, and no map of the draw reads it.
+  st = vec4(texcoords[2u * v], texcoords[2u * v + 1u], texcoords1[2u * v], texcoords1[2u * v + 1u]);
 #else
   st = vec4(0.0);
 #endif

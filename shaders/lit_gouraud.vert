@@ -31,8 +31,9 @@ void main() {
   vec3 P = transformPoint(worldFromModel, position).xyz;
   vec3 N = normalize3(transformDirection(normalMatrix, normal));
   vec3 V = viewVector(P);
-  Illumination front = illuminate(material, P, N, V);
-  Illumination back = illuminate(material, P, -N, V);
+  CourseMaterial summed = summedMaterial();
+  Illumination front = illuminate(summed, P, N, V);
+  Illumination back = illuminate(summed, P, -N, V);
   frontDiffuse = front.diffuse;
   frontSpecular = front.specular;
   backDiffuse = back.diffuse;

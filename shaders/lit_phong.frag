@@ -41,6 +41,10 @@ void main() {
 #if FACET_PBR
   color = encodeSrgb(shadePhysicallyBased(pbrSurfaceAt(O.rgb, t), P, N, viewVector(P)));
 #else
-  color = encodeSrgb(shade(illuminate(material, P, N, viewVector(P)), O.rgb));
+  CourseMaterial lit = material;
+#if FACET_EMISSIVE_MAP
+  lit.emissive = emissionAt(t);  // k_e·E in k_e's place
+#endif
+  color = encodeSrgb(shade(illuminate(lit, P, N, viewVector(P)), O.rgb));
 #endif
 }

@@ -38,8 +38,7 @@ PbrSurface pbrSurfaceAt(vec3 baseColor, Texcoords t) {
   s.occlusion = ao;
 #endif
 #if FACET_EMISSIVE_MAP
-  precise vec3 e = s.emissive * sampleTexture(emissiveMap, mapsSrgb.z != 0, emissiveSampler, setOf(t, mapSets.z), derivativesOf(t, mapSets.z)).rgb;
-  s.emissive = e;
+  s.emissive = emissionAt(t);
 #endif
   return s;
 }

@@ -44,7 +44,9 @@ struct LaneMaterial {
   Vec3Of<F> emissive;  // k_e
   F ka, kd, ks, shininess, metallic;
 };
-inline LaneMaterial<float> laneMaterial(const CourseMaterial& m) { return {m.emissive, m.ka, m.kd, m.ks, m.shininess, m.metallic}; }
+// With `emissive` in k_e's place: 0 or k_e·E for a material with an emissive texture (texture_sampling.h, emissionAt).
+inline LaneMaterial<float> laneMaterial(const CourseMaterial& m, glm::vec3 emissive) { return {emissive, m.ka, m.kd, m.ks, m.shininess, m.metallic}; }
+inline LaneMaterial<float> laneMaterial(const CourseMaterial& m) { return laneMaterial(m, m.emissive); }
 
 // f_att = min(1, 1/(c1 + c2·d + c3·d²)), as ((c1 + c2·d) + (c3·d)·d)
 template <class F>

@@ -40,6 +40,12 @@ void put(float* v, int at, glm::vec4 value) {
 
 constexpr std::uint32_t kNoTriangle = std::numeric_limits<std::uint32_t>::max();
 
+// The material Gouraud and flat shading sum at a vertex or a triangle: k_e = 0
+// where an emissive texture adds k_e·E at the pixel instead (PIPELINE.md, section 5).
+LaneMaterial<float> vertexMaterial(const CourseMaterial& material, const Mesh& mesh) {
+  return laneMaterial(material, readsMap(material.emissiveMap, mesh) ? glm::vec3(0.0f) : material.emissive);
+}
+
 // The fragment stage of one shading mode: no branch on the mode per pixel.
 template <ShadingMode kMode>
 void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, WorkerBins::TileScratch& scratch, int tx0, int ty0, int tx1,
@@ -51,6 +57,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
   const Mesh* drawnMesh = nullptr;
   const Texture* texture = nullptr;
   const Texture* normalMap = nullptr;  // Phong and pbr
+  const Texture* emissiveMap = nullptr;  // the course's modes (pbr reads it in pbrSurfaceAt)
   bool bumpable = false;               // Phong and pbr: the frame has a bump map and the mesh tangents
   bool colored = false;
   int used = 0;  // varyings set up for the triangle: a prefix of the layout
@@ -75,9 +82,10 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         drawnMesh = &mesh;
         texture = baseColorTextureOf(scene, frame, *material, mesh);
         normalMap = layout.tangent >= 0 ? normalMapOf(scene, *material, mesh) : nullptr;
+        emissiveMap = kMode != ShadingMode::Pbr ? emissiveMapOf(scene, *material, mesh) : nullptr;
         bumpable = layout.tangent >= 0 && frame.bump.map && !mesh.tangents.empty();
         colored = !mesh.colors.empty();
-        used = procedural ? layout.count : colored ? layout.model : (kMode == ShadingMode::Flat && !texture ? 0 : layout.color);
+        used = procedural ? layout.count : colored ? layout.model : (kMode == ShadingMode::Flat && !texture && !emissiveMap ? 0 : layout.color);
         back = !t.snapped.frontFacing;
         if (used) in->setUpVaryings(used);
         if constexpr (kMode == ShadingMode::Flat) flat = &bins.flat[2 * index];
@@ -86,7 +94,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
       if constexpr (kMode == ShadingMode::Phong) {
         // Four pixels of one untextured, uncoloured triangle in a row: interpolation on four lanes, straight into the batch.
         const std::uint32_t* row = &scratch.id[(py - ty0) * kTileSize + (px - tx0)];
-        if (!texture && !colored && !procedural && !normalMap && !bumpable && px + 3 <= tx1 && row[1] == id && row[2] == id && row[3] == id) {
+        if (!texture && !colored && !procedural && !normalMap && !bumpable && !emissiveMap && px + 3 <= tx1 && row[1] == id && row[2] == id && row[3] == id) {
           const __m128 w = in->inverseW4(px, py);
           const __m128 P[3] = {in->varying4(0, px, py, w), in->varying4(1, px, py, w), in->varying4(2, px, py, w)};
           const __m128 N[3] = {in->varying4(3, px, py, w), in->varying4(4, px, py, w), in->varying4(5, px, py, w)};
@@ -102,6 +110,8 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
       // A texture coordinate set at the pixel, and its quad derivatives (ds/dx, dt/dx, ds/dy, dt/dy).
       const auto stAt = [&](int set) { return glm::vec2(v[layout.texcoord(set)], v[layout.texcoord(set) + 1]); };
       const auto derivativesAt = [&](int set) { return in->quadDerivatives(layout.texcoord(set), px, py); };
+      // k_e·E with an emissive texture (the course's modes, PIPELINE.md section 5).
+      const auto emission = [&] { return emissionAt(*emissiveMap, *material, stAt(material->emissiveMap.set), derivativesAt(material->emissiveMap.set)); };
       // O_d = factor · COLOR_0 · texel (PIPELINE.md, section 8)
       glm::vec3 baseColor = material->baseColor;
       if (colored) baseColor *= glm::vec3(v[layout.color], v[layout.color + 1], v[layout.color + 2]);
@@ -129,13 +139,17 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
       } else if constexpr (kMode == ShadingMode::Phong) {
         // N is normalized (and negated on a back face, two-sided lighting) in the batch
         batch.add(static_cast<std::size_t>(py) * static_cast<std::size_t>(image.width()) + static_cast<std::size_t>(px), {v[0], v[1], v[2]},
-                  interpolatedNormal, back, baseColor, *material);
+                  interpolatedNormal, back, baseColor, *material, emissiveMap ? emission() : material->emissive);
         continue;  // written when the batch is shaded
       } else if constexpr (kMode == ShadingMode::Gouraud) {
         const int side = back ? 6 : 0;
-        color = shade(Illumination{{v[side], v[side + 1], v[side + 2]}, {v[side + 3], v[side + 4], v[side + 5]}}, baseColor);
+        Illumination I{{v[side], v[side + 1], v[side + 2]}, {v[side + 3], v[side + 4], v[side + 5]}};
+        if (emissiveMap) I.specular = emission() + I.specular;  // summed with k_e = 0 at the vertices
+        color = shade(I, baseColor);
       } else {
-        color = shade(back ? flat[1] : flat[0], baseColor);
+        Illumination I = back ? flat[1] : flat[0];
+        if (emissiveMap) I.specular = emission() + I.specular;  // summed with k_e = 0 for the triangle
+        color = shade(I, baseColor);
       }
       image.at(px, py) = encodePixel(color);
     }
@@ -180,11 +194,12 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
       } else if (frame.shading == ShadingMode::Gouraud) {
         const glm::vec3 N = normalize3(transformDirection(instance.normalMatrix, mesh.normals[local]));
         const glm::vec3 V = viewVector<float>(frame, P);
-        const Illumination front = illuminate(frame, maps, laneMaterial(material), P, N, V);
+        const LaneMaterial<float> lit = vertexMaterial(material, mesh);
+        const Illumination front = illuminate(frame, maps, lit, P, N, V);
         put(varyings, 0, front.diffuse);
         put(varyings, 3, front.specular);
         Illumination back;  // zero when one-sided, as ClipVertex's varyings were
-        if (!instance.cullBackFaces) back = illuminate(frame, maps, laneMaterial(material), P, -N, V);
+        if (!instance.cullBackFaces) back = illuminate(frame, maps, lit, P, -N, V);
         put(varyings, 6, back.diffuse);
         put(varyings, 9, back.specular);
       }
@@ -198,12 +213,13 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
   const auto flatLighting = [&](std::uint32_t instance, const std::uint32_t (&vertex)[3], Illumination (&out)[2]) {
     const FrameInstance& drawn = frame.instances[instance];
     const CourseMaterial& material = frame.materials[static_cast<std::size_t>(drawn.material)];
+    const LaneMaterial<float> lit = vertexMaterial(material, scene.meshes[static_cast<std::size_t>(drawn.mesh)]);
     const glm::vec3 p0 = v.world[vertex[0]], p1 = v.world[vertex[1]], p2 = v.world[vertex[2]];
     const glm::vec3 N = normalize3(cross3(p1 - p0, p2 - p0));
     const glm::vec3 centroid = (p0 + p1 + p2) / 3.0f;
     const glm::vec3 V = viewVector<float>(frame, centroid);
-    out[0] = illuminate(frame, maps, laneMaterial(material), centroid, N, V);
-    out[1] = !drawn.cullBackFaces ? illuminate(frame, maps, laneMaterial(material), centroid, -N, V) : Illumination{};
+    out[0] = illuminate(frame, maps, lit, centroid, N, V);
+    out[1] = !drawn.cullBackFaces ? illuminate(frame, maps, lit, centroid, -N, V) : Illumination{};
   };
   const FlatIllumination flat = flatLighting;  // refers to the lambda above, which outlives the pass
   const TileGrid grid = TileGrid::over(frame.width, frame.height);

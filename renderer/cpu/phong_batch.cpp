@@ -18,13 +18,12 @@ Vec3x4 load(const float (&v)[3][PhongBatch::kLanes]) {
 void PhongBatch::flush() {
   if (count_ == 0) return;
   for (int k = count_; k < kLanes; ++k) {  // unused lanes repeat lane 0; their results are dropped
-    for (int c = 0; c < 3; ++c) P_[c][k] = P_[c][0], N_[c][k] = N_[c][0], O_[c][k] = O_[c][0];
+    for (int c = 0; c < 3; ++c) P_[c][k] = P_[c][0], N_[c][k] = N_[c][0], O_[c][k] = O_[c][0], E_[c][k] = E_[c][0];
     back_[k] = back_[0];
     material_[k] = material_[0];
   }
   for (int k = 0; k < kLanes; ++k) {
     const CourseMaterial& m = *material_[k];
-    for (int c = 0; c < 3; ++c) E_[c][k] = m.emissive[c];
     ka_[k] = m.ka, kd_[k] = m.kd, ks_[k] = m.ks, n_[k] = m.shininess, m_[k] = m.metallic;
   }
   const Vec3x4 P = load(P_);
@@ -53,7 +52,8 @@ void PhongBatch::flush() {
     const glm::vec3 unit = normalize3(glm::vec3{N_[0][k], N_[1][k], N_[2][k]});
     const glm::vec3 N = back_[k] != 0.0f ? -unit : unit;
     const glm::vec3 O{O_[0][k], O_[1][k], O_[2][k]};
-    pixels_[offset_[k]] = encodePixel(shade(illuminate(frame_, maps_, laneMaterial(*material_[k]), P, N, viewVector<float>(frame_, P)), O));
+    const glm::vec3 E{E_[0][k], E_[1][k], E_[2][k]};
+    pixels_[offset_[k]] = encodePixel(shade(illuminate(frame_, maps_, laneMaterial(*material_[k], E), P, N, viewVector<float>(frame_, P)), O));
   }
   count_ = 0;
 }

@@ -27,14 +27,17 @@ class PhongBatch {
 
   // Queues the pixel at pixels[offset]: world position P, the interpolated
   // normal (normalized here, and negated for a back face, as the scalar path
-  // does), O_d and the material; shades when four are queued.
-  void add(std::size_t offset, glm::vec3 P, glm::vec3 interpolatedNormal, bool back, glm::vec3 baseColor, const CourseMaterial& material) {
+  // does), O_d, the material and the pixel's k_e (the material's, or k_e·E
+  // with an emissive texture); shades when four are queued.
+  void add(std::size_t offset, glm::vec3 P, glm::vec3 interpolatedNormal, bool back, glm::vec3 baseColor, const CourseMaterial& material,
+           glm::vec3 emissive) {
     const int k = count_++;
     offset_[k] = offset;
     for (int c = 0; c < 3; ++c) {
       P_[c][k] = P[c];
       N_[c][k] = interpolatedNormal[c];
       O_[c][k] = baseColor[c];
+      E_[c][k] = emissive[c];
     }
     back_[k] = back ? 1.0f : 0.0f;  // a back face: N is negated
     material_[k] = &material;
@@ -48,7 +51,8 @@ class PhongBatch {
     if (count_ != 0) {
       alignas(16) float p[3][4], n[3][4];
       for (int c = 0; c < 3; ++c) _mm_store_ps(p[c], P[c]), _mm_store_ps(n[c], interpolatedNormal[c]);
-      for (int k = 0; k < 4; ++k) add(offset + static_cast<std::size_t>(k), {p[0][k], p[1][k], p[2][k]}, {n[0][k], n[1][k], n[2][k]}, back, baseColor, material);
+      for (int k = 0; k < 4; ++k)
+        add(offset + static_cast<std::size_t>(k), {p[0][k], p[1][k], p[2][k]}, {n[0][k], n[1][k], n[2][k]}, back, baseColor, material, material.emissive);
       return;
     }
     for (int k = 0; k < 4; ++k) offset_[k] = offset + static_cast<std::size_t>(k), material_[k] = &material, back_[k] = back ? 1.0f : 0.0f;
@@ -56,6 +60,7 @@ class PhongBatch {
       _mm_store_ps(P_[c], P[c]);
       _mm_store_ps(N_[c], interpolatedNormal[c]);
       _mm_store_ps(O_[c], _mm_set1_ps(baseColor[c]));
+      _mm_store_ps(E_[c], _mm_set1_ps(material.emissive[c]));
     }
     count_ = 4;
     flush();
@@ -72,8 +77,8 @@ class PhongBatch {
   int count_ = 0;
   std::size_t offset_[kLanes];
   const CourseMaterial* material_[kLanes];
-  alignas(16) float P_[3][kLanes], N_[3][kLanes], O_[3][kLanes], back_[kLanes];
-  alignas(16) float E_[3][kLanes], ka_[kLanes], kd_[kLanes], ks_[kLanes], n_[kLanes], m_[kLanes];  // filled by flush
+  alignas(16) float P_[3][kLanes], N_[3][kLanes], O_[3][kLanes], E_[3][kLanes], back_[kLanes];
+  alignas(16) float ka_[kLanes], kd_[kLanes], ks_[kLanes], n_[kLanes], m_[kLanes];  // filled by flush
 };
 
 }  // namespace facet::cpu

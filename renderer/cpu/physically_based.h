@@ -30,9 +30,6 @@ struct PbrSurface {
   glm::vec3 emissive{0.0f};  // k_e
 };
 
-// Whether a draw of `mesh` reads `map`: the material has it and the mesh has the set it reads.
-inline bool readsMap(const MaterialMap& map, const Mesh& mesh) { return map.texture >= 0 && !mesh.texcoordSet(map.set).empty(); }
-
 // The pixel's surface: O_d as section 8 makes it, the material's factors
 // times its maps, each read at its set's st[set] with derivatives d[set]
 // (no texture transform) where the mesh has that set:
@@ -50,7 +47,10 @@ inline PbrSurface pbrSurfaceAt(const Scene& scene, const CourseMaterial& m, cons
     s.metallic = s.metallic * t.b;
   }
   if (readsMap(m.occlusionMap, mesh)) s.occlusion = 1.0f + m.occlusionStrength * (sample(m.occlusionMap).r - 1.0f);
-  if (readsMap(m.emissiveMap, mesh)) s.emissive = s.emissive * glm::vec3(sample(m.emissiveMap));
+  if (const Texture* map = emissiveMapOf(scene, m, mesh)) {
+    const int set = m.emissiveMap.set == 1 ? 1 : 0;
+    s.emissive = emissionAt(*map, m, st[set], d[set]);
+  }
   return s;
 }
 

@@ -59,6 +59,19 @@ float footprintSquared(glm::vec4 derivatives, int width, int height);
 // (Interpolation::quadDerivatives): linear RGB and alpha.
 glm::vec4 sampleTexture(const Texture& texture, const Sampler& sampler, glm::vec2 st, glm::vec4 derivatives);
 
+// Whether a draw of `mesh` reads `map`: the material has it and the mesh has the set it reads.
+inline bool readsMap(const MaterialMap& map, const Mesh& mesh) { return map.texture >= 0 && !mesh.texcoordSet(map.set).empty(); }
+
+// The emissive texture a draw of `mesh` with `material` reads, or null (PIPELINE.md, section 5).
+inline const Texture* emissiveMapOf(const Scene& scene, const CourseMaterial& material, const Mesh& mesh) {
+  return readsMap(material.emissiveMap, mesh) ? &scene.textures[static_cast<std::size_t>(material.emissiveMap.texture)] : nullptr;
+}
+
+// k_e·E: the emissive texture's RGB at st (its set's) with derivatives d, times k_e. Every shading mode's.
+inline glm::vec3 emissionAt(const Texture& map, const CourseMaterial& m, glm::vec2 st, glm::vec4 d) {
+  return m.emissive * glm::vec3(sampleTexture(map, m.emissiveMap.sampler, st, d));
+}
+
 // A material's base colour texture at the fragment's st (of its set) and its derivatives: transformed, then sampled.
 inline glm::vec4 sampleBaseColorTexture(const Texture& texture, const CourseMaterial& m, glm::vec2 st, glm::vec4 derivatives) {
   const TransformedTexcoords t = transformTexcoords(m, st, derivatives);

@@ -176,7 +176,7 @@ DrawVariant GlFrameRenderer::drawVariant(const FrameInputs& frame, const FrameIn
   const MeshBuffers& mesh = scene_.mesh(instance.mesh);
   const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
   // A procedural texture takes the base colour texture's place (renderer/cpu/texture_sampling.h, baseColorTextureOf);
-  // shading=pbr alone reads the other maps (renderer/cpu/physically_based.h, pbrSurfaceAt).
+  // shading=pbr alone reads the metallic-roughness and occlusion maps (renderer/cpu/physically_based.h, pbrSurfaceAt).
   // Each map only where the mesh has the texture coordinate set it reads.
   const auto reads = [&](const MaterialMap& map) { return map.texture >= 0 && mesh.hasSet(map.set); };
   const bool pbr = frame.shading == ShadingMode::Pbr;
@@ -185,7 +185,7 @@ DrawVariant GlFrameRenderer::drawVariant(const FrameInputs& frame, const FrameIn
           material.masked,
           pbr && reads(material.metallicRoughnessMap),
           pbr && reads(material.occlusionMap),
-          pbr && reads(material.emissiveMap),
+          reads(material.emissiveMap),  // every mode: k_e·E (renderer/cpu/texture_sampling.h, emissionAt)
           interpolatesNormals(frame.shading) && reads(material.normalMap) && mesh.tangents,
           frame.bump.map != nullptr && mesh.tangents};
 }
@@ -389,9 +389,10 @@ void GlFrameRenderer::drawInstance(const LitProgram& lit, const FrameInputs& fra
   if (flat) {
     gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshIndicesBinding, mesh.indices.id());
     gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshPositionsBinding, mesh.positions.id());
-    // Read only when textured; something valid is bound either way.
-    gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshTexcoordsBinding, textured && mesh.texcoords ? mesh.texcoords.id() : mesh.positions.id());
-    gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshTexcoords1Binding, textured && mesh.texcoords1 ? mesh.texcoords1.id() : mesh.positions.id());
+    // Read only when textured (base colour or emissive); something valid is bound either way.
+    const bool mapped = textured || variant.emissiveMap;
+    gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshTexcoordsBinding, mapped && mesh.texcoords ? mesh.texcoords.id() : mesh.positions.id());
+    gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshTexcoords1Binding, mapped && mesh.texcoords1 ? mesh.texcoords1.id() : mesh.positions.id());
     gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshColorsBinding, variant.colored ? mesh.colors.id() : mesh.positions.id());
     gl_.glBindVertexArray(emptyVertexArray_.id());
     gl_.glDrawArrays(GL_TRIANGLES, 0, mesh.indexCount);

@@ -18,7 +18,7 @@ struct DrawVariant {
   bool textured = false;  // a base colour texture, and the mesh has its texture coordinate set
   bool colored = false;   // COLOR_0
   bool masked = false;    // alphaMode MASK: fragments below the cutoff are discarded
-  // shading=pbr's maps, each where the mesh has its set: metallic-roughness, occlusion, emissive.
+  // Maps, each where the mesh has its set: shading=pbr's metallic-roughness and occlusion; every mode's emissive.
   bool metallicRoughnessMap = false, occlusionMap = false, emissiveMap = false;
   bool normalMap = false;  // a normal texture and tangents (Phong and pbr)
   bool bumped = false;     // the frame's bump map and the mesh's tangents (Phong and pbr)

@@ -148,6 +148,9 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
     const Texture* normalMap = interpolatesNormals(frame.shading) ? normalMapOf(scene, material, mesh) : nullptr;
     const bool bumpable = interpolatesNormals(frame.shading) && frame.bump.map && !mesh.tangents.empty();
     const bool colored = !mesh.colors.empty();
+    // An emissive texture: k_e·E at the pixel in the course's modes; Gouraud and flat sum with k_e = 0 (PIPELINE.md, section 5).
+    const Texture* emissiveMap = frame.shading != ShadingMode::Pbr ? emissiveMapOf(scene, material, mesh) : nullptr;
+    const LaneMaterial<float> summed = laneMaterial(material, emissiveMap ? glm::vec3(0.0f) : material.emissive);
     // A texture coordinate set at a pixel, from its varyings.
     const auto stOf = [&](const float* v, int set) { return glm::vec2(v[layout.texcoord(set)], v[layout.texcoord(set) + 1]); };
     // O_d = factor · COLOR_0 · texel, each factor only where the mesh has it; the texel is a
@@ -187,8 +190,8 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
           out[layout.tangent + 3] = tangent.w;
         } else if (frame.shading == ShadingMode::Gouraud) {  // the illumination equation at the vertex, both sides
           const glm::vec3 V = viewVector<float>(frame, world[k]);
-          const Illumination front = illuminate(frame, maps, laneMaterial(material), world[k], N, V);
-          const Illumination back = instance.cullBackFaces ? Illumination{} : illuminate(frame, maps, laneMaterial(material), world[k], -N, V);
+          const Illumination front = illuminate(frame, maps, summed, world[k], N, V);
+          const Illumination back = instance.cullBackFaces ? Illumination{} : illuminate(frame, maps, summed, world[k], -N, V);
           for (int c = 0; c < 3; ++c)
             out[c] = front.diffuse[c], out[3 + c] = front.specular[c], out[6 + c] = back.diffuse[c], out[9 + c] = back.specular[c];
         }
@@ -199,11 +202,15 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
         const glm::vec3 N = normalize3(cross3(world[1] - world[0], world[2] - world[0]));
         const glm::vec3 centroid = (world[0] + world[1] + world[2]) / 3.0f;
         const glm::vec3 V = viewVector<float>(frame, centroid);
-        flat[0] = illuminate(frame, maps, laneMaterial(material), centroid, N, V);
-        if (!instance.cullBackFaces) flat[1] = illuminate(frame, maps, laneMaterial(material), centroid, -N, V);
+        flat[0] = illuminate(frame, maps, summed, centroid, N, V);
+        if (!instance.cullBackFaces) flat[1] = illuminate(frame, maps, summed, centroid, -N, V);
       }
       // Fragment stage.
       const FragmentShader fragment = [&](const float* f, bool front, const Interpolation& planes, int px, int py) -> glm::vec3 {
+        const auto emission = [&] {
+          const int set = material.emissiveMap.set;
+          return emissionAt(*emissiveMap, material, stOf(f, set), planes.quadDerivatives(layout.texcoord(set), px, py));
+        };
         if (interpolatesNormals(frame.shading)) {
           const glm::vec3 P{f[0], f[1], f[2]};
           glm::vec3 normal{f[3], f[4], f[5]};
@@ -220,13 +227,18 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
                                         pbrSurfaceAt(scene, material, mesh, baseColor(f, planes, px, py), {stOf(f, 0), stOf(f, 1)},
                                                      {planes.quadDerivatives(layout.texcoord(0), px, py), planes.quadDerivatives(layout.texcoord(1), px, py)}),
                                         P, N, viewVector<float>(frame, P));
-          return shade(illuminate(frame, maps, laneMaterial(material), P, N, viewVector<float>(frame, P)), baseColor(f, planes, px, py));
+          const LaneMaterial<float> lit = laneMaterial(material, emissiveMap ? emission() : material.emissive);
+          return shade(illuminate(frame, maps, lit, P, N, viewVector<float>(frame, P)), baseColor(f, planes, px, py));
         }
         if (frame.shading == ShadingMode::Gouraud) {
           const int side = front ? 0 : 6;
-          return shade(Illumination{{f[side], f[side + 1], f[side + 2]}, {f[side + 3], f[side + 4], f[side + 5]}}, baseColor(f, planes, px, py));
+          Illumination I{{f[side], f[side + 1], f[side + 2]}, {f[side + 3], f[side + 4], f[side + 5]}};
+          if (emissiveMap) I.specular = emission() + I.specular;
+          return shade(I, baseColor(f, planes, px, py));
         }
-        return shade(front ? flat[0] : flat[1], baseColor(f, planes, px, py));
+        Illumination I = front ? flat[0] : flat[1];
+        if (emissiveMap) I.specular = emission() + I.specular;
+        return shade(I, baseColor(f, planes, px, py));
       };
       drawTriangle(v, count, instance.cullBackFaces, ++id, target, fragment, material.masked ? keep : nullptr);
     }
