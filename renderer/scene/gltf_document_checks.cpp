@@ -336,10 +336,110 @@ void checkLights(const json& document) {
   }
 }
 
+// A JSON value's kind for a message: "\"hello\"" is a string, and so on.
+std::string valueOf(const json& value) { return show(value.dump()); }
+
+// Every "extensions" member below `value` (not inside "extras", which is the
+// application's) is an object of objects, as glTF 2.0's extension.schema.json
+// says: an extension read as something else would be read as absent.
+void checkExtensionObjects(const json& value, const std::string& path, int depth) {
+  if (depth > 8) return;  // glTF nests extensions at most a few levels down
+  if (value.is_array()) {
+    for (std::size_t i = 0; i < value.size(); ++i)
+      if (value[i].is_object() || value[i].is_array()) checkExtensionObjects(value[i], path + "[" + std::to_string(i) + "]", depth + 1);
+    return;
+  }
+  if (!value.is_object()) return;
+  for (const auto& [key, member] : value.items()) {
+    if (key == "extras") continue;
+    const std::string at = path.empty() ? key : path + "." + key;
+    if (key == "extensions") {
+      if (!member.is_object()) throw Error(at + " " + valueOf(member) + " is not a JSON object");
+      for (const auto& [name, extension] : member.items())
+        if (!extension.is_object()) throw Error(at + "." + show(name) + " " + valueOf(extension) + " is not a JSON object");
+    }
+    checkExtensionObjects(member, at, depth + 1);
+  }
+}
+
+// glTF 2.0's JSON schema for what facet reads: the top-level arrays are arrays
+// of objects with string names, "scene" names a scene that exists, a mesh has
+// an array of primitives with an attributes object, and a material's
+// pbrMetallicRoughness and texture references are objects and its factors
+// numbers. A value of the wrong type is a broken file (assimp's wrongTypes
+// models), refused by name, rather than read as if it were absent.
+void checkSchemaTypes(const json& document) {
+  static constexpr const char* kArrays[] = {"accessors", "animations", "buffers", "bufferViews", "cameras", "images", "materials",
+                                            "meshes",    "nodes",      "samplers", "scenes",      "skins",   "textures"};
+  for (const char* key : kArrays) {
+    const auto it = document.find(key);
+    if (it == document.end()) continue;
+    if (!it->is_array()) throw Error(std::string(key) + " " + valueOf(*it) + " is not an array");
+    for (std::size_t i = 0; i < it->size(); ++i) {
+      const json& object = (*it)[i];
+      if (!object.is_object()) throw Error(at(key, i) + " " + valueOf(object) + " is not a JSON object");
+      if (const auto name = object.find("name"); name != object.end() && !name->is_string())
+        throw Error(at(key, i) + ": name " + valueOf(*name) + " is not a string");
+    }
+  }
+  if (const auto scene = document.find("scene"); scene != document.end()) {
+    const std::size_t scenes = arrayOf(document, "scenes").size();
+    std::uint64_t index = 0;
+    if (!nonNegativeInteger(*scene, index) || index >= scenes)
+      throw Error("scene " + valueOf(*scene) + " does not exist (UNRESOLVED_REFERENCE: the file has " + countOf(scenes, "scene") + ")");
+  }
+  const json& meshes = arrayOf(document, "meshes");
+  for (std::size_t m = 0; m < meshes.size(); ++m) {
+    const std::string mesh = named("meshes", m, meshes[m]);
+    const auto primitives = meshes[m].find("primitives");
+    if (primitives == meshes[m].end() || !primitives->is_array() || primitives->empty())
+      throw Error(mesh + ": primitives " + (primitives == meshes[m].end() ? std::string("is missing") : valueOf(*primitives) + " is not") +
+                  " an array of one or more primitives");
+    for (std::size_t p = 0; p < primitives->size(); ++p) {
+      const json& primitive = (*primitives)[p];
+      const std::string name = mesh + ": " + at("primitives", p);
+      if (!primitive.is_object()) throw Error(name + " " + valueOf(primitive) + " is not a JSON object");
+      const auto attributes = primitive.find("attributes");
+      if (attributes == primitive.end() || !attributes->is_object())
+        throw Error(name + ": attributes " + (attributes == primitive.end() ? std::string("is missing") : valueOf(*attributes) + " is not a JSON object"));
+    }
+  }
+  const json& materials = arrayOf(document, "materials");
+  for (std::size_t m = 0; m < materials.size(); ++m) {
+    const json& material = materials[m];
+    const std::string name = named("materials", m, material);
+    const auto expect = [&](const json& owner, const char* key, const std::string& path, bool (json::*is)() const noexcept, const char* kind) {
+      const auto it = owner.find(key);
+      if (it != owner.end() && !((*it).*is)()) throw Error(name + ": " + path + " " + valueOf(*it) + " is not " + kind);
+    };
+    const auto textureInfo = [&](const json& owner, const char* key, const std::string& path) {
+      expect(owner, key, path, &json::is_object, "a JSON object");
+      if (const auto info = owner.find(key); info != owner.end()) {
+        expect(*info, "texCoord", path + ".texCoord", &json::is_number_integer, "an integer");
+        expect(*info, "scale", path + ".scale", &json::is_number, "a number");
+        expect(*info, "strength", path + ".strength", &json::is_number, "a number");
+      }
+    };
+    expect(material, "pbrMetallicRoughness", "pbrMetallicRoughness", &json::is_object, "a JSON object");
+    if (const auto pbr = material.find("pbrMetallicRoughness"); pbr != material.end()) {
+      expect(*pbr, "baseColorFactor", "pbrMetallicRoughness.baseColorFactor", &json::is_array, "an array of numbers");
+      expect(*pbr, "metallicFactor", "pbrMetallicRoughness.metallicFactor", &json::is_number, "a number");
+      expect(*pbr, "roughnessFactor", "pbrMetallicRoughness.roughnessFactor", &json::is_number, "a number");
+      textureInfo(*pbr, "baseColorTexture", "pbrMetallicRoughness.baseColorTexture");
+      textureInfo(*pbr, "metallicRoughnessTexture", "pbrMetallicRoughness.metallicRoughnessTexture");
+    }
+    expect(material, "emissiveFactor", "emissiveFactor", &json::is_array, "an array of numbers");
+    expect(material, "doubleSided", "doubleSided", &json::is_boolean, "true or false");
+    for (const char* key : {"normalTexture", "occlusionTexture", "emissiveTexture"}) textureInfo(material, key, key);
+  }
+  checkExtensionObjects(document, "", 0);
+}
+
 }  // namespace
 
 void checkGltfDocument(const std::string& path, const nlohmann::json& document, const std::string& folder, std::uint64_t maxFileBytes) {
   try {
+    checkSchemaTypes(document);
     checkImageBufferViews(document);
     checkBufferUris(document, folder, maxFileBytes);
     checkNodeHierarchy(document);

@@ -10,6 +10,10 @@
 //   - the node hierarchy is a set of disjoint trees: a node has at most one
 //     parent, no node is its own ancestor, scene roots have no parent
 //     (glTF 2.0, 3.5.3) — a DAG would be walked once per path;
+//   - the properties facet reads have glTF's JSON types (arrays of objects,
+//     string names, a "scene" that exists, primitives with attributes,
+//     material objects and numbers, extensions that are objects): tinygltf
+//     reads a mistyped one as absent, and the file would draw as something else;
 //   - textures name samplers that exist;
 //   - KHR_lights_punctual lights have a known type and, for spots,
 //     0 ≤ innerConeAngle < outerConeAngle ≤ π/2.

@@ -768,6 +768,35 @@ TEST_CASE("normal textures: tangents from the file's TANGENT, or computed along 
   CHECK(quad.tangents[0] == glm::vec4(-1, 0, 0, -1));
 }
 
+TEST_CASE("glTF bad input: a value of the wrong JSON type is refused by name, not read as absent (assimp's wrongTypes)") {
+  const auto refused = [](const std::function<void(nlohmann::json&)>& change, const std::string& message) {
+    nlohmann::json j = triangle();
+    change(j);
+    CHECK_THROWS_WITH_AS(loadJson(j), doctest::Contains(message.c_str()), Error);
+  };
+  refused([](nlohmann::json& j) { j["meshes"][0]["primitives"] = {{"mode", 4}}; }, "bad.gltf: meshes[0]: primitives '{\"mode\":4}' is not an array");
+  refused([](nlohmann::json& j) { j["meshes"][0]["primitives"] = nlohmann::json::array(); }, "primitives '[]' is not an array of one or more");
+  refused([](nlohmann::json& j) { j["meshes"][0]["primitives"][0].erase("attributes"); }, "meshes[0]: primitives[0]: attributes is missing");
+  refused([](nlohmann::json& j) { j["materials"] = {{{"pbrMetallicRoughness", {"not an object"}}}}; },
+          "materials[0]: pbrMetallicRoughness '[\"not an object\"]' is not a JSON object");
+  refused([](nlohmann::json& j) { j["materials"] = {{{"normalTexture", {{"index", 0}, {"scale", "big"}}}}}; },
+          "materials[0]: normalTexture.scale '\"big\"' is not a number");
+  refused([](nlohmann::json& j) { j["materials"] = {{{"pbrMetallicRoughness", {{"metallicFactor", "1"}}}}}; },
+          "pbrMetallicRoughness.metallicFactor '\"1\"' is not a number");
+  refused([](nlohmann::json& j) { j["materials"] = {{{"emissiveTexture", {{"index", 0}, {"extensions", {{"KHR_texture_transform", "no"}}}}}}}; },
+          "materials[0].emissiveTexture.extensions.'KHR_texture_transform' '\"no\"' is not a JSON object");
+  refused([](nlohmann::json& j) { j["scenes"][0]["name"] = 42; }, "scenes[0]: name '42' is not a string");
+  refused([](nlohmann::json& j) { j["scene"] = "hello"; }, "scene '\"hello\"' does not exist (UNRESOLVED_REFERENCE: the file has 1 scene)");
+  refused([](nlohmann::json& j) { j.erase("scenes"), j["scene"] = 0; }, "scene '0' does not exist (UNRESOLVED_REFERENCE: the file has 0 scenes)");
+  refused([](nlohmann::json& j) { j["nodes"] = {{"mesh", 0}}; }, "nodes '{\"mesh\":0}' is not an array");
+  refused([](nlohmann::json& j) { j["nodes"][0] = 7; }, "nodes[0] '7' is not a JSON object");
+  // What glTF allows stays allowed: extras of any type, an extension with members.
+  nlohmann::json j = triangle();
+  j["extras"] = {{"extensions", 5}};
+  j["nodes"][0]["extras"] = "anything";
+  CHECK_NOTHROW(loadJson(j));
+}
+
 TEST_CASE("glTF texCoord: each texture reference reads TEXCOORD_0 or TEXCOORD_1, tangents follow the normal texture's set") {
   const Scene scene = loadGltf(std::string(FACET_TEST_DATA) + "/../../assets/scenes/texcoord_sets.gltf");
   const auto mesh = [&](const std::string& name) -> const Mesh& {
