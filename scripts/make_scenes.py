@@ -1102,6 +1102,27 @@ def bump():
     return g
 
 
+def fog():
+    g = Gltf("Fog, the course's atmospheric attenuation (with --set fog.mode=linear, exponential or exponential2, "
+             "and fog.color set to the background): an avenue of columns and spheres receding 40 m into the "
+             "distance on a long ground; the far ones fade into the fog colour, the near ones keep theirs.")
+    column = cylinder(0.25, 2.0, 24)
+    ball = uv_sphere(0.35, 32, 16)
+    stone = g.add_material("stone", (0.75, 0.7, 0.62, 1), 0.0, 0.7)
+    red = g.add_material("red", (0.8, 0.1, 0.08, 1), 0.0, 0.4)
+    blue = g.add_material("blue", (0.12, 0.25, 0.8, 1), 0.0, 0.4)
+    for k in range(10):
+        z = 1.0 - 4.2 * k
+        for side in (-1, 1):
+            g.add_node("column %d %+d" % (k, side), g.add_mesh("column %d %+d" % (k, side), g.primitive(column, stone)),
+                       translation=(1.8 * side, 0.0, z))
+        g.add_node("sphere %d" % k, g.add_mesh("sphere %d" % k, g.primitive(ball, red if k % 2 else blue)), translation=(0, 0.35, z - 2.1))
+    add_ground(g, 8, 48, translation=(0, 0, -18), color=((0.32, 0.36, 0.3, 1), 0.0, 0.9))
+    g.add_camera("camera", (0.4, 1.6, 5.0), (0, 0.9, -10), zfar=120)
+    g.add_light("sun", "directional", (-3, 6, 4), (0, 0, 0), intensity=1.6)
+    return g
+
+
 def write_png(path, png_bytes):
     os.makedirs(os.path.dirname(path), exist_ok=True)
     with open(path, "wb") as out:
@@ -1286,6 +1307,7 @@ SCENES = [
     (ASSETS_DIR, "displacement.gltf", displacement),
     (ASSETS_DIR, "materials.gltf", materials),
     (ASSETS_DIR, "bump.gltf", bump),
+    (ASSETS_DIR, "fog.gltf", fog),
 ]
 
 

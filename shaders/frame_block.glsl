@@ -30,6 +30,9 @@ layout(std140, binding = 0) uniform Frame {
   vec4 backgroundRight;     // xyz: X
   vec4 backgroundUp;        // xyz: Y
   vec4 irradiance[9];       // rgb: the map's E(N)/π coefficients (shading=pbr)
+  vec4 fog;                 // x: start; y: end; z: density; w: cot θ (fog.glsl)
+  vec4 fogColor;            // rgb: C_fog, linear
+  vec4 fogRange;            // x: N, y: F (parallel projection's eye depth)
 } frame;
 
 // The course material of the draw being shaded (uniforms set per draw).

@@ -1,6 +1,9 @@
 #version 450 core
-// Lines and points are unlit: O_d times the interpolated vertex colour.
+// Lines and points are unlit: O_d times the interpolated vertex colour, through the frame's fog.
+#include "frame_block.glsl"
+#include "shading_math.glsl"
 #include "srgb.glsl"
+#include "fog.glsl"
 
 uniform vec3 baseColorFactor;  // O_d, linear
 
@@ -9,5 +12,5 @@ in vec3 vertexColor;
 layout(location = 0) out vec4 color;
 
 void main() {
-  color = encodeSrgb(baseColorFactor * vertexColor);
+  color = encodeSrgb(fogged(baseColorFactor * vertexColor));
 }

@@ -10,6 +10,7 @@
 #include "draw_uniforms.glsl"
 #include "environment.glsl"
 #include "lighting.glsl"
+#include "fog.glsl"
 
 flat in vec3 frontDiffuse;
 flat in vec3 frontSpecular;
@@ -30,5 +31,5 @@ void main() {
   precise vec3 specular = emissionAt(t) + I.specular;  // summed with k_e = 0 (summedMaterial)
   I.specular = specular;
 #endif
-  color = encodeSrgb(shade(I, O.rgb));
+  color = encodeSrgb(fogged(shade(I, O.rgb)));
 }

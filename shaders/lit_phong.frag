@@ -14,6 +14,7 @@
 #include "physically_based.glsl"
 #include "normal_mapping.glsl"
 #include "bump_mapping.glsl"
+#include "fog.glsl"
 
 in vec3 worldPosition;
 in vec3 worldNormal;
@@ -39,12 +40,12 @@ void main() {
   vec4 O = baseColorAt(t, vertexColor, modelPoint);
   if (!alphaKept(O.a)) discard;  // alpha mask (a no-op unless FACET_MASKED)
 #if FACET_PBR
-  color = encodeSrgb(shadePhysicallyBased(pbrSurfaceAt(O.rgb, t), P, N, viewVector(P)));
+  color = encodeSrgb(fogged(shadePhysicallyBased(pbrSurfaceAt(O.rgb, t), P, N, viewVector(P))));
 #else
   CourseMaterial lit = material;
 #if FACET_EMISSIVE_MAP
   lit.emissive = emissionAt(t);  // k_e·E in k_e's place
 #endif
-  color = encodeSrgb(shade(illuminate(lit, P, N, viewVector(P)), O.rgb));
+  color = encodeSrgb(fogged(shade(illuminate(lit, P, N, viewVector(P)), O.rgb)));
 #endif
 }

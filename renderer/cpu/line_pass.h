@@ -32,6 +32,6 @@ void setUpLines(const Scene& scene, const FrameInputs& frame, const PassVertices
 
 // Draws the lines that cover pixels of rectangle `r` over `image`, against
 // the z-buffer `depth` (pixel (r.x0, r.y0) first, `depthStride` per row).
-void drawLines(const std::vector<DrawnLine>& lines, const TileRect& r, float* depth, int depthStride, Image& image);
+void drawLines(const FrameInputs& frame, const std::vector<DrawnLine>& lines, const TileRect& r, float* depth, int depthStride, Image& image);
 
 }  // namespace facet::cpu

@@ -10,6 +10,7 @@
 
 #include "cpu/alpha_mask.h"
 #include "cpu/binning.h"
+#include "cpu/fog.h"
 #include "cpu/bump_mapping.h"
 #include "cpu/interpolation.h"
 #include "cpu/normal_mapping.h"
@@ -62,6 +63,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
   bool colored = false;
   int used = 0;  // varyings set up for the triangle: a prefix of the layout
   const bool procedural = frame.procedural != Procedural::None;
+  const bool foggy = frame.fog.mode != FogMode::None;  // fog reads 1/w, set up with the varyings
   bool back = false;
   const Illumination* flat = nullptr;
   PhongBatch batch(frame, maps, image.data());  // Phong: four pixels' illumination at a time
@@ -87,14 +89,14 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         colored = !mesh.colors.empty();
         used = procedural ? layout.count : colored ? layout.model : (kMode == ShadingMode::Flat && !texture && !emissiveMap ? 0 : layout.color);
         back = !t.snapped.frontFacing;
-        if (used) in->setUpVaryings(used);
+        if (used || foggy) in->setUpVaryings(used);
         if constexpr (kMode == ShadingMode::Flat) flat = &bins.flat[2 * index];
       }
 #if defined(__SSE2__)
       if constexpr (kMode == ShadingMode::Phong) {
         // Four pixels of one untextured, uncoloured triangle in a row: interpolation on four lanes, straight into the batch.
         const std::uint32_t* row = &scratch.id[(py - ty0) * kTileSize + (px - tx0)];
-        if (!texture && !colored && !procedural && !normalMap && !bumpable && !emissiveMap && px + 3 <= tx1 && row[1] == id && row[2] == id && row[3] == id) {
+        if (!texture && !colored && !procedural && !normalMap && !bumpable && !emissiveMap && !foggy && px + 3 <= tx1 && row[1] == id && row[2] == id && row[3] == id) {
           const __m128 w = in->inverseW4(px, py);
           const __m128 P[3] = {in->varying4(0, px, py, w), in->varying4(1, px, py, w), in->varying4(2, px, py, w)};
           const __m128 N[3] = {in->varying4(3, px, py, w), in->varying4(4, px, py, w), in->varying4(5, px, py, w)};
@@ -110,6 +112,8 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
       // A texture coordinate set at the pixel, and its quad derivatives (ds/dx, dt/dx, ds/dy, dt/dy).
       const auto stAt = [&](int set) { return glm::vec2(v[layout.texcoord(set)], v[layout.texcoord(set) + 1]); };
       const auto derivativesAt = [&](int set) { return in->quadDerivatives(layout.texcoord(set), px, py); };
+      // The pixel's eye depth d, for fog.
+      const float depth = foggy ? eyeDepth(frame, in->oneOverWAt(px, py), in->depthAt(px, py)) : 0.0f;
       // k_e·E with an emissive texture (the course's modes, PIPELINE.md section 5).
       const auto emission = [&] { return emissionAt(*emissiveMap, *material, stAt(material->emissiveMap.set), derivativesAt(material->emissiveMap.set)); };
       // O_d = factor · COLOR_0 · texel (PIPELINE.md, section 8)
@@ -139,7 +143,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
       } else if constexpr (kMode == ShadingMode::Phong) {
         // N is normalized (and negated on a back face, two-sided lighting) in the batch
         batch.add(static_cast<std::size_t>(py) * static_cast<std::size_t>(image.width()) + static_cast<std::size_t>(px), {v[0], v[1], v[2]},
-                  interpolatedNormal, back, baseColor, *material, emissiveMap ? emission() : material->emissive);
+                  interpolatedNormal, back, baseColor, *material, emissiveMap ? emission() : material->emissive, depth);
         continue;  // written when the batch is shaded
       } else if constexpr (kMode == ShadingMode::Gouraud) {
         const int side = back ? 6 : 0;
@@ -151,7 +155,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         if (emissiveMap) I.specular = emission() + I.specular;  // summed with k_e = 0 for the triangle
         color = shade(I, baseColor);
       }
-      image.at(px, py) = encodePixel(color);
+      image.at(px, py) = encodePixel(fogged(frame.fog, color, depth));
     }
   batch.flush();
 }
@@ -292,7 +296,7 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
       case ShadingMode::Gouraud: shadeTile<ShadingMode::Gouraud>(scene, frame, maps, scratch, r.x0, r.y0, r.x1, r.y1, image); break;
       default: shadeTile<ShadingMode::Flat>(scene, frame, maps, scratch, r.x0, r.y0, r.x1, r.y1, image); break;
     }
-    drawLines(buffers.lines, r, scratch.depth, kTileSize, image);
+    drawLines(frame, buffers.lines, r, scratch.depth, kTileSize, image);
   });
 }
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "cpu/fog.h"
 #include "cpu/srgb_table.h"
 
 namespace facet::cpu {
@@ -20,6 +21,7 @@ void PhongBatch::flush() {
   for (int k = count_; k < kLanes; ++k) {  // unused lanes repeat lane 0; their results are dropped
     for (int c = 0; c < 3; ++c) P_[c][k] = P_[c][0], N_[c][k] = N_[c][0], O_[c][k] = O_[c][0], E_[c][k] = E_[c][0];
     back_[k] = back_[0];
+    D_[k] = D_[0];
     material_[k] = material_[0];
   }
   for (int k = 0; k < kLanes; ++k) {
@@ -33,7 +35,8 @@ void PhongBatch::flush() {
   const Vec3x4 N = select(back, -unit, unit);
   const LaneMaterial<Float4> material{load(E_), Float4(_mm_load_ps(ka_)), Float4(_mm_load_ps(kd_)), Float4(_mm_load_ps(ks_)),
                                       Float4(_mm_load_ps(n_)), Float4(_mm_load_ps(m_))};
-  const Vec3x4 color = shade(illuminate(frame_, maps_, material, P, N, viewVector<Float4>(frame_, P)), load(O_));
+  const Vec3x4 color = fogged(frame_.fog, shade(illuminate(frame_, maps_, material, P, N, viewVector<Float4>(frame_, P)), load(O_)),
+                              Float4(_mm_load_ps(D_)));
   alignas(16) float rgb[3][kLanes];
   _mm_store_ps(rgb[0], color.x.v);
   _mm_store_ps(rgb[1], color.y.v);
@@ -53,7 +56,8 @@ void PhongBatch::flush() {
     const glm::vec3 N = back_[k] != 0.0f ? -unit : unit;
     const glm::vec3 O{O_[0][k], O_[1][k], O_[2][k]};
     const glm::vec3 E{E_[0][k], E_[1][k], E_[2][k]};
-    pixels_[offset_[k]] = encodePixel(shade(illuminate(frame_, maps_, laneMaterial(*material_[k], E), P, N, viewVector<float>(frame_, P)), O));
+    const glm::vec3 lit = shade(illuminate(frame_, maps_, laneMaterial(*material_[k], E), P, N, viewVector<float>(frame_, P)), O);
+    pixels_[offset_[k]] = encodePixel(fogged(frame_.fog, lit, D_[k]));
   }
   count_ = 0;
 }

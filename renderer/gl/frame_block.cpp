@@ -14,6 +14,8 @@ namespace facet::gl {
 static_assert(static_cast<int>(LightKind::Point) == 0 && static_cast<int>(LightKind::Directional) == 1 &&
               static_cast<int>(LightKind::Spot) == 2);
 static_assert(static_cast<int>(SpecularModel::Phong) == 0 && static_cast<int>(SpecularModel::BlinnPhong) == 1);
+static_assert(static_cast<int>(FogMode::None) == 0 && static_cast<int>(FogMode::Linear) == 1 && static_cast<int>(FogMode::Exponential) == 2 &&
+              static_cast<int>(FogMode::Exponential2) == 3, "fog.glsl reads FACET_FOG as these values");
 static_assert(static_cast<int>(ShadingMode::Flat) == 0 && static_cast<int>(ShadingMode::Gouraud) == 1 &&
               static_cast<int>(ShadingMode::Phong) == 2 && static_cast<int>(ShadingMode::Pbr) == 3);
 
@@ -31,6 +33,9 @@ FrameBlock makeFrameBlock(const FrameInputs& frame) {
   block.backgroundUp = glm::vec4(e.up, 0.0f);
   block.shadowParams = glm::vec4(frame.shadows.biasSlope, frame.shadows.biasMin, static_cast<float>(frame.shadows.mapSize), 0.0f);
   block.background = glm::vec4(frame.background, 1.0f);
+  block.fog = glm::vec4(frame.fog.start, frame.fog.end, frame.fog.density, frame.fog.cotTheta);
+  block.fogColor = glm::vec4(frame.fog.color, 0.0f);
+  block.fogRange = glm::vec4(frame.camera.near, frame.camera.far, 0.0f, 0.0f);
   for (std::size_t i = 0; i < frame.lights.size(); ++i) {
     const FrameLight& fl = frame.lights[i];
     LightBlock& light = block.lights[i];

@@ -41,6 +41,9 @@ struct FrameBlock {
   glm::vec4 environment;     // x: k_r; y: 1 with a map; z: 1 when empty pixels show it; w: its last mip level
   glm::vec4 backgroundForward, backgroundRight, backgroundUp;  // xyz: D = (F + x·X) + y·Y
   std::array<glm::vec4, 9> irradiance;  // rgb: the map's E(N)/π coefficients (EnvironmentMap::irradiance)
+  glm::vec4 fog;             // x: start; y: end; z: density; w: cot θ (fog.glsl)
+  glm::vec4 fogColor;        // rgb: C_fog, linear
+  glm::vec4 fogRange;        // x: N, y: F of the camera (parallel projection's eye depth)
 };
 
 // SrgbTables in srgb.glsl: image/srgb.h's tables, four floats (or bytes
@@ -79,7 +82,8 @@ static_assert(kSrgbBuckets <= 2033 * 16);
 static_assert(offsetof(FrameBlock, environment) == 80 + facet::kMaxLights * sizeof(LightBlock));
 static_assert(offsetof(FrameBlock, backgroundUp) == offsetof(FrameBlock, environment) + 48);
 static_assert(offsetof(FrameBlock, irradiance) == offsetof(FrameBlock, environment) + 64);
-static_assert(sizeof(FrameBlock) == 80 + facet::kMaxLights * sizeof(LightBlock) + 64 + 9 * 16);
+static_assert(offsetof(FrameBlock, fog) == offsetof(FrameBlock, irradiance) + 9 * 16);
+static_assert(sizeof(FrameBlock) == 80 + facet::kMaxLights * sizeof(LightBlock) + 64 + 9 * 16 + 3 * 16);
 
 // The block's values for one frame, from FrameInputs only (checkFrame has
 // held its light count to kMaxLights).

@@ -252,10 +252,11 @@ bool GlFrameRenderer::preparePrograms(const FrameInputs& frame) {
     backgroundViewportSize_ = uniformLocation(gl_, *backgroundProgram_, "viewportSize");
     compiled = true;
   }
-  if (!lineProgram_) {
-    ShaderProgram program = buildProgram(gl_, {"line.vert", "line.frag"});
+  if (!lineProgram_ || lineFog_ != frame.fog.mode) {
+    ShaderProgram program = buildProgram(gl_, {"line.vert", "line.frag"}, fogDefine(frame));
     const auto at = [&](const char* name) { return uniformLocation(gl_, program, name); };
     lineProgram_.emplace(LineProgram{at("clipFromModel"), at("colored"), at("baseColorFactor"), std::move(program)});
+    lineFog_ = frame.fog.mode;
     compiled = true;
   }
   return compiled;

@@ -113,6 +113,7 @@ class GlFrameRenderer {
     ShaderProgram program;
   };
   std::optional<LineProgram> lineProgram_;  // segments and points (line.vert, line.frag)
+  FogMode lineFog_ = FogMode::None;          // the fog mode lineProgram_ is built for
   struct TriangleIdProgram {
     GLint clipFromModel, firstTriangle;
     AlphaUniforms alpha;

@@ -30,10 +30,13 @@ std::string drawVariantDefines(DrawVariant variant) {
   return d;
 }
 
+std::string fogDefine(const FrameInputs& frame) { return "#define FACET_FOG " + std::to_string(static_cast<int>(frame.fog.mode)) + "\n"; }
+
 std::string litShaderDefines(const FrameInputs& frame, DrawVariant variant) {
   std::string d = drawVariantDefines(variant);
  d += "#define FACET_ENVIRONMENT " + std::string(frame.environment.map ? "1" : "0") + "\n";
   d += "#define FACET_PBR " + std::string(frame.shading == ShadingMode::Pbr ? "1" : "0") + "\n";
+  d += fogDefine(frame);
   d += "#define FACET_PROCEDURAL " + std::to_string(static_cast<int>(frame.procedural)) + "\n";
   d += "#define FACET_SPECULAR_MODEL " + std::to_string(static_cast<int>(frame.specular)) + "\n";
   d += "#define FACET_PCF_RADIUS " + std::to_string(frame.shadows.pcfRadius) + "\n";

@@ -38,6 +38,9 @@ struct DrawVariant {
 // FACET_EMISSIVE_MAP): the lit programs' and the triangle-id pass's.
 std::string drawVariantDefines(DrawVariant variant);
 
+// "#define FACET_FOG m": the frame's fog mode (fog.glsl), for the lit and the line programs.
+std::string fogDefine(const FrameInputs& frame);
+
 // The #define lines (one per macro, each ending in a newline) of the lit
 // programs for `frame`, for draws of `variant`. Equal strings mean the same
 // program, so the text is also the key of the renderer's program cache.

@@ -133,6 +133,8 @@ FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings)
   f.ambient = settings.ambient;
   f.shading = settings.shading;
   f.procedural = settings.material.procedural;
+  f.fog = {settings.fog.mode, settings.fog.color, settings.fog.start, settings.fog.end, settings.fog.density,
+           static_cast<float>(1.0 / std::tan(static_cast<double>(glm::radians(f.camera.halfAngleDeg))))};
   f.proceduralScale = settings.material.proceduralScale;
   f.specular = settings.specular;
   f.cullBackFaces = settings.cullBackFaces;

@@ -81,6 +81,13 @@ struct FrameInputs {
   } bump;
   Procedural procedural = Procedural::None;  // a pattern in place of every base colour texture
   float proceduralScale = 1.0f;              // k: cells per model unit
+  // Fog (PIPELINE.md, section 7): the settings', and cot θ for the eye depth d = (1/(1/w))·cot θ.
+  struct Fog {
+    FogMode mode = FogMode::None;
+    glm::vec3 color{0.0f};  // C_fog, linear
+    float start = 0.0f, end = 1.0f, density = 0.0f;
+    float cotTheta = 1.0f;  // perspective: 1/tan θ, double precision rounded to float
+  } fog;
 
   std::vector<std::string> warnings;  // what building the frame dropped (lights beyond kMaxLights)
 };

@@ -127,6 +127,20 @@ struct ShadowSettings {
   int pcfRadius = 1;         // r: PCF averages (2r+1)² samples; 0 = hard shadows
 };
 
+// The course's atmospheric attenuation (renderer/PIPELINE.md, section 7,
+// "Fog"): C = f·C_surface + (1 - f)·C_fog by the eye-space depth d,
+// linear f = (end - d)/(end - start), exponential e^(-density·d),
+// exponential2 e^(-(density·d)²), f clamped to [0, 1].
+enum class FogMode { None, Linear, Exponential, Exponential2, Count };
+inline constexpr std::array<std::string_view, static_cast<int>(FogMode::Count)> kFogModeNames = {"none", "linear", "exponential", "exponential2"};
+struct FogSettings {
+  FogMode mode = FogMode::None;
+  glm::vec3 color{0.5f, 0.55f, 0.6f};  // C_fog, linear RGB
+  float start = 1.0f;                  // linear: d where the fog begins (f = 1)
+  float end = 20.0f;                   // linear: d where it hides everything (f = 0), > start
+  float density = 0.1f;                // exponential and exponential2, per world unit
+};
+
 struct RenderSettings {
   int width = 800;   // image size in pixels
   int height = 600;
@@ -141,6 +155,7 @@ struct RenderSettings {
   ShadowSettings shadows;
   TextureSettings textures;
   EnvironmentSettings environment;
+  FogSettings fog;
   glm::vec3 background{0.02f, 0.025f, 0.035f};  // linear RGB
 };
 

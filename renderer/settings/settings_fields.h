@@ -90,6 +90,15 @@ void visitSettings(Visitor& v, RenderSettings& s) {
     v.field({"reflectivity", "k_r of the reflection k_r I_r, I_r the map in direction R = 2(N.V)N - V", 0, 1}, e.reflectivity);
     v.field({"background", "empty pixels show the map in their view direction"}, e.background);
   });
+  v.group("fog", [&] {
+    FogSettings& f = s.fog;
+    v.choice({"mode", "the course's fog by eye depth d: none, linear, exponential (e^-density d) or exponential2 (e^-(density d)^2)"}, f.mode,
+             kFogModeNames);
+    v.field({"color", "C_fog, linear RGB, each in [0, 1]", 0, 1, FieldKind::Color}, f.color);
+    v.field({"start", "linear: the eye depth where fog begins", 0, 1e9}, f.start);
+    v.field({"end", "linear: the eye depth where fog hides everything (> start)", 0, 1e9}, f.end);
+    v.field({"density", "exponential and exponential2: density per world unit", 0, 1e3}, f.density);
+  });
   v.field({"background", "linear RGB of empty pixels, each in [0, 1]", 0, 1, FieldKind::Color}, s.background);
 }
 

@@ -186,6 +186,7 @@ struct JsonReader {
 // Rules that span fields, checked after every read.
 void validate(const RenderSettings& s) {
   if (!(s.camera.far > s.camera.near)) throw Error("settings key 'camera.far': must be greater than camera.near");
+  if (s.fog.mode == FogMode::Linear && !(s.fog.end > s.fog.start)) throw Error("settings key 'fog.end': must be greater than fog.start");
   for (std::size_t i = 0; i < s.lights.size(); ++i) {
     const Light& l = s.lights[i];
     const std::string key = "settings key 'lights." + std::to_string(i);

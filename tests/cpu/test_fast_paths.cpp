@@ -157,7 +157,7 @@ TEST_CASE("Phong batch: four lanes at a time give the bits of illuminate<float>,
         const bool back = i % 5 == 0;
         const glm::vec3 interpolated = N * (0.5f + unit(random));  // not unit length, as interpolated normals are
         materials.push_back(material);
-        batch.add(static_cast<std::size_t>(i), P, interpolated, back, baseColor, materials.back(), materials.back().emissive);
+        batch.add(static_cast<std::size_t>(i), P, interpolated, back, baseColor, materials.back(), materials.back().emissive, 0.0f);
         const glm::vec3 lit = back ? -cpu::normalize3(interpolated) : cpu::normalize3(interpolated);
         scalar.at(i, 0) = encodePixel(cpu::shade(cpu::illuminate(frame, maps, cpu::laneMaterial(material), P, lit, cpu::viewVector<float>(frame, P)), baseColor));
       }

@@ -32,6 +32,7 @@ std::vector<Member> frameBlockMembers() {
       {"Frame.background", offsetof(FrameBlock, background)},
       {"Frame.environment", offsetof(FrameBlock, environment)},     {"Frame.backgroundForward", offsetof(FrameBlock, backgroundForward)},
       {"Frame.backgroundRight", offsetof(FrameBlock, backgroundRight)}, {"Frame.backgroundUp", offsetof(FrameBlock, backgroundUp)},
+      {"Frame.fog", offsetof(FrameBlock, fog)}, {"Frame.fogColor", offsetof(FrameBlock, fogColor)}, {"Frame.fogRange", offsetof(FrameBlock, fogRange)},
   };
   for (std::size_t i = 0; i < facet::kMaxLights; ++i) {
     const std::string light = "Frame.lights[" + std::to_string(i) + "].";

@@ -88,6 +88,19 @@ TEST_CASE("every shader file is embedded, and every program of the backend compi
     CHECK_NOTHROW(buildProgram(harness.gl, {"triangle_id.vert", "triangle_id.frag"}, defines));
   }
   CHECK_NOTHROW(buildProgram(harness.gl, {"background.vert", "background.frag"}));
+  // Each fog mode, in the lit programs (every texture and map on) and the line program.
+  for (FogMode fog : {FogMode::None, FogMode::Linear, FogMode::Exponential, FogMode::Exponential2}) {
+    RenderSettings settings;
+    settings.fog.mode = fog;
+    const FrameInputs frame = buildFrameInputs(scene, settings);
+    for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) {
+      const std::string name(kShadingModeNames[static_cast<std::size_t>(mode)]);
+      const std::string defines = litShaderDefines(frame, DrawVariant::of(DrawVariant::kCount - 1));
+      INFO(name, "\n", defines);
+      CHECK_NOTHROW(buildProgram(harness.gl, {"lit_" + name + ".vert", "lit_" + name + ".frag"}, defines));
+    }
+    CHECK_NOTHROW(buildProgram(harness.gl, {"line.vert", "line.frag"}, fogDefine(frame)));
+  }
 }
 
 TEST_CASE("a shader that does not compile: facet::Error names the file and line, with the driver's log") {

@@ -13,6 +13,7 @@
 // Pass 1 draws every triangle into each light's depth maps; pass 2 draws
 // them into the image. No tiles, threads or batches: the fast renderer
 // (cpu_renderer.cpp) gets the same pixels by the same rules.
+#include "cpu/fog.h"
 #include "cpu/reference/reference_renderer.h"
 
 #include <chrono>
@@ -206,7 +207,7 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
         if (!instance.cullBackFaces) flat[1] = illuminate(frame, maps, summed, centroid, -N, V);
       }
       // Fragment stage.
-      const FragmentShader fragment = [&](const float* f, bool front, const Interpolation& planes, int px, int py) -> glm::vec3 {
+      const auto surface = [&](const float* f, bool front, const Interpolation& planes, int px, int py) -> glm::vec3 {
         const auto emission = [&] {
           const int set = material.emissiveMap.set;
           return emissionAt(*emissiveMap, material, stOf(f, set), planes.quadDerivatives(layout.texcoord(set), px, py));
@@ -240,6 +241,10 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
         if (emissiveMap) I.specular = emission() + I.specular;
         return shade(I, baseColor(f, planes, px, py));
       };
+      // Fog, by the pixel's eye depth (PIPELINE.md, section 7).
+      const FragmentShader fragment = [&](const float* f, bool front, const Interpolation& planes, int px, int py) {
+        return fogged(frame.fog, surface(f, front, planes, px, py), eyeDepth(frame, planes.oneOverWAt(px, py), planes.depthAt(px, py)));
+      };
       drawTriangle(v, count, instance.cullBackFaces, ++id, target, fragment, material.masked ? keep : nullptr);
     }
   }
@@ -269,7 +274,7 @@ void linePass(const Scene& scene, const FrameInputs& frame, Target& target) {
       addPoint(v, toWindow(v, halfWidth, halfHeight, 3), frame, baseColor, lines);
     }
   }
-  drawLines(lines, {0, 0, frame.width - 1, frame.height - 1}, target.depth.data(), frame.width, *target.image);
+  drawLines(frame, lines, {0, 0, frame.width - 1, frame.height - 1}, target.depth.data(), frame.width, *target.image);
 }
 
 class ReferenceRenderer final : public Renderer {
