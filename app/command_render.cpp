@@ -11,6 +11,7 @@
 #include "common/atomic_file.h"
 #include "common/error.h"
 #include "common/quote.h"
+#include "compare/depth_complexity.h"
 #include "cpu/cpu_renderer.h"
 #include "cpu/reference/reference_renderer.h"
 #include "image/png.h"
@@ -31,6 +32,7 @@ struct RenderOptions {
   std::string backend = "gl";
   std::string context = "osmesa";
   int threads = 0;
+  std::string stage = "image";  // image, or overdraw (the depth complexity)
 };
 
 std::unique_ptr<Renderer> makeRenderer(const RenderOptions& options) {
@@ -59,6 +61,10 @@ Command addRenderCommand(CLI::App& app) {
   command->add_option("--context", options->context, "headless OpenGL context for --backend gl: osmesa or egl")
       ->check(CLI::IsMember({"osmesa", "egl"}));
   command->add_option("--threads", options->threads, "CPU backend threads (0: one per core)")->check(wholeNumberIn(0, 256));
+  command->add_option("--output-stage", options->stage,
+                      "image (the frame), or overdraw: the depth complexity, how many triangle fragments each pixel received before the "
+                      "depth test, as a heat map (black 0, pale yellow the busiest pixel)")
+      ->check(CLI::IsMember({"image", "overdraw"}));
   return [options]() {
     const auto start = std::chrono::steady_clock::now();
     const std::string output = options->common.output.empty() ? "facet.png" : options->common.output;  // -o "" never parses
@@ -74,8 +80,15 @@ Command addRenderCommand(CLI::App& app) {
     for (const std::string& warning : frame.warnings) std::fprintf(stderr, "warning: %s: %s\n", scene.source.c_str(), warning.c_str());
     std::unique_ptr<Renderer> renderer = makeRenderer(*options);
     RenderResult result;
+    DepthComplexity complexity;
     try {
-      result = renderer->render(scene, frame);
+      if (options->stage == "overdraw") {
+        const std::vector<std::uint32_t> counts = renderer->fragmentCounts(scene, frame);
+        complexity = depthComplexityOf(counts);
+        result.image = depthComplexityImage(counts, frame.width, frame.height);
+      } else {
+        result = renderer->render(scene, frame);
+      }
     } catch (const OutOfMemory&) {
       throw;
     } catch (const std::bad_alloc&) {
@@ -89,6 +102,11 @@ Command addRenderCommand(CLI::App& app) {
                 countOf(frame.lights.size(), "light").c_str(), frame.shadowLayerCount > 0 ? "on" : "off");
     std::printf("backend: %s\n", renderer->description().c_str());
     for (const PassTiming& t : result.timings) std::printf("  %-28s %9.2f ms\n", t.pass.c_str(), t.milliseconds);
+    if (options->stage == "overdraw")
+      std::printf("depth complexity: %llu fragments over %llu of %lld pixels, %.2f per covered pixel, at most %u\n",
+                  static_cast<unsigned long long>(complexity.fragments), static_cast<unsigned long long>(complexity.covered),
+                  static_cast<long long>(frame.width) * frame.height, complexity.meanPerCovered(), complexity.max);
+    for (const std::string& note : result.notes) std::printf("%s\n", note.c_str());
     std::printf("  %-28s %9.2f ms\n", "total (process)", total);
     std::printf("image written to %s\n", output.c_str());
     return 0;

@@ -1123,6 +1123,46 @@ def fog():
     return g
 
 
+def painter():
+    g = Gltf("The painter's algorithm and where it fails (with --set hsr=painter; the z-buffer draws it right): "
+             "left, three sloping bars in a cycle, each lying over the next at one end and under the one before at "
+             "the other, so no back-to-front order of the three exists; right, two upright panels that pass through "
+             "each other, each in front over half of their overlap; at the back, three cards stacked one behind "
+             "the other, which depth order paints right.")
+    colors = [("red bar", (0.85, 0.15, 0.1, 1)), ("green bar", (0.15, 0.7, 0.2, 1)), ("blue bar", (0.15, 0.3, 0.9, 1))]
+    # The corners of a triangle of lines; bar k runs along corner k -> corner k+1, rising from 0.2 m to 0.4 m
+    # there, so that at each corner the bar that ends high lies over the one that starts low.
+    corners = [(-1.6 + 0.8 * math.cos(math.radians(a)), 0.8 * math.sin(math.radians(a))) for a in (90, 210, 330)]
+    for k, (name, color) in enumerate(colors):
+        (ax, az), (bx, bz) = corners[k], corners[(k + 1) % 3]
+        length = math.hypot(bx - ax, bz - az)
+        ux, uz = (bx - ax) / length, (bz - az) / length  # along the bar
+        px, pz = -uz, ux                                 # across it
+        half, extra, low, high = 0.15, 0.45, 0.2, 0.4
+        def at(s, side):
+            h = low + (high - low) * s / length
+            return (ax + ux * s + px * side * half, h, az + uz * s + pz * side * half)
+        positions = [at(-extra, -1), at(-extra, 1), at(length + extra, 1), at(length + extra, -1)]
+        normal = normalize(cross(sub(positions[2], positions[0]), sub(positions[1], positions[0])))
+        if normal[1] < 0:
+            normal = mul(normal, -1)
+        indices = quad_indices(0, 3, 2, 1) if dot(cross(sub(positions[3], positions[0]), sub(positions[2], positions[0])), normal) > 0 \
+            else quad_indices(0, 1, 2, 3)
+        bar = Mesh(positions, [normal] * 4, indices)
+        g.add_node(name, g.add_mesh(name, g.primitive(bar, g.add_material(name, color, 0.0, 0.5, double_sided=True))))
+    for name, color, turn in (("cream panel", (0.9, 0.85, 0.7, 1), 35), ("violet panel", (0.55, 0.3, 0.8, 1), -35)):
+        g.add_node(name, g.add_mesh(name, g.primitive(quad(1.3, 1.0), g.add_material(name, color, 0.0, 0.6, double_sided=True))),
+                   translation=(1.5, 0.55, 0.1), rotation=axis_angle((0, 1, 0), turn))
+    for k, (name, color) in enumerate((("near card", (0.9, 0.75, 0.1, 1)), ("middle card", (0.1, 0.7, 0.8, 1)),
+                                       ("far card", (0.8, 0.35, 0.6, 1)))):
+        g.add_node(name, g.add_mesh(name, g.primitive(quad(0.8, 0.6), g.add_material(name, color, 0.0, 0.6))),
+                   translation=(-0.1 + 0.3 * k, 0.45 + 0.12 * k, -1.3 - 0.35 * k))
+    add_ground(g, 8, 6)
+    g.add_camera("camera", (0.1, 2.6, 3.6), (0.0, 0.3, -0.2))
+    g.add_light("sun", "directional", (-2, 6, 3), (0, 0, 0), intensity=1.1)
+    return g
+
+
 def write_png(path, png_bytes):
     os.makedirs(os.path.dirname(path), exist_ok=True)
     with open(path, "wb") as out:
@@ -1308,6 +1348,7 @@ SCENES = [
     (ASSETS_DIR, "materials.gltf", materials),
     (ASSETS_DIR, "bump.gltf", bump),
     (ASSETS_DIR, "fog.gltf", fog),
+    (ASSETS_DIR, "painter.gltf", painter),
 ]
 
 

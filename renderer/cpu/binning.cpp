@@ -16,7 +16,7 @@ void pack(const WindowVertex& w, int varyingCount, std::vector<float>& out) {
 }  // namespace
 
 void binTriangles(const Scene& scene, const FrameInputs& frame, const PassVertices& vertices, const TileGrid& grid, bool culling,
-                  std::size_t begin, std::size_t end, WorkerBins& bins, const FlatIllumination* flat) {
+                  std::size_t begin, std::size_t end, WorkerBins& bins, const FlatIllumination* flat, const std::uint32_t* order) {
   bins.triangles.clear();
   bins.clipped.clear();
   bins.flat.clear();
@@ -25,10 +25,15 @@ void binTriangles(const Scene& scene, const FrameInputs& frame, const PassVertic
   const int varyingCount = vertices.stride - 4;
   const float halfWidth = 0.5f * static_cast<float>(grid.width), halfHeight = 0.5f * static_cast<float>(grid.height);
 
-  std::size_t instance = static_cast<std::size_t>(std::upper_bound(vertices.firstTriangle.begin(), vertices.firstTriangle.end(), begin) -
-                                                  vertices.firstTriangle.begin()) - 1;
-  for (std::size_t global = begin; global < end; ++global) {
-    while (global >= vertices.firstTriangle[instance + 1]) ++instance;
+  const auto instanceOf = [&](std::size_t global) {
+    return static_cast<std::size_t>(std::upper_bound(vertices.firstTriangle.begin(), vertices.firstTriangle.end(), global) -
+                                    vertices.firstTriangle.begin()) - 1;
+  };
+  std::size_t instance = order ? 0 : instanceOf(begin);
+  for (std::size_t position = begin; position < end; ++position) {
+    const std::size_t global = order ? order[position] : position;
+    if (order) instance = instanceOf(global);
+    else while (global >= vertices.firstTriangle[instance + 1]) ++instance;
     const Mesh& mesh = scene.meshes[static_cast<std::size_t>(frame.instances[instance].mesh)];
     const bool cullBackFaces = culling && frame.instances[instance].cullBackFaces;
     const std::size_t first = vertices.firstVertex[instance];

@@ -14,10 +14,12 @@ namespace facet::cpu {
 // three vertices (indices into PassVertices); called once for each triangle that reaches setup.
 // `culling`: back faces of the instances that FrameInstance::cullBackFaces
 // marks are dropped (the lit pass); false keeps every triangle (the shadow pass).
+// `order`: positions [begin, end) of this list of triangle indices are binned
+// (the painter's order); null: the triangles [begin, end) themselves.
 using FlatIllumination = FunctionRef<void(std::uint32_t instance, const std::uint32_t (&indices)[3], Illumination (&out)[2])>;
 
 void binTriangles(const Scene& scene, const FrameInputs& frame, const PassVertices& vertices, const TileGrid& grid, bool culling,
-                  std::size_t begin, std::size_t end, WorkerBins& bins, const FlatIllumination* flat);
+                  std::size_t begin, std::size_t end, WorkerBins& bins, const FlatIllumination* flat, const std::uint32_t* order = nullptr);
 
 // Packs the window vertex of an unclipped vertex with clip coordinates
 // `clip` (window_transform.h) into out[0..3]: x, y, z, 1/w.

@@ -10,6 +10,7 @@
 #include "cpu/frame_buffers.h"
 #include "cpu/lighting.h"
 #include "cpu/passes.h"
+#include "cpu/scanline_zbuffer.h"
 #include "cpu/thread_pool.h"
 #include "image/srgb.h"
 #include "pipeline/frame_checks.h"
@@ -48,6 +49,12 @@ class CpuRenderer final : public Renderer {
       });
     cpu::litPass(pool_, buffers_, scene, frame, maps_, result.image);
     result.timings.push_back({"lit pass", millisecondsSince(start)});
+    if (frame.hsr == HiddenSurface::Scanline) {
+      const auto frameDepth = static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height) * sizeof(float);
+      result.notes.push_back("scanline z-buffer: " + countOf(static_cast<std::size_t>(pool_.size()), "row") + " of depth, " +
+                             countOf(cpu::scanlineDepthBytes(frame.width, pool_.size()), "byte") + "; a z-buffer of the frame: " +
+                             countOf(frameDepth, "byte"));
+    }
     return result;
   }
 
@@ -60,6 +67,17 @@ class CpuRenderer final : public Renderer {
     Image unused;
     cpu::litPass(pool_, buffers_, scene, frame, maps_, unused, &ids);
     return ids;
+  }
+
+  std::vector<std::uint32_t> fragmentCounts(const Scene& scene, const FrameInputs& frame) override {
+    check_(scene, frame);
+    cpu::prepareFrame(pool_, buffers_, scene, frame);
+    RenderResult maps;  // the vertex stage of Gouraud reads the shadow maps
+    shadowPasses(scene, frame, maps);
+    std::vector<std::uint32_t> counts(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 0u);
+    Image unused;
+    cpu::litPass(pool_, buffers_, scene, frame, maps_, unused, nullptr, &counts);
+    return counts;
   }
 
  private:

@@ -108,6 +108,7 @@ struct FrameBuffers {
   PassVertices vertices;
   std::vector<WorkerBins> workers;
   std::vector<DrawnLine> lines;  // the lit pass's segments and points (line_pass.h)
+  std::vector<std::uint32_t> visible;  // hsr = scanline: each pixel's polygon (scanline_zbuffer.h)
 };
 
 }  // namespace facet::cpu

@@ -33,6 +33,8 @@ class Interpolation {
 
   // Window z at pixel (px, py)'s centre, clamped to [0, 1]: what the z-buffer tests and keeps.
   float depthAt(int px, int py) const { return cpu::depthAt(z_, px, py); }
+  // The plane depthAt evaluates (the scanline z-buffer steps along it).
+  const Plane& depthPlane() const { return z_; }
   // The interpolated 1/w at pixel (px, py) (fog's eye depth); after setUpVaryings.
   float oneOverWAt(int px, int py) const { return oneOverW_.at(px, py); }
 

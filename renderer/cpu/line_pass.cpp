@@ -68,9 +68,11 @@ void drawLines(const FrameInputs& frame, const std::vector<DrawnLine>& lines, co
       for (int px = x0; px <= x1; ++px) {
         if (!line.raster.covers(px, py)) continue;
         const float z = line.raster.depthAt(px, py);
-        float& kept = depth[static_cast<std::size_t>(py - r.y0) * static_cast<std::size_t>(depthStride) + static_cast<std::size_t>(px - r.x0)];
-        if (!(z < kept)) continue;  // LESS
-        kept = z;
+        if (depth) {
+          float& kept = depth[static_cast<std::size_t>(py - r.y0) * static_cast<std::size_t>(depthStride) + static_cast<std::size_t>(px - r.x0)];
+          if (!(z < kept)) continue;  // LESS
+          kept = z;
+        }
         const glm::vec3 color = line.baseColor * glm::vec3(line.raster.colorAt(0, px, py), line.raster.colorAt(1, px, py), line.raster.colorAt(2, px, py));
         const float d = frame.fog.mode != FogMode::None ? eyeDepth(frame, line.raster.oneOverW.at(px, py), z) : 0.0f;
         image.at(px, py) = encodePixel(fogged(frame.fog, color, d));

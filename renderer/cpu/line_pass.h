@@ -31,7 +31,8 @@ void addPoint(const ClipVertex& v, const WindowVertex& window, const FrameInputs
 void setUpLines(const Scene& scene, const FrameInputs& frame, const PassVertices& vertices, int colorVarying, std::vector<DrawnLine>& out);
 
 // Draws the lines that cover pixels of rectangle `r` over `image`, against
-// the z-buffer `depth` (pixel (r.x0, r.y0) first, `depthStride` per row).
+// the z-buffer `depth` (pixel (r.x0, r.y0) first, `depthStride` per row);
+// null: the painter's algorithm, no depth test, each fragment over the last.
 void drawLines(const FrameInputs& frame, const std::vector<DrawnLine>& lines, const TileRect& r, float* depth, int depthStride, Image& image);
 
 }  // namespace facet::cpu

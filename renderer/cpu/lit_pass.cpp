@@ -4,9 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include <glm/geometric.hpp>
+
+#include "common/error.h"
 
 #include "cpu/alpha_mask.h"
 #include "cpu/binning.h"
@@ -20,6 +23,7 @@
 #include "cpu/phong_batch.h"
 #include "cpu/physically_based.h"
 #include "cpu/procedural.h"
+#include "cpu/scanline_zbuffer.h"
 #include "cpu/srgb_table.h"
 #include "cpu/texture_sampling.h"
 #include "cpu/tile_raster.h"
@@ -160,10 +164,43 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
   batch.flush();
 }
 
+// hsr = scanline: the tile's z-buffer and winners from the frame's visible
+// polygons (scanline_zbuffer.h), each polygon set up once, in submission order.
+void gatherVisible(const std::vector<WorkerBins>& workers, const PolygonNumbering& numbering, const PassVertices& v,
+                   const std::vector<std::uint32_t>& visible, int width, const TileRect& r, WorkerBins::TileScratch& scratch) {
+  const auto pixel = [&](int px, int py) { return visible[static_cast<std::size_t>(py) * static_cast<std::size_t>(width) + static_cast<std::size_t>(px)]; };
+  std::vector<std::uint32_t> kept;
+  for (int py = r.y0; py <= r.y1; ++py)
+    for (int px = r.x0; px <= r.x1; ++px)
+      if (pixel(px, py) != kNoPolygon && (kept.empty() || kept.back() != pixel(px, py))) kept.push_back(pixel(px, py));
+  std::sort(kept.begin(), kept.end());
+  kept.erase(std::unique(kept.begin(), kept.end()), kept.end());
+  for (const std::uint32_t polygon : kept) {
+    const std::size_t w = numbering.workerOf(polygon);
+    const auto index = static_cast<std::uint32_t>(polygon - numbering.first[w]);
+    const BinnedTriangle& t = workers[w].triangles[index];
+    InterpolationVertex corner[3];
+    for (int k = 0; k < 3; ++k) {
+      const float* p = workers[w].vertex(v, t.vertex[k]);
+      corner[k] = {p[0], p[1], p[2], p[3], p + 4};
+    }
+    scratch.triangles.push_back({Interpolation(corner[0], corner[1], corner[2]), &workers[w], index});
+  }
+  for (int py = r.y0; py <= r.y1; ++py)
+    for (int px = r.x0; px <= r.x1; ++px) {
+      const int k = (py - r.y0) * kTileSize + (px - r.x0);
+      const std::uint32_t polygon = pixel(px, py);
+      if (polygon == kNoPolygon) continue;  // cleared: no triangle, depth 1
+      const auto id = static_cast<std::uint32_t>(std::lower_bound(kept.begin(), kept.end(), polygon) - kept.begin());
+      scratch.id[k] = id;
+      scratch.depth[k] = scratch.triangles[id].interpolation.depthAt(px, py);  // what lines and points test against
+    }
+}
+
 }  // namespace
 
 void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, Image& image,
-             std::vector<std::uint32_t>* triangleIds) {
+             std::vector<std::uint32_t>* triangleIds, std::vector<std::uint32_t>* fragmentCounts) {
   const VaryingLayout layout = varyingLayout(frame.shading);
   const float halfWidth = 0.5f * static_cast<float>(frame.width), halfHeight = 0.5f * static_cast<float>(frame.height);
   PassVertices& v = buffers.vertices;
@@ -227,13 +264,22 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
   };
   const FlatIllumination flat = flatLighting;  // refers to the lambda above, which outlives the pass
   const TileGrid grid = TileGrid::over(frame.width, frame.height);
+  // The painter's algorithm bins (and so draws) the triangles in its order, back to front.
+  const bool painter = frame.hsr == HiddenSurface::Painter;
+  if (painter && frame.paintersOrder.size() != v.firstTriangle.back())
+    throw Error("hsr painter: the frame's order has " + std::to_string(frame.paintersOrder.size()) + " triangles, the scene " +
+                std::to_string(v.firstTriangle.back()));
   forEachRange(pool, v.firstTriangle.back(), [&](std::size_t begin, std::size_t end, int w) {
     binTriangles(scene, frame, v, grid, true, begin, end, buffers.workers[static_cast<std::size_t>(w)],
-                 frame.shading == ShadingMode::Flat ? &flat : nullptr);
+                 frame.shading == ShadingMode::Flat ? &flat : nullptr, painter ? frame.paintersOrder.data() : nullptr);
   });
+  // The scanline z-buffer decides every pixel's polygon first, a row at a time; the tiles then shade what it kept.
+  const bool scanline = frame.hsr == HiddenSurface::Scanline;
+  const PolygonNumbering numbering(buffers.workers);
+  if (scanline && !fragmentCounts) scanlineVisibility(pool, buffers.workers, v, scene, frame, buffers.visible);
 
   // Segments and points, drawn after every triangle (not in the triangle-id pass).
-  if (triangleIds) buffers.lines.clear();
+  if (triangleIds || fragmentCounts) buffers.lines.clear();
   else setUpLines(scene, frame, v, layout.color, buffers.lines);
 
   // Tiles: visibility (z-buffer, triangle order), then shading of what is visible, then lines and points.
@@ -244,11 +290,20 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
   for (WorkerBins& bins : buffers.workers) bins.tile.triangles.reserve(fullestTile);
   forEachTile(pool, grid, [&](int worker, int tile, const TileRect& r) {
     if (trianglesInTile(buffers.workers, tile) == 0 && buffers.lines.empty()) return;
+    if (fragmentCounts) {  // depth complexity: every fragment, before the tests; each pixel is in one tile
+      forEachTriangleInTile(buffers.workers, v, tile, r, [&](const WorkerBins&, std::uint32_t, const BinnedTriangle& t, const InterpolationVertex (&)[3], const PixelBox& box) {
+        rasterizeBlocks(t.snapped, box, [&](int px, int py) {
+          ++(*fragmentCounts)[static_cast<std::size_t>(py) * static_cast<std::size_t>(frame.width) + static_cast<std::size_t>(px)];
+        });
+      });
+      return;
+    }
     WorkerBins::TileScratch& scratch = buffers.workers[static_cast<std::size_t>(worker)].tile;
     std::fill(std::begin(scratch.depth), std::end(scratch.depth), 1.0f);
     std::fill(std::begin(scratch.id), std::end(scratch.id), kNoTriangle);
     scratch.triangles.clear();  // keeps its capacity: no allocation once the sizes settle
-    forEachTriangleInTile(buffers.workers, v, tile, r,
+    if (scanline) gatherVisible(buffers.workers, numbering, v, buffers.visible, frame.width, r, scratch);
+    else forEachTriangleInTile(buffers.workers, v, tile, r,
                           [&](const WorkerBins& bins, std::uint32_t index, const BinnedTriangle& t, const InterpolationVertex (&vertices)[3],
                               const PixelBox& box) {
                             // Set up once: the z-buffer reads its depth, shading its weights if it wins a pixel.
@@ -257,6 +312,16 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
                             Interpolation& interpolation = scratch.triangles.back().interpolation;
                             const FrameInstance& instance = frame.instances[t.instance];
                             const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
+                            if (painter) {  // no depth buffer: the last triangle drawn over a pixel keeps it
+                              const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
+                              const Texture* texture = material.masked ? baseColorTextureOf(scene, frame, material, mesh) : nullptr;
+                              if (material.masked) interpolation.setUpVaryings(layout.model);
+                              rasterizeBlocks(t.snapped, box, [&](int px, int py) {
+                                if (material.masked && !keepsFragment(material, texture, !mesh.colors.empty(), layout, interpolation, px, py)) return;
+                                scratch.id[(py - r.y0) * kTileSize + (px - r.x0)] = id;
+                              });
+                              return;
+                            }
                             if (!material.masked) {
                               rasterizeBlocks(t.snapped, box, [&](int px, int py) {
                                 const float z = interpolation.depthAt(px, py);
@@ -296,7 +361,7 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
       case ShadingMode::Gouraud: shadeTile<ShadingMode::Gouraud>(scene, frame, maps, scratch, r.x0, r.y0, r.x1, r.y1, image); break;
       default: shadeTile<ShadingMode::Flat>(scene, frame, maps, scratch, r.x0, r.y0, r.x1, r.y1, image); break;
     }
-    drawLines(frame, buffers.lines, r, scratch.depth, kTileSize, image);
+    drawLines(frame, buffers.lines, r, painter ? nullptr : scratch.depth, kTileSize, image);  // the painter has no depth to test
   });
 }
 

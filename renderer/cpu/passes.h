@@ -41,7 +41,10 @@ void shadowPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, con
 // With triangleIds (width × height, bottom row first), the pass writes
 // which triangle each pixel keeps instead (Renderer::visibleTriangles) and
 // leaves the image alone.
+// With fragmentCounts (width × height, bottom row first, zeroed by the
+// caller), the pass counts the fragments each pixel receives before any
+// test (Renderer::fragmentCounts) and does nothing else.
 void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, Image& image,
-             std::vector<std::uint32_t>* triangleIds = nullptr);
+             std::vector<std::uint32_t>* triangleIds = nullptr, std::vector<std::uint32_t>* fragmentCounts = nullptr);
 
 }  // namespace facet::cpu

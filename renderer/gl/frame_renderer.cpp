@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <chrono>
 #include <iterator>
 #include <cstdio>
@@ -33,6 +34,18 @@ constexpr GLuint kMeshTexcoordsBinding = 2;
 constexpr GLuint kMeshColorsBinding = 3;
 constexpr GLuint kMeshTexcoords1Binding = 4;
 constexpr GLint kMeshStorageBuffers = 5;
+constexpr GLuint kPaintedBinding = 5;         // storage buffer of triangle_id.frag: the painter's order
+
+// The scanline z-buffer is the CPU backend's alone.
+// The byte offset of painter's position `first` in an index buffer of three GLuint per triangle.
+const void* indexOffset(GLsizei first) {
+  return reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first) * 3 * sizeof(GLuint));
+}
+
+void refuseScanline(const FrameInputs& frame) {
+  if (frame.hsr == HiddenSurface::Scanline)
+    throw Error("settings key 'hsr': scanline is the CPU backend's scanline z-buffer (--backend cpu); OpenGL draws zbuffer or painter");
+}
 
 // The vertex and fragment shader of each shading mode, indexed by ShadingMode.
 constexpr std::array<std::string_view, 2> kLitStages[] = {
@@ -72,7 +85,9 @@ void GlFrameRenderer::uploadScene(const Scene& scene) {
   checkError("scene upload");
 }
 
-std::vector<PassTiming> GlFrameRenderer::drawFrame(const FrameInputs& frame) {
+std::vector<PassTiming> GlFrameRenderer::drawFrame(const Scene& scene, const FrameInputs& frame) {
+  refuseScanline(frame);
+  if (frame.hsr == HiddenSurface::Painter) painters_.prepare(gl_, scene, frame);
   std::vector<PassTiming> timings;
   gl_.glFinish();
   Clock::time_point start = Clock::now();
@@ -122,11 +137,15 @@ Image GlFrameRenderer::readImage() const {
   return image;
 }
 
-std::vector<std::uint32_t> GlFrameRenderer::drawTriangleIds(const FrameInputs& frame) {
+std::vector<std::uint32_t> GlFrameRenderer::drawTriangleIds(const Scene& scene, const FrameInputs& frame) {
+  refuseScanline(frame);
+  const bool painter = frame.hsr == HiddenSurface::Painter;
+  if (painter) painters_.prepare(gl_, scene, frame);
   const auto idVariant = [&](const FrameInstance& instance) { return maskVariant(frame, instance); };
   prepareMaskPrograms(triangleIdPrograms_, frame, {"triangle_id.vert", "triangle_id.frag"}, [&](ShaderProgram program) {
     const auto at = [&](const char* name) { return uniformLocation(gl_, program, name); };
-    return TriangleIdProgram{.clipFromModel = at("clipFromModel"), .firstTriangle = at("firstTriangle"), .alpha = alphaUniforms(program),
+    return TriangleIdProgram{.clipFromModel = at("clipFromModel"), .firstTriangle = at("firstTriangle"), .painted = at("painted"),
+                             .alpha = alphaUniforms(program),
                              .program = std::move(program)};
   });
   idTarget_.resize(gl_, frame.width, frame.height);
@@ -141,12 +160,14 @@ std::vector<std::uint32_t> GlFrameRenderer::drawTriangleIds(const FrameInputs& f
   gl_.glClearNamedFramebufferuiv(idTarget_.framebuffer(), GL_COLOR, 0, &background);
   gl_.glDepthMask(GL_TRUE);
   gl_.glClearNamedFramebufferfv(idTarget_.framebuffer(), GL_DEPTH, 0, &farDepth);
-  gl_.glEnable(GL_DEPTH_TEST);
+  if (painter) gl_.glDisable(GL_DEPTH_TEST);  // no depth buffer: the last triangle drawn keeps the pixel
+  else gl_.glEnable(GL_DEPTH_TEST);
   gl_.glDepthFunc(GL_LESS);
   gl_.glCullFace(GL_BACK);
   gl_.glBindBufferBase(GL_UNIFORM_BUFFER, kSrgbBlockBinding, srgbUniforms_.id());
-  GLuint first = 0;
-  for (const FrameInstance& instance : frame.instances) {
+  gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPaintedBinding, painter ? painters_.triangles() : srgbUniforms_.id());
+  // One draw: the instance's triangles [first, first + count) of its mesh, or of the painter's index buffer.
+  const auto draw = [&](const FrameInstance& instance, GLuint first, GLsizei count, const PainterRun* run) {
     const MeshBuffers& mesh = scene_.mesh(instance.mesh);
     const DrawVariant variant = idVariant(instance);
     const TriangleIdProgram& id = triangleIdPrograms_.at(variant.index());
@@ -155,13 +176,25 @@ std::vector<std::uint32_t> GlFrameRenderer::drawTriangleIds(const FrameInputs& f
     setCulling(instance.cullBackFaces);
     gl_.glProgramUniformMatrix4fv(program, id.clipFromModel, 1, GL_FALSE, glm::value_ptr(instance.clipFromModel));
     gl_.glProgramUniform1ui(program, id.firstTriangle, first);
+    gl_.glProgramUniform1i(program, id.painted, run ? 1 : 0);
     if (variant.masked)
       setBaseColorUniforms(program, id.alpha, frame.materials[static_cast<std::size_t>(instance.material)], variant.textured);
-    if (mesh.indexCount > 0) {
-      gl_.glBindVertexArray(mesh.vertexArray.id());
-      gl_.glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+    if (count == 0) return;
+    gl_.glBindVertexArray(mesh.vertexArray.id());
+    if (run) gl_.glVertexArrayElementBuffer(mesh.vertexArray.id(), painters_.indices());
+    gl_.glDrawElements(GL_TRIANGLES, 3 * count, GL_UNSIGNED_INT, run ? indexOffset(run->first) : nullptr);
+    if (run) gl_.glVertexArrayElementBuffer(mesh.vertexArray.id(), mesh.indices.id());
+  };
+  if (painter) {
+    for (const PainterRun& run : painters_.runs())
+      draw(frame.instances[run.instance], static_cast<GLuint>(run.first), run.count, &run);
+  } else {
+    GLuint first = 0;
+    for (const FrameInstance& instance : frame.instances) {
+      const GLsizei count = scene_.mesh(instance.mesh).indexCount / 3;
+      draw(instance, first, count, nullptr);
+      first += static_cast<GLuint>(count);
     }
-    first += static_cast<GLuint>(mesh.indexCount / 3);
   }
   std::vector<std::uint32_t> ids(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height));
   gl_.glBindFramebuffer(GL_READ_FRAMEBUFFER, idTarget_.framebuffer());
@@ -170,6 +203,47 @@ std::vector<std::uint32_t> GlFrameRenderer::drawTriangleIds(const FrameInputs& f
   gl_.glReadPixels(0, 0, frame.width, frame.height, GL_RED_INTEGER, GL_UNSIGNED_INT, ids.data());
   checkError("the triangle id pass");
   return ids;
+}
+
+std::vector<std::uint32_t> GlFrameRenderer::drawFragmentCounts(const FrameInputs& frame) {
+  if (!fragmentCountProgram_) {
+    ShaderProgram program = buildProgram(gl_, {"triangle_id.vert", "fragment_count.frag"});
+    const GLint clipFromModel = uniformLocation(gl_, program, "clipFromModel");
+    fragmentCountProgram_.emplace(FragmentCountProgram{clipFromModel, std::move(program)});
+  }
+  countTarget_.resize(gl_, frame.width, frame.height);
+  gl_.glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  gl_.glFrontFace(GL_CCW);
+  for (GLenum capability : {GL_DEPTH_TEST, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_DITHER, GL_FRAMEBUFFER_SRGB, GL_POLYGON_OFFSET_FILL})
+    gl_.glDisable(capability);
+  gl_.glEnable(GL_BLEND);  // each fragment adds its 1
+  gl_.glBlendEquation(GL_FUNC_ADD);
+  gl_.glBlendFunc(GL_ONE, GL_ONE);
+  gl_.glBindFramebuffer(GL_FRAMEBUFFER, countTarget_.framebuffer());
+  gl_.glViewport(0, 0, frame.width, frame.height);
+  const float zero = 0.0f;
+  gl_.glClearNamedFramebufferfv(countTarget_.framebuffer(), GL_COLOR, 0, &zero);
+  gl_.glCullFace(GL_BACK);
+  const GLuint program = fragmentCountProgram_->program.id();
+  gl_.glUseProgram(program);
+  for (const FrameInstance& instance : frame.instances) {
+    const MeshBuffers& mesh = scene_.mesh(instance.mesh);
+    if (mesh.indexCount == 0) continue;
+    setCulling(instance.cullBackFaces);
+    gl_.glProgramUniformMatrix4fv(program, fragmentCountProgram_->clipFromModel, 1, GL_FALSE, glm::value_ptr(instance.clipFromModel));
+    gl_.glBindVertexArray(mesh.vertexArray.id());
+    gl_.glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+  }
+  gl_.glDisable(GL_BLEND);
+  std::vector<float> counts(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height));
+  gl_.glBindFramebuffer(GL_READ_FRAMEBUFFER, countTarget_.framebuffer());
+  gl_.glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  gl_.glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  gl_.glReadPixels(0, 0, frame.width, frame.height, GL_RED, GL_FLOAT, counts.data());
+  checkError("the fragment count pass");
+  std::vector<std::uint32_t> out(counts.size());
+  for (std::size_t i = 0; i < counts.size(); ++i) out[i] = static_cast<std::uint32_t>(counts[i]);
+  return out;
 }
 
 DrawVariant GlFrameRenderer::drawVariant(const FrameInputs& frame, const FrameInstance& instance) const {
@@ -315,21 +389,28 @@ void GlFrameRenderer::litPass(const FrameInputs& frame) {
   gl_.glBindVertexArray(emptyVertexArray_.id());
   gl_.glDrawArrays(GL_TRIANGLES, 0, 3);
 
-  gl_.glEnable(GL_DEPTH_TEST);
+  // The painter's algorithm: no depth test and no depth writes, triangles in its order (PIPELINE.md, section 6).
+  const bool painter = frame.hsr == HiddenSurface::Painter;
+  if (painter) gl_.glDisable(GL_DEPTH_TEST);
+  else gl_.glEnable(GL_DEPTH_TEST);
   gl_.glDepthFunc(GL_LESS);
   gl_.glCullFace(GL_BACK);
   gl_.glBindTextureUnit(kShadowMapsUnit, frame.shadowLayerCount > 0 ? shadowMaps_.texture() : 0);
   const LitProgram* programs[DrawVariant::kCount];
   for (int v = 0; v < DrawVariant::kCount; ++v) programs[v] = litProgram(frame, DrawVariant::of(v));
   GLuint current = 0;
-  for (const FrameInstance& instance : frame.instances) {
-    if (scene_.mesh(instance.mesh).indexCount == 0) continue;
+  const auto draw = [&](const FrameInstance& instance, const PainterRun* run) {
+    if (scene_.mesh(instance.mesh).indexCount == 0) return;
     const LitProgram* lit = programs[drawVariant(frame, instance).index()];
     if (!lit) throw Error("OpenGL backend: no lit program was prepared for this frame");
     if (lit->program.id() != current) gl_.glUseProgram(current = lit->program.id());
     setCulling(instance.cullBackFaces);
-    drawInstance(*lit, frame, instance, frame.shading == ShadingMode::Flat);
-  }
+    drawInstance(*lit, frame, instance, frame.shading == ShadingMode::Flat, run);
+  };
+  if (painter)
+    for (const PainterRun& run : painters_.runs()) draw(frame.instances[run.instance], &run);
+  else
+    for (const FrameInstance& instance : frame.instances) draw(instance, nullptr);
   drawLines(frame);
 }
 
@@ -343,6 +424,7 @@ void GlFrameRenderer::drawLines(const FrameInputs& frame) {
     if (!bound) {
       gl_.glUseProgram(program);
       setCulling(false);  // a segment or point has no face
+      if (frame.hsr == HiddenSurface::Painter) gl_.glDisable(GL_DEPTH_TEST);  // over what was painted, in order
       bound = true;
     }
     gl_.glProgramUniformMatrix4fv(program, lineProgram_->clipFromModel, 1, GL_FALSE, glm::value_ptr(instance.clipFromModel));
@@ -365,7 +447,7 @@ const GlFrameRenderer::LitProgram* GlFrameRenderer::litProgram(const FrameInputs
   return found == litPrograms_.end() ? nullptr : &found->second;
 }
 
-void GlFrameRenderer::drawInstance(const LitProgram& lit, const FrameInputs& frame, const FrameInstance& instance, bool flat) {
+void GlFrameRenderer::drawInstance(const LitProgram& lit, const FrameInputs& frame, const FrameInstance& instance, bool flat, const PainterRun* run) {
   const MeshBuffers& mesh = scene_.mesh(instance.mesh);
   if (mesh.indexCount == 0) return;
   const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
@@ -388,7 +470,7 @@ void GlFrameRenderer::drawInstance(const LitProgram& lit, const FrameInputs& fra
   setMapUniforms(lit, material, variant);
 
   if (flat) {
-    gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshIndicesBinding, mesh.indices.id());
+    gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshIndicesBinding, run ? painters_.indices() : mesh.indices.id());
     gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshPositionsBinding, mesh.positions.id());
     // Read only when textured (base colour or emissive); something valid is bound either way.
     const bool mapped = textured || variant.emissiveMap;
@@ -396,10 +478,17 @@ void GlFrameRenderer::drawInstance(const LitProgram& lit, const FrameInputs& fra
     gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshTexcoords1Binding, mapped && mesh.texcoords1 ? mesh.texcoords1.id() : mesh.positions.id());
     gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshColorsBinding, variant.colored ? mesh.colors.id() : mesh.positions.id());
     gl_.glBindVertexArray(emptyVertexArray_.id());
-    gl_.glDrawArrays(GL_TRIANGLES, 0, mesh.indexCount);
+    if (run) gl_.glDrawArrays(GL_TRIANGLES, 3 * run->first, 3 * run->count);  // gl_VertexID counts from 3·first
+    else gl_.glDrawArrays(GL_TRIANGLES, 0, mesh.indexCount);
   } else {
     gl_.glBindVertexArray(mesh.vertexArray.id());
-    gl_.glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+    if (run) {
+      gl_.glVertexArrayElementBuffer(mesh.vertexArray.id(), painters_.indices());
+      gl_.glDrawElements(GL_TRIANGLES, 3 * run->count, GL_UNSIGNED_INT, indexOffset(run->first));
+      gl_.glVertexArrayElementBuffer(mesh.vertexArray.id(), mesh.indices.id());
+    } else {
+      gl_.glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+    }
   }
 }
 

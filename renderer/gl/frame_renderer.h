@@ -15,6 +15,7 @@
 #include "gl/frame_block.h"
 #include "gl/gl_functions.h"
 #include "gl/render_target.h"
+#include "gl/painters_draws.h"
 #include "gl/scene_buffers.h"
 #include "gl/shader_program.h"
 #include "gl/shader_variant.h"
@@ -39,14 +40,20 @@ class GlFrameRenderer {
   // each timing is that pass's. The frame must have passed checkFrame
   // (pipeline/frame_checks.h) against the uploaded scene. Throws
   // facet::Error (driver limits, framebuffer, shaders, a GL error).
-  std::vector<PassTiming> drawFrame(const FrameInputs& frame);
+  // `scene` is the uploaded one (the painter's algorithm reads its indices).
+  std::vector<PassTiming> drawFrame(const Scene& scene, const FrameInputs& frame);
 
   // The last frame's RGBA8 pixels, bottom row first as glReadPixels gives them.
   Image readImage() const;
 
   // Which triangle each pixel keeps (Renderer::visibleTriangles): the lit
   // pass's geometry, culling and z-buffer, writing ids instead of colours.
-  std::vector<std::uint32_t> drawTriangleIds(const FrameInputs& frame);
+  std::vector<std::uint32_t> drawTriangleIds(const Scene& scene, const FrameInputs& frame);
+
+  // The depth complexity (Renderer::fragmentCounts): every triangle the lit
+  // pass draws, culled alike, with no depth test, each fragment adding 1 to
+  // a 32-bit float (exact to 2^24).
+  std::vector<std::uint32_t> drawFragmentCounts(const FrameInputs& frame);
 
   // The framebuffer drawFrame draws into (colour attachment 0), for a viewer to blit from.
   GLuint framebuffer() const { return target_.framebuffer(); }
@@ -96,7 +103,8 @@ class GlFrameRenderer {
   void setCulling(bool cull);
   void shadowPass(const FrameInputs& frame);
   void litPass(const FrameInputs& frame);
-  void drawInstance(const LitProgram& lit, const FrameInputs& frame, const FrameInstance& instance, bool flat);
+  // The instance's triangles, or those of one painter's run (null: all, in the mesh's order).
+  void drawInstance(const LitProgram& lit, const FrameInputs& frame, const FrameInstance& instance, bool flat, const PainterRun* run = nullptr);
   void drawLines(const FrameInputs& frame);
   void checkError(const char* where) const;
 
@@ -115,19 +123,26 @@ class GlFrameRenderer {
   std::optional<LineProgram> lineProgram_;  // segments and points (line.vert, line.frag)
   FogMode lineFog_ = FogMode::None;          // the fog mode lineProgram_ is built for
   struct TriangleIdProgram {
-    GLint clipFromModel, firstTriangle;
+    GLint clipFromModel, firstTriangle, painted;
     AlphaUniforms alpha;
     ShaderProgram program;
   };
   std::map<int, TriangleIdProgram> triangleIdPrograms_;  // by DrawVariant::index(); only masked draws differ
+  struct FragmentCountProgram {
+    GLint clipFromModel;
+    ShaderProgram program;
+  };
+  std::optional<FragmentCountProgram> fragmentCountProgram_;  // triangle_id.vert, fragment_count.frag
   GlObject frameUniforms_;     // the Frame block (FrameBlock), binding 0
   GlObject srgbUniforms_;      // the SrgbTables block (SrgbBlock), binding 1, written once
   GlObject splitSumUniforms_;  // the SplitSumTable block (SplitSumBlock), binding 2, written at the first pbr frame
   GlObject emptyVertexArray_;  // for draws that read no attributes (background, flat shading)
   SceneBuffers scene_;
+  PaintersDraws painters_;  // hsr = painter: the frame's triangles back to front
   ShadowMapArray shadowMaps_;
   RenderTarget target_;
   RenderTarget idTarget_{GL_R32UI};
+  RenderTarget countTarget_{GL_R32F};
 };
 
 }  // namespace facet::gl

@@ -19,6 +19,8 @@ namespace facet::gl {
   X(PFNGLBINDFRAMEBUFFERPROC, glBindFramebuffer)                              \
   X(PFNGLBINDTEXTUREUNITPROC, glBindTextureUnit)                              \
   X(PFNGLBINDVERTEXARRAYPROC, glBindVertexArray)                              \
+  X(PFNGLBLENDEQUATIONPROC, glBlendEquation)                                  \
+  X(PFNGLBLENDFUNCPROC, glBlendFunc)                                          \
   X(PFNGLCHECKNAMEDFRAMEBUFFERSTATUSPROC, glCheckNamedFramebufferStatus)      \
   X(PFNGLCLEARNAMEDFRAMEBUFFERFVPROC, glClearNamedFramebufferfv)              \
   X(PFNGLCLEARNAMEDFRAMEBUFFERUIVPROC, glClearNamedFramebufferuiv)            \

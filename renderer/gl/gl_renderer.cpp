@@ -23,7 +23,7 @@ class GlFrames {
     RenderResult result;
     Clock::time_point start = Clock::now();
     if (upload(scene)) result.timings.push_back({"scene upload", millisecondsSince(start)});
-    for (PassTiming& timing : frameRenderer_.drawFrame(frame)) result.timings.push_back(std::move(timing));
+    for (PassTiming& timing : frameRenderer_.drawFrame(scene, frame)) result.timings.push_back(std::move(timing));
     start = Clock::now();
     result.image = frameRenderer_.readImage();
     result.timings.push_back({"read-back", millisecondsSince(start)});
@@ -33,7 +33,13 @@ class GlFrames {
   std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) {
     check_(scene, frame);
     upload(scene);
-    return frameRenderer_.drawTriangleIds(frame);
+    return frameRenderer_.drawTriangleIds(scene, frame);
+  }
+
+  std::vector<std::uint32_t> fragmentCounts(const Scene& scene, const FrameInputs& frame) {
+    check_(scene, frame);
+    upload(scene);
+    return frameRenderer_.drawFragmentCounts(frame);
   }
 
   gl::GlFrameRenderer& frameRenderer() { return frameRenderer_; }
@@ -82,6 +88,11 @@ class HeadlessGlRenderer final : public Renderer {
     return frames_->visibleTriangles(scene, frame);
   }
 
+  std::vector<std::uint32_t> fragmentCounts(const Scene& scene, const FrameInputs& frame) override {
+    context_->makeCurrent();
+    return frames_->fragmentCounts(scene, frame);
+  }
+
  private:
   std::unique_ptr<gl::HeadlessContext> context_;
   std::unique_ptr<GlFrames> frames_;
@@ -96,6 +107,7 @@ class CurrentContextGlRenderer final : public WindowGlRenderer {
   std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) override {
     return frames_.visibleTriangles(scene, frame);
   }
+  std::vector<std::uint32_t> fragmentCounts(const Scene& scene, const FrameInputs& frame) override { return frames_.fragmentCounts(scene, frame); }
   unsigned framebuffer() const override { return frames_.frameRenderer().framebuffer(); }
   const std::string& rendererName() const override { return frames_.frameRenderer().rendererName(); }
 

@@ -58,7 +58,9 @@ void RenderTarget::resize(const GlFunctions& gl, int width, int height) {
   gl.glNamedFramebufferRenderbuffer(framebuffer_.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
   gl.glNamedFramebufferDrawBuffer(framebuffer_.id(), GL_COLOR_ATTACHMENT0);
   gl.glNamedFramebufferReadBuffer(framebuffer_.id(), GL_COLOR_ATTACHMENT0);
-  checkFramebufferComplete(gl, framebuffer_.id(), format == GL_RGBA8 ? "lit pass (RGBA8 + DEPTH_COMPONENT32F)" : "triangle id (R32UI + DEPTH_COMPONENT32F)");
+  checkFramebufferComplete(gl, framebuffer_.id(), format == GL_RGBA8   ? "lit pass (RGBA8 + DEPTH_COMPONENT32F)"
+                                              : format == GL_R32UI ? "triangle id (R32UI + DEPTH_COMPONENT32F)"
+                                                                   : "fragment count (R32F + DEPTH_COMPONENT32F)");
   width_ = width;
   height_ = height;
 }

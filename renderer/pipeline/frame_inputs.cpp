@@ -14,6 +14,7 @@
 #include "pipeline/displacement.h"
 #include "pipeline/frame_checks.h"
 #include "pipeline/material_coefficients.h"
+#include "pipeline/painters_order.h"
 #include "pipeline/texture_filter.h"
 #include "pipeline/view_setup.h"
 
@@ -138,6 +139,8 @@ FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings)
   f.proceduralScale = settings.material.proceduralScale;
   f.specular = settings.specular;
   f.cullBackFaces = settings.cullBackFaces;
+  f.hsr = settings.hsr;
+  if (f.hsr == HiddenSurface::Painter) f.paintersOrder = paintersOrder(scene, f);
   f.shadows = settings.shadows;
   f.background = settings.background;
   checkFrame(scene, f);

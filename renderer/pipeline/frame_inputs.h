@@ -5,6 +5,7 @@
 // values; they never build a camera or light matrix themselves.
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -62,6 +63,11 @@ struct FrameInputs {
   ShadingMode shading = ShadingMode::Phong;
   SpecularModel specular = SpecularModel::BlinnPhong;
   bool cullBackFaces = true;      // the settings' switch; each instance says whether it is culled
+  HiddenSurface hsr = HiddenSurface::ZBuffer;
+  // hsr = painter: the frame's triangles (indices in the frame's triangle
+  // list, instances in order) in the order they are drawn, back to front
+  // (pipeline/painters_order.h); empty otherwise.
+  std::vector<std::uint32_t> paintersOrder;
   ShadowSettings shadows;
   int shadowLayerCount = 0;       // S×S depth maps over all lights: one per face
   glm::vec3 background{0.0f};    // linear RGB

@@ -19,6 +19,7 @@ struct PassTiming {
 struct RenderResult {
   Image image;                      // RGBA8, bottom row first, sRGB-encoded
   std::vector<PassTiming> timings;  // in the order the passes ran
+  std::vector<std::string> notes;   // figures of the frame a backend reports (the scanline z-buffer's depth memory)
 };
 
 class Renderer {
@@ -35,6 +36,12 @@ class Renderer {
   // the frame (instances in FrameInputs order, each mesh's triangles in
   // order; the pieces of a clipped triangle keep its index).
   virtual std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) = 0;
+
+  // The frame's depth complexity (renderer/PIPELINE.md, section 6, "Depth
+  // complexity"): how many triangle fragments each pixel received from the
+  // rasterizer, before any depth or alpha test, after clipping and culling.
+  // width × height counts, bottom row first.
+  virtual std::vector<std::uint32_t> fragmentCounts(const Scene& scene, const FrameInputs& frame) = 0;
 };
 
 }  // namespace facet

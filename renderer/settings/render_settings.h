@@ -141,6 +141,13 @@ struct FogSettings {
   float density = 0.1f;                // exponential and exponential2, per world unit
 };
 
+// Hidden-surface removal (renderer/PIPELINE.md, section 6, "Hidden-surface
+// removal"): the z-buffer; the painter's algorithm (triangles sorted by their
+// farthest eye depth, drawn back to front with no depth buffer); or the
+// scanline z-buffer (CPU backend: one row of depth at a time, the z-buffer's image).
+enum class HiddenSurface { ZBuffer, Painter, Scanline, Count };
+inline constexpr std::array<std::string_view, static_cast<int>(HiddenSurface::Count)> kHiddenSurfaceNames = {"zbuffer", "painter", "scanline"};
+
 struct RenderSettings {
   int width = 800;   // image size in pixels
   int height = 600;
@@ -151,6 +158,7 @@ struct RenderSettings {
   ShadingMode shading = ShadingMode::Phong;
   SpecularModel specular = SpecularModel::BlinnPhong;
   bool cullBackFaces = true;
+  HiddenSurface hsr = HiddenSurface::ZBuffer;
   MaterialOverrides material;
   ShadowSettings shadows;
   TextureSettings textures;

@@ -57,6 +57,10 @@ void visitSettings(Visitor& v, RenderSettings& s) {
   v.choice({"shading", "flat, gouraud, phong or pbr (glTF's metallic-roughness BRDF)"}, s.shading, kShadingModeNames);
   v.choice({"specular", "phong (R.V) or blinn-phong (N.H)"}, s.specular, kSpecularModelNames);
   v.field({"cullBackFaces", "drop triangles with signed window area <= 0; off: two-sided lighting"}, s.cullBackFaces);
+  v.choice({"hsr",
+            "hidden-surface removal: zbuffer, painter (triangles sorted by farthest eye depth, drawn back to front, no depth buffer) or "
+            "scanline (the CPU backend's scanline z-buffer)"},
+           s.hsr, kHiddenSurfaceNames);
   v.group("material", [&] {
     MaterialOverrides& m = s.material;
     v.field({"ka", "k_a for every material (null: derived from glTF)", 0, 1}, m.ka);

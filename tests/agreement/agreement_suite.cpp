@@ -4,7 +4,10 @@
 // the CPU reference. The two must keep the same triangle at every pixel
 // (Renderer::visibleTriangles) and write the same bytes
 // (renderer/compare/backend_agreement.h), and both must equal the committed
-// CPU golden. A case may allow a measured difference only by naming it:
+// CPU golden. Every z-buffer case is also drawn by the CPU's scanline
+// z-buffer (hsr = scanline), which must keep the same triangle and write the
+// same bytes as the CPU's z-buffer, and the two backends' depth complexity
+// (Renderer::fragmentCounts) must be equal at every pixel. A case may allow a measured difference only by naming it:
 //   "allow": {"maxDifference": LEVELS, "maxPixels": N, "reason": "why"}
 //
 //   facet_agreement --cases DIR --golden DIR --out DIR [--update-goldens] [--context osmesa|egl]
@@ -172,9 +175,10 @@ int main(int argc, char** argv) {
     auto gl = makeGlRenderer(context == "egl" ? GlContextKind::Egl : GlContextKind::OsMesa);
     auto cpu = makeCpuRenderer(0);
     std::printf("OpenGL: %s\nCPU:    %s\n\n", gl->description().c_str(), cpu->description().c_str());
-    std::printf("%-34s %9s %9s %9s %5s %7s %9s  %s\n", "case", "size", "triangle", "differing", "max", "golden", "ms gl/cpu", "verdict");
+    std::printf("%-34s %9s %9s %9s %5s %7s %8s %9s  %s\n", "case", "size", "triangle", "differing", "max", "golden", "scanline", "ms gl/cpu",
+                "verdict");
 
-    int passed = 0, failed = 0, identical = 0, coverageIdentical = 0;
+    int passed = 0, failed = 0, identical = 0, coverageIdentical = 0, scanlineCases = 0, scanlineEqual = 0, countsEqual = 0;
     std::string worstName = "-";
     DiffResult worst;
     std::vector<ReportCase> report;
@@ -220,7 +224,33 @@ int main(int argc, char** argv) {
         goldenVerdict = goldenOk ? "ok" : (cpuVsGolden.diffCase.problem.empty() ? "DIFFERS" : "MISSING");
       }
 
-      const bool ok = mismatches == 0 && covered > 0 && d.status != DiffStatus::Fail && goldenOk;
+      // The scanline z-buffer (CPU) keeps what the z-buffer keeps: the same triangle and the same bytes at every pixel.
+      std::string scanline = "-";
+      bool scanlineOk = true;
+      if (c.settings.hsr == HiddenSurface::ZBuffer) {
+        RenderSettings rows = c.settings;
+        rows.hsr = HiddenSurface::Scanline;
+        const FrameInputs rowFrame = buildFrameInputs(scene, rows);
+        const Image rowImage = cpu->render(scene, rowFrame).image;
+        long unused = 0;
+        long differing = triangleMismatches(cpu->visibleTriangles(scene, rowFrame), cpu->visibleTriangles(scene, frame), unused);
+        for (int y = 0; y < cpuImage.height(); ++y)
+          for (int x = 0; x < cpuImage.width(); ++x) differing += !(rowImage.at(x, y) == cpuImage.at(x, y));
+        scanlineOk = differing == 0;
+        scanline = scanlineOk ? "same" : std::to_string(differing);
+        ++scanlineCases;
+        scanlineEqual += scanlineOk ? 1 : 0;
+      }
+
+      // The depth complexity: the same fragment count at every pixel.
+      long countMismatches = 0;
+      {
+        const auto glCounts = gl->fragmentCounts(scene, frame), cpuCounts = cpu->fragmentCounts(scene, frame);
+        for (std::size_t i = 0; i < glCounts.size(); ++i) countMismatches += glCounts[i] != cpuCounts[i];
+        countsEqual += countMismatches == 0 ? 1 : 0;
+      }
+
+      const bool ok = mismatches == 0 && covered > 0 && d.status != DiffStatus::Fail && goldenOk && scanlineOk && countMismatches == 0;
       (ok ? passed : failed) += 1;
       identical += d.differingPixels == 0 ? 1 : 0;
       coverageIdentical += mismatches == 0 ? 1 : 0;
@@ -231,9 +261,11 @@ int main(int argc, char** argv) {
       const double msGl = std::chrono::duration<double, std::milli>(t1 - t0).count();
       const double msCpu = std::chrono::duration<double, std::milli>(t2 - t1).count();
       const std::string size = std::to_string(frame.width) + "x" + std::to_string(frame.height);
-      std::printf("%-34s %9s %9ld %9lld %5d %7s %4.0f/%-4.0f %s%s\n", c.name.c_str(), size.c_str(), mismatches,
-                  static_cast<long long>(d.differingPixels), d.maxDifference, goldenVerdict.c_str(), msGl, msCpu, ok ? "pass" : "FAIL",
-                  covered == 0 ? " (nothing drawn)" : (c.allow ? " (allowed: " + c.allow->reason + ")" : std::string()).c_str());
+      std::printf("%-34s %9s %9ld %9lld %5d %7s %8s %4.0f/%-4.0f %s%s\n", c.name.c_str(), size.c_str(), mismatches,
+                  static_cast<long long>(d.differingPixels), d.maxDifference, goldenVerdict.c_str(), scanline.c_str(), msGl, msCpu, ok ? "pass" : "FAIL",
+                  covered == 0 ? " (nothing drawn)"
+                  : countMismatches ? (" (fragment counts differ at " + std::to_string(countMismatches) + " pixels)").c_str()
+                                    : (c.allow ? " (allowed: " + c.allow->reason + ")" : std::string()).c_str());
 
       const ComparedFiles pair = compareFiles(c.name, cpuPath, glPath, thresholds);
       report.push_back(reportFolder.writeImages(static_cast<int>(report.size()), pair, thresholds));
@@ -246,6 +278,9 @@ int main(int argc, char** argv) {
 
     std::printf("\ncases: %zu; bit-identical: %d of %zu; same triangle at every pixel: %d of %zu\n", cases.size(), identical, cases.size(),
                 coverageIdentical, cases.size());
+    std::printf("depth complexity: the same fragment count at every pixel in %d of %zu cases\n", countsEqual, cases.size());
+    std::printf("scanline z-buffer (CPU) against the z-buffer: the same triangle and bytes at every pixel in %d of %d cases\n", scanlineEqual,
+                scanlineCases);
     if (worst.differingPixels == 0) {
       std::printf("worst pixel: none differs (max difference 0 levels in every case)\n");
     } else {

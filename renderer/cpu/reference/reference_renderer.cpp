@@ -17,9 +17,11 @@
 #include "cpu/reference/reference_renderer.h"
 
 #include <chrono>
+#include <string>
 #include <functional>
 #include <vector>
 
+#include "common/error.h"
 #include "cpu/alpha_mask.h"
 #include "cpu/bump_mapping.h"
 #include "cpu/clipper.h"
@@ -50,6 +52,7 @@ struct Target {
   std::vector<float> depth;                   // window z, cleared to 1
   Image* image = nullptr;                     // pass 2: the colour of each kept fragment
   std::vector<std::uint32_t>* ids = nullptr;  // or which triangle it came from
+  std::vector<std::uint32_t>* counts = nullptr;  // or how many fragments each pixel received (no test, nothing drawn)
 };
 
 // The fragment stage: the pixel's interpolated varyings, the side seen, and
@@ -84,6 +87,10 @@ void drawTriangle(const ClipVertex (&vertex)[3], int varyingCount, bool cullBack
     // Coverage, then per pixel: depth, the z-buffer test, the varyings, the fragment's colour.
     rasterize(snapped, box, [&](int px, int py) {
       const std::size_t pixel = static_cast<std::size_t>(py) * static_cast<std::size_t>(target.width) + static_cast<std::size_t>(px);
+      if (target.counts) {
+        ++(*target.counts)[pixel];
+        return;
+      }
       const float z = planes.depthAt(px, py);
       if (!(z < target.depth[pixel])) return;
       if (keep && !keep(planes, px, py)) return;
@@ -277,12 +284,20 @@ void linePass(const Scene& scene, const FrameInputs& frame, Target& target) {
   drawLines(frame, lines, {0, 0, frame.width - 1, frame.height - 1}, target.depth.data(), frame.width, *target.image);
 }
 
+// The reference follows one triangle at a time through the z-buffer, its only hidden-surface removal.
+void refuseHiddenSurface(const FrameInputs& frame) {
+  if (frame.hsr != HiddenSurface::ZBuffer)
+    throw Error("settings key 'hsr': the reference backend has the z-buffer only; --backend cpu draws " +
+                std::string(kHiddenSurfaceNames[static_cast<std::size_t>(frame.hsr)]));
+}
+
 class ReferenceRenderer final : public Renderer {
  public:
   std::string description() const override { return "cpu reference, one triangle at a time (renderer/cpu/reference)"; }
 
   RenderResult render(const Scene& scene, const FrameInputs& frame) override {
     check_(scene, frame);
+    refuseHiddenSurface(frame);
     const auto start = std::chrono::steady_clock::now();
     const ShadowMaps maps = shadowPass(scene, frame);
     RenderResult result;
@@ -299,12 +314,23 @@ class ReferenceRenderer final : public Renderer {
 
   std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) override {
     check_(scene, frame);
+    refuseHiddenSurface(frame);
     const ShadowMaps maps = shadowPass(scene, frame);  // Gouraud lights its vertices with them
     std::vector<std::uint32_t> ids(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 0u);
     Target target{frame.width, frame.height, std::vector<float>(ids.size(), 1.0f)};
     target.ids = &ids;
     litPass(scene, frame, maps, target);
     return ids;
+  }
+
+  std::vector<std::uint32_t> fragmentCounts(const Scene& scene, const FrameInputs& frame) override {
+    check_(scene, frame);
+    const ShadowMaps maps = shadowPass(scene, frame);
+    std::vector<std::uint32_t> counts(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 0u);
+    Target target{frame.width, frame.height, std::vector<float>(counts.size(), 1.0f)};
+    target.counts = &counts;
+    litPass(scene, frame, maps, target);
+    return counts;
   }
 
  private:
