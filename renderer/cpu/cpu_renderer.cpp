@@ -59,28 +59,29 @@ class CpuRenderer final : public Renderer {
   }
 
   std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) override {
-    check_(scene, frame);
-    cpu::prepareFrame(pool_, buffers_, scene, frame);
-    RenderResult maps;  // the vertex stage of Gouraud reads the shadow maps
-    shadowPasses(scene, frame, maps);
-    std::vector<std::uint32_t> ids(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 0u);
-    Image unused;
-    cpu::litPass(pool_, buffers_, scene, frame, maps_, unused, &ids);
-    return ids;
+    return perPixel(scene, frame, [&](std::vector<std::uint32_t>& ids, Image& unused) { cpu::litPass(pool_, buffers_, scene, frame, maps_, unused, &ids); });
   }
 
   std::vector<std::uint32_t> fragmentCounts(const Scene& scene, const FrameInputs& frame) override {
-    check_(scene, frame);
-    cpu::prepareFrame(pool_, buffers_, scene, frame);
-    RenderResult maps;  // the vertex stage of Gouraud reads the shadow maps
-    shadowPasses(scene, frame, maps);
-    std::vector<std::uint32_t> counts(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 0u);
-    Image unused;
-    cpu::litPass(pool_, buffers_, scene, frame, maps_, unused, nullptr, &counts);
-    return counts;
+    return perPixel(scene, frame,
+                    [&](std::vector<std::uint32_t>& counts, Image& unused) { cpu::litPass(pool_, buffers_, scene, frame, maps_, unused, nullptr, &counts); });
   }
 
  private:
+  // A lit pass that writes one value per pixel instead of the image: `pass(values, unusedImage)`
+  // after the vertex positions and the shadow maps (the vertex stage of Gouraud reads them).
+  template <class Pass>
+  std::vector<std::uint32_t> perPixel(const Scene& scene, const FrameInputs& frame, Pass&& pass) {
+    check_(scene, frame);
+    cpu::prepareFrame(pool_, buffers_, scene, frame);
+    RenderResult maps;
+    shadowPasses(scene, frame, maps);
+    std::vector<std::uint32_t> values(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 0u);
+    Image unused;
+    pass(values, unused);
+    return values;
+  }
+
   void shadowPasses(const Scene& scene, const FrameInputs& frame, RenderResult& result) {
     if (frame.shadowLayerCount > 0) {
       const auto start = std::chrono::steady_clock::now();
