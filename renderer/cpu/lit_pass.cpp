@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -274,9 +275,9 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
                  frame.shading == ShadingMode::Flat ? &flat : nullptr, painter ? frame.paintersOrder.data() : nullptr);
   });
   // The scanline z-buffer decides every pixel's polygon first, a row at a time; the tiles then shade what it kept.
-  const bool scanline = frame.hsr == HiddenSurface::Scanline;
-  const PolygonNumbering numbering(buffers.workers);
-  if (scanline && !fragmentCounts) scanlineVisibility(pool, buffers.workers, v, scene, frame, buffers.visible);
+  const bool scanline = frame.hsr == HiddenSurface::Scanline && !fragmentCounts;
+  std::optional<PolygonNumbering> numbering;
+  if (scanline) scanlineVisibility(pool, buffers.workers, v, scene, frame, numbering.emplace(buffers.workers), buffers.visible);
 
   // Segments and points, drawn after every triangle (not in the triangle-id pass).
   if (triangleIds || fragmentCounts) buffers.lines.clear();
@@ -302,7 +303,7 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
     std::fill(std::begin(scratch.depth), std::end(scratch.depth), 1.0f);
     std::fill(std::begin(scratch.id), std::end(scratch.id), kNoTriangle);
     scratch.triangles.clear();  // keeps its capacity: no allocation once the sizes settle
-    if (scanline) gatherVisible(buffers.workers, numbering, v, buffers.visible, frame.width, r, scratch);
+    if (scanline) gatherVisible(buffers.workers, *numbering, v, buffers.visible, frame.width, r, scratch);
     else forEachTriangleInTile(buffers.workers, v, tile, r,
                           [&](const WorkerBins& bins, std::uint32_t index, const BinnedTriangle& t, const InterpolationVertex (&vertices)[3],
                               const PixelBox& box) {
@@ -312,17 +313,7 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
                             Interpolation& interpolation = scratch.triangles.back().interpolation;
                             const FrameInstance& instance = frame.instances[t.instance];
                             const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
-                            if (painter) {  // no depth buffer: the last triangle drawn over a pixel keeps it
-                              const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
-                              const Texture* texture = material.masked ? baseColorTextureOf(scene, frame, material, mesh) : nullptr;
-                              if (material.masked) interpolation.setUpVaryings(layout.model);
-                              rasterizeBlocks(t.snapped, box, [&](int px, int py) {
-                                if (material.masked && !keepsFragment(material, texture, !mesh.colors.empty(), layout, interpolation, px, py)) return;
-                                scratch.id[(py - r.y0) * kTileSize + (px - r.x0)] = id;
-                              });
-                              return;
-                            }
-                            if (!material.masked) {
+                            if (!material.masked && !painter) {
                               rasterizeBlocks(t.snapped, box, [&](int px, int py) {
                                 const float z = interpolation.depthAt(px, py);
                                 const int k = (py - r.y0) * kTileSize + (px - r.x0);
@@ -333,16 +324,17 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
                               return;
                             }
                             // Alpha mask: the fragment's alpha decides before it writes depth (alpha_mask.h).
+                            // The painter's algorithm has no depth: the last triangle drawn over a pixel keeps it.
                             const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
-                            const Texture* texture = baseColorTextureOf(scene, frame, material, mesh);
+                            const Texture* texture = material.masked ? baseColorTextureOf(scene, frame, material, mesh) : nullptr;
                             const bool colored = !mesh.colors.empty();
-                            interpolation.setUpVaryings(layout.model);
+                            if (material.masked) interpolation.setUpVaryings(layout.model);
                             rasterizeBlocks(t.snapped, box, [&](int px, int py) {
-                              const float z = interpolation.depthAt(px, py);
                               const int k = (py - r.y0) * kTileSize + (px - r.x0);
-                              if (!(z < scratch.depth[k])) return;  // LESS
-                              if (!keepsFragment(material, texture, colored, layout, interpolation, px, py)) return;
-                              scratch.depth[k] = z;
+                              const float z = painter ? 0.0f : interpolation.depthAt(px, py);
+                              if (!painter && !(z < scratch.depth[k])) return;  // LESS
+                              if (material.masked && !keepsFragment(material, texture, colored, layout, interpolation, px, py)) return;
+                              if (!painter) scratch.depth[k] = z;
                               scratch.id[k] = id;
                             });
                           });

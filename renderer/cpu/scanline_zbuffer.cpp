@@ -111,8 +111,7 @@ std::size_t scanlineDepthBytes(int width, int workers) {
 }
 
 void scanlineVisibility(ThreadPool& pool, const std::vector<WorkerBins>& workers, const PassVertices& vertices, const Scene& scene,
-                        const FrameInputs& frame, std::vector<std::uint32_t>& visible) {
-  const PolygonNumbering numbering(workers);
+                        const FrameInputs& frame, const PolygonNumbering& numbering, std::vector<std::uint32_t>& visible) {
   const int width = frame.width, height = frame.height;
   const VaryingLayout layout = varyingLayout(frame.shading);
   visible.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), kNoPolygon);

@@ -36,7 +36,7 @@ struct PolygonNumbering {
 // order with the alpha mask, pixel for pixel. The rows are split between the
 // pool's workers, each with its own row of depth.
 void scanlineVisibility(ThreadPool& pool, const std::vector<WorkerBins>& workers, const PassVertices& vertices, const Scene& scene,
-                        const FrameInputs& frame, std::vector<std::uint32_t>& visible);
+                        const FrameInputs& frame, const PolygonNumbering& numbering, std::vector<std::uint32_t>& visible);
 
 // The bytes of depth the scanline z-buffer keeps with `workers` rows of `width`.
 std::size_t scanlineDepthBytes(int width, int workers);
