@@ -37,11 +37,6 @@ constexpr GLint kMeshStorageBuffers = 5;
 constexpr GLuint kPaintedBinding = 5;         // storage buffer of triangle_id.frag: the painter's order
 
 // The scanline z-buffer is the CPU backend's alone.
-// The byte offset of painter's position `first` in an index buffer of three GLuint per triangle.
-const void* indexOffset(GLsizei first) {
-  return reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first) * 3 * sizeof(GLuint));
-}
-
 void refuseScanline(const FrameInputs& frame) {
   if (frame.hsr == HiddenSurface::Scanline)
     throw Error("settings key 'hsr': scanline is the CPU backend's scanline z-buffer (--backend cpu); OpenGL draws zbuffer or painter");
@@ -179,11 +174,7 @@ std::vector<std::uint32_t> GlFrameRenderer::drawTriangleIds(const Scene& scene, 
     gl_.glProgramUniform1i(program, id.painted, run ? 1 : 0);
     if (variant.masked)
       setBaseColorUniforms(program, id.alpha, frame.materials[static_cast<std::size_t>(instance.material)], variant.textured);
-    if (count == 0) return;
-    gl_.glBindVertexArray(mesh.vertexArray.id());
-    if (run) gl_.glVertexArrayElementBuffer(mesh.vertexArray.id(), painters_.indices());
-    gl_.glDrawElements(GL_TRIANGLES, 3 * count, GL_UNSIGNED_INT, run ? indexOffset(run->first) : nullptr);
-    if (run) gl_.glVertexArrayElementBuffer(mesh.vertexArray.id(), mesh.indices.id());
+    if (count > 0) drawIndexed(mesh, run);
   };
   if (painter) {
     for (const PainterRun& run : painters_.runs())
@@ -481,15 +472,21 @@ void GlFrameRenderer::drawInstance(const LitProgram& lit, const FrameInputs& fra
     if (run) gl_.glDrawArrays(GL_TRIANGLES, 3 * run->first, 3 * run->count);  // gl_VertexID counts from 3·first
     else gl_.glDrawArrays(GL_TRIANGLES, 0, mesh.indexCount);
   } else {
-    gl_.glBindVertexArray(mesh.vertexArray.id());
-    if (run) {
-      gl_.glVertexArrayElementBuffer(mesh.vertexArray.id(), painters_.indices());
-      gl_.glDrawElements(GL_TRIANGLES, 3 * run->count, GL_UNSIGNED_INT, indexOffset(run->first));
-      gl_.glVertexArrayElementBuffer(mesh.vertexArray.id(), mesh.indices.id());
-    } else {
-      gl_.glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
-    }
+    drawIndexed(mesh, run);
   }
+}
+
+void GlFrameRenderer::drawIndexed(const MeshBuffers& mesh, const PainterRun* run) {
+  gl_.glBindVertexArray(mesh.vertexArray.id());
+  if (!run) {
+    gl_.glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+    return;
+  }
+  // The run's indices from the painter's buffer, at three GLuint per position; the vertex array gets its own back.
+  gl_.glVertexArrayElementBuffer(mesh.vertexArray.id(), painters_.indices());
+  gl_.glDrawElements(GL_TRIANGLES, 3 * run->count, GL_UNSIGNED_INT,
+                     reinterpret_cast<const void*>(static_cast<std::uintptr_t>(run->first) * 3 * sizeof(GLuint)));
+  gl_.glVertexArrayElementBuffer(mesh.vertexArray.id(), mesh.indices.id());
 }
 
 GlFrameRenderer::AlphaUniforms GlFrameRenderer::alphaUniforms(const ShaderProgram& program) const {

@@ -105,6 +105,8 @@ class GlFrameRenderer {
   void litPass(const FrameInputs& frame);
   // The instance's triangles, or those of one painter's run (null: all, in the mesh's order).
   void drawInstance(const LitProgram& lit, const FrameInputs& frame, const FrameInstance& instance, bool flat, const PainterRun* run = nullptr);
+  // The mesh's triangles through its vertex array, or one painter's run of them.
+  void drawIndexed(const MeshBuffers& mesh, const PainterRun* run);
   void drawLines(const FrameInputs& frame);
   void checkError(const char* where) const;
 
