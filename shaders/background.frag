@@ -1,6 +1,6 @@
 #version 450 core
-// The background, encoded exactly as a lit pixel is: the background colour,
-// or the environment map in the pixel's view direction.
+// The background into the linear colour buffer, as a lit pixel is: the
+// background colour, or the environment map in the pixel's view direction.
 #include "frame_block.glsl"
 #include "shading_math.glsl"
 #include "srgb.glsl"
@@ -12,5 +12,5 @@ uniform vec2 viewportSize;  // W, H
 layout(location = 0) out vec4 color;
 
 void main() {
-  color = encodeSrgb(backgroundAt(gl_FragCoord.xy, viewportSize));
+  color = vec4(backgroundAt(gl_FragCoord.xy, viewportSize), 1.0);
 }

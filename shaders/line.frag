@@ -12,5 +12,5 @@ in vec3 vertexColor;
 layout(location = 0) out vec4 color;
 
 void main() {
-  color = encodeSrgb(fogged(baseColorFactor * vertexColor));
+  color = vec4(fogged(baseColorFactor * vertexColor), 1.0);
 }

@@ -31,5 +31,5 @@ void main() {
   precise vec3 specular = emissionAt(t) + I.specular;  // summed with k_e = 0 (summedMaterial)
   I.specular = specular;
 #endif
-  color = encodeSrgb(fogged(shade(I, O.rgb)));
+  color = vec4(fogged(shade(I, O.rgb)), 1.0);
 }

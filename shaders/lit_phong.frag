@@ -40,12 +40,12 @@ void main() {
   vec4 O = baseColorAt(t, vertexColor, modelPoint);
   if (!alphaKept(O.a)) discard;  // alpha mask (a no-op unless FACET_MASKED)
 #if FACET_PBR
-  color = encodeSrgb(fogged(shadePhysicallyBased(pbrSurfaceAt(O.rgb, t), P, N, viewVector(P))));
+  color = vec4(fogged(shadePhysicallyBased(pbrSurfaceAt(O.rgb, t), P, N, viewVector(P))), 1.0);
 #else
   CourseMaterial lit = material;
 #if FACET_EMISSIVE_MAP
   lit.emissive = emissionAt(t);  // k_e·E in k_e's place
 #endif
-  color = encodeSrgb(fogged(shade(illuminate(lit, P, N, viewVector(P)), O.rgb)));
+  color = vec4(fogged(shade(illuminate(lit, P, N, viewVector(P)), O.rgb)), 1.0);
 #endif
 }

@@ -20,10 +20,19 @@ int encodeLevel(float linear) {
   return srgb.thresholds[next >> 2][next & 3] <= c ? next : start;
 }
 
-// The colour to write into the RGBA8 target: each level / 255, which the
+// Alpha is coverage, not light: floor(255·a + 0.5) of a clamped to [0, 1]
+// (NaN to 0), a product and a sum each rounded once. Mirror: facet::alphaLevel.
+int alphaLevel(float alpha) {
+  float c = alpha > 0.0 ? (alpha < 1.0 ? alpha : 1.0) : 0.0;
+  precise float scaled = c * 255.0 + 0.5;  // never fused into one rounding
+  return int(scaled);
+}
+
+// The resolve's colour for the RGBA8 target: each level / 255, which the
 // driver converts back to exactly that level.
-vec4 encodeSrgb(vec3 linear) {
-  return vec4(float(encodeLevel(linear.r)) / 255.0, float(encodeLevel(linear.g)) / 255.0, float(encodeLevel(linear.b)) / 255.0, 1.0);
+vec4 encodeSrgb(vec4 linear) {
+  return vec4(float(encodeLevel(linear.r)) / 255.0, float(encodeLevel(linear.g)) / 255.0, float(encodeLevel(linear.b)) / 255.0,
+              float(alphaLevel(linear.a)) / 255.0);
 }
 
 float decodeSrgb(uint level) {

@@ -10,9 +10,9 @@
 #include "cpu/frame_buffers.h"
 #include "cpu/lighting.h"
 #include "cpu/passes.h"
+#include "cpu/resolve.h"
 #include "cpu/scanline_zbuffer.h"
 #include "cpu/thread_pool.h"
-#include "image/srgb.h"
 #include "pipeline/frame_checks.h"
 
 namespace facet {
@@ -40,15 +40,17 @@ class CpuRenderer final : public Renderer {
     shadowPasses(scene, frame, result);
 
     const auto start = std::chrono::steady_clock::now();
-    result.image = Image(frame.width, frame.height, encodePixel(frame.background));
+    color_.reset(frame.width, frame.height, glm::vec4(frame.background, 1.0f));
     if (cpu::showsEnvironment(frame))  // the map behind everything, in each pixel's view direction
       cpu::forEachRange(pool_, static_cast<std::size_t>(frame.height), [&](std::size_t begin, std::size_t end, int) {
         for (std::size_t y = begin; y < end; ++y)
-          for (int x = 0; x < frame.width; ++x)
-            result.image.at(x, static_cast<int>(y)) = encodePixel(cpu::backgroundAt(frame, x, static_cast<int>(y)));
+          for (int x = 0; x < frame.width; ++x) color_.at(x, static_cast<int>(y)) = glm::vec4(cpu::backgroundAt(frame, x, static_cast<int>(y)), 1.0f);
       });
-    cpu::litPass(pool_, buffers_, scene, frame, maps_, result.image);
+    cpu::litPass(pool_, buffers_, scene, frame, maps_, color_);
     result.timings.push_back({"lit pass", millisecondsSince(start)});
+    const auto resolveStart = std::chrono::steady_clock::now();
+    cpu::resolve(pool_, color_, result.image);
+    result.timings.push_back({"resolve", millisecondsSince(resolveStart)});
     if (frame.hsr == HiddenSurface::Scanline) {
       const auto frameDepth = static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height) * sizeof(float);
       result.notes.push_back("scanline z-buffer: " + countOf(static_cast<std::size_t>(pool_.size()), "row") + " of depth, " +
@@ -59,16 +61,16 @@ class CpuRenderer final : public Renderer {
   }
 
   std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) override {
-    return perPixel(scene, frame, [&](std::vector<std::uint32_t>& ids, Image& unused) { cpu::litPass(pool_, buffers_, scene, frame, maps_, unused, &ids); });
+    return perPixel(scene, frame, [&](std::vector<std::uint32_t>& ids, ColorBuffer& unused) { cpu::litPass(pool_, buffers_, scene, frame, maps_, unused, &ids); });
   }
 
   std::vector<std::uint32_t> fragmentCounts(const Scene& scene, const FrameInputs& frame) override {
     return perPixel(scene, frame,
-                    [&](std::vector<std::uint32_t>& counts, Image& unused) { cpu::litPass(pool_, buffers_, scene, frame, maps_, unused, nullptr, &counts); });
+                    [&](std::vector<std::uint32_t>& counts, ColorBuffer& unused) { cpu::litPass(pool_, buffers_, scene, frame, maps_, unused, nullptr, &counts); });
   }
 
  private:
-  // A lit pass that writes one value per pixel instead of the image: `pass(values, unusedImage)`
+  // A lit pass that writes one value per pixel instead of the image: `pass(values, unusedColorBuffer)`
   // after the vertex positions and the shadow maps (the vertex stage of Gouraud reads them).
   template <class Pass>
   std::vector<std::uint32_t> perPixel(const Scene& scene, const FrameInputs& frame, Pass&& pass) {
@@ -77,7 +79,7 @@ class CpuRenderer final : public Renderer {
     RenderResult maps;
     shadowPasses(scene, frame, maps);
     std::vector<std::uint32_t> values(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 0u);
-    Image unused;
+    ColorBuffer unused;
     pass(values, unused);
     return values;
   }
@@ -99,6 +101,7 @@ class CpuRenderer final : public Renderer {
   cpu::ThreadPool pool_;
   cpu::FrameBuffers buffers_;
   cpu::ShadowMaps maps_;
+  ColorBuffer color_;  // the lit pass's linear colours, kept from frame to frame
 };
 
 }  // namespace

@@ -60,7 +60,7 @@ void setUpLines(const Scene& scene, const FrameInputs& frame, const PassVertices
   }
 }
 
-void drawLines(const FrameInputs& frame, const std::vector<DrawnLine>& lines, const TileRect& r, float* depth, int depthStride, Image& image) {
+void drawLines(const FrameInputs& frame, const std::vector<DrawnLine>& lines, const TileRect& r, float* depth, int depthStride, ColorBuffer& color) {
   for (const DrawnLine& line : lines) {
     const PixelBox& b = line.raster.box;
     const int x0 = std::max(b.minX, r.x0), x1 = std::min(b.maxX, r.x1), y0 = std::max(b.minY, r.y0), y1 = std::min(b.maxY, r.y1);
@@ -73,9 +73,9 @@ void drawLines(const FrameInputs& frame, const std::vector<DrawnLine>& lines, co
           if (!(z < kept)) continue;  // LESS
           kept = z;
         }
-        const glm::vec3 color = line.baseColor * glm::vec3(line.raster.colorAt(0, px, py), line.raster.colorAt(1, px, py), line.raster.colorAt(2, px, py));
+        const glm::vec3 lit = line.baseColor * glm::vec3(line.raster.colorAt(0, px, py), line.raster.colorAt(1, px, py), line.raster.colorAt(2, px, py));
         const float d = frame.fog.mode != FogMode::None ? eyeDepth(frame, line.raster.oneOverW.at(px, py), z) : 0.0f;
-        image.at(px, py) = encodePixel(fogged(frame.fog, color, d));
+        color.at(px, py) = glm::vec4(fogged(frame.fog, lit, d), 1.0f);
       }
   }
 }

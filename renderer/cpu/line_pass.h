@@ -11,7 +11,7 @@
 #include "cpu/clipper.h"
 #include "cpu/frame_buffers.h"
 #include "cpu/line_raster.h"
-#include "image/image.h"
+#include "image/color_buffer.h"
 #include "pipeline/frame_inputs.h"
 #include "scene/scene.h"
 
@@ -30,9 +30,9 @@ void addPoint(const ClipVertex& v, const WindowVertex& window, const FrameInputs
 // window vertices (colour at varying `colorVarying`), in drawing order.
 void setUpLines(const Scene& scene, const FrameInputs& frame, const PassVertices& vertices, int colorVarying, std::vector<DrawnLine>& out);
 
-// Draws the lines that cover pixels of rectangle `r` over `image`, against
+// Draws the lines that cover pixels of rectangle `r` into the colour buffer, against
 // the z-buffer `depth` (pixel (r.x0, r.y0) first, `depthStride` per row);
 // null: the painter's algorithm, no depth test, each fragment over the last.
-void drawLines(const FrameInputs& frame, const std::vector<DrawnLine>& lines, const TileRect& r, float* depth, int depthStride, Image& image);
+void drawLines(const FrameInputs& frame, const std::vector<DrawnLine>& lines, const TileRect& r, float* depth, int depthStride, ColorBuffer& color);
 
 }  // namespace facet::cpu

@@ -25,7 +25,6 @@
 #include "cpu/physically_based.h"
 #include "cpu/procedural.h"
 #include "cpu/scanline_zbuffer.h"
-#include "cpu/srgb_table.h"
 #include "cpu/texture_sampling.h"
 #include "cpu/tile_raster.h"
 #include "cpu/varyings.h"
@@ -55,7 +54,7 @@ LaneMaterial<float> vertexMaterial(const CourseMaterial& material, const Mesh& m
 // The fragment stage of one shading mode: no branch on the mode per pixel.
 template <ShadingMode kMode>
 void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, WorkerBins::TileScratch& scratch, int tx0, int ty0, int tx1,
-               int ty1, Image& image) {
+               int ty1, ColorBuffer& color) {
   constexpr VaryingLayout layout = varyingLayout(kMode);
   std::uint32_t current = kNoTriangle;
   Interpolation* in = nullptr;
@@ -71,7 +70,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
   const bool foggy = frame.fog.mode != FogMode::None;  // fog reads 1/w, set up with the varyings
   bool back = false;
   const Illumination* flat = nullptr;
-  PhongBatch batch(frame, maps, image.data());  // Phong: four pixels' illumination at a time
+  PhongBatch batch(frame, maps, color.data());  // Phong: four pixels' illumination at a time
   for (int py = ty0; py <= ty1; ++py)
     for (int px = tx0; px <= tx1; ++px) {
       const std::uint32_t id = scratch.id[(py - ty0) * kTileSize + (px - tx0)];
@@ -105,7 +104,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
           const __m128 w = in->inverseW4(px, py);
           const __m128 P[3] = {in->varying4(0, px, py, w), in->varying4(1, px, py, w), in->varying4(2, px, py, w)};
           const __m128 N[3] = {in->varying4(3, px, py, w), in->varying4(4, px, py, w), in->varying4(5, px, py, w)};
-          batch.add4(static_cast<std::size_t>(py) * static_cast<std::size_t>(image.width()) + static_cast<std::size_t>(px), P, N, back,
+          batch.add4(static_cast<std::size_t>(py) * static_cast<std::size_t>(color.width()) + static_cast<std::size_t>(px), P, N, back,
                      material->baseColor, *material);
           px += 3;
           continue;
@@ -128,7 +127,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         baseColor *= proceduralGrey(frame.procedural, {v[layout.model], v[layout.model + 1], v[layout.model + 2]}, frame.proceduralScale);
       else if (texture)
         baseColor *= glm::vec3(sampleBaseColorTexture(*texture, *material, stAt(material->baseColorSet), derivativesAt(material->baseColorSet)));
-      glm::vec3 color;
+      glm::vec3 lit;
       glm::vec3 interpolatedNormal(0.0f);
       if constexpr (kMode == ShadingMode::Pbr || kMode == ShadingMode::Phong) {
         interpolatedNormal = {v[3], v[4], v[5]};
@@ -144,23 +143,23 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         const glm::vec3 unit = normalize3(interpolatedNormal);
         const glm::vec3 N = back ? -unit : unit;  // two-sided lighting
         const PbrSurface surface = pbrSurfaceAt(scene, *material, *drawnMesh, baseColor, {stAt(0), stAt(1)}, {derivativesAt(0), derivativesAt(1)});
-        color = shadePhysicallyBased(frame, maps, surface, P, N, viewVector<float>(frame, P));
+        lit = shadePhysicallyBased(frame, maps, surface, P, N, viewVector<float>(frame, P));
       } else if constexpr (kMode == ShadingMode::Phong) {
         // N is normalized (and negated on a back face, two-sided lighting) in the batch
-        batch.add(static_cast<std::size_t>(py) * static_cast<std::size_t>(image.width()) + static_cast<std::size_t>(px), {v[0], v[1], v[2]},
+        batch.add(static_cast<std::size_t>(py) * static_cast<std::size_t>(color.width()) + static_cast<std::size_t>(px), {v[0], v[1], v[2]},
                   interpolatedNormal, back, baseColor, *material, emissiveMap ? emission() : material->emissive, depth);
         continue;  // written when the batch is shaded
       } else if constexpr (kMode == ShadingMode::Gouraud) {
         const int side = back ? 6 : 0;
         Illumination I{{v[side], v[side + 1], v[side + 2]}, {v[side + 3], v[side + 4], v[side + 5]}};
         if (emissiveMap) I.specular = emission() + I.specular;  // summed with k_e = 0 at the vertices
-        color = shade(I, baseColor);
+        lit = shade(I, baseColor);
       } else {
         Illumination I = back ? flat[1] : flat[0];
         if (emissiveMap) I.specular = emission() + I.specular;  // summed with k_e = 0 for the triangle
-        color = shade(I, baseColor);
+        lit = shade(I, baseColor);
       }
-      image.at(px, py) = encodePixel(fogged(frame.fog, color, depth));
+      color.at(px, py) = glm::vec4(fogged(frame.fog, lit, depth), 1.0f);
     }
   batch.flush();
 }
@@ -200,7 +199,7 @@ void gatherVisible(const std::vector<WorkerBins>& workers, const PolygonNumberin
 
 }  // namespace
 
-void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, Image& image,
+void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, ColorBuffer& color,
              std::vector<std::uint32_t>* triangleIds, std::vector<std::uint32_t>* fragmentCounts) {
   const VaryingLayout layout = varyingLayout(frame.shading);
   const float halfWidth = 0.5f * static_cast<float>(frame.width), halfHeight = 0.5f * static_cast<float>(frame.height);
@@ -348,12 +347,12 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
       return;
     }
     switch (frame.shading) {
-      case ShadingMode::Pbr: shadeTile<ShadingMode::Pbr>(scene, frame, maps, scratch, r.x0, r.y0, r.x1, r.y1, image); break;
-      case ShadingMode::Phong: shadeTile<ShadingMode::Phong>(scene, frame, maps, scratch, r.x0, r.y0, r.x1, r.y1, image); break;
-      case ShadingMode::Gouraud: shadeTile<ShadingMode::Gouraud>(scene, frame, maps, scratch, r.x0, r.y0, r.x1, r.y1, image); break;
-      default: shadeTile<ShadingMode::Flat>(scene, frame, maps, scratch, r.x0, r.y0, r.x1, r.y1, image); break;
+      case ShadingMode::Pbr: shadeTile<ShadingMode::Pbr>(scene, frame, maps, scratch, r.x0, r.y0, r.x1, r.y1, color); break;
+      case ShadingMode::Phong: shadeTile<ShadingMode::Phong>(scene, frame, maps, scratch, r.x0, r.y0, r.x1, r.y1, color); break;
+      case ShadingMode::Gouraud: shadeTile<ShadingMode::Gouraud>(scene, frame, maps, scratch, r.x0, r.y0, r.x1, r.y1, color); break;
+      default: shadeTile<ShadingMode::Flat>(scene, frame, maps, scratch, r.x0, r.y0, r.x1, r.y1, color); break;
     }
-    drawLines(frame, buffers.lines, r, painter ? nullptr : scratch.depth, kTileSize, image);  // the painter has no depth to test
+    drawLines(frame, buffers.lines, r, painter ? nullptr : scratch.depth, kTileSize, color);  // the painter has no depth to test
   });
 }
 

@@ -12,7 +12,7 @@
 #include "cpu/function_ref.h"
 #include "cpu/shadow_maps.h"
 #include "cpu/thread_pool.h"
-#include "image/image.h"
+#include "image/color_buffer.h"
 #include "pipeline/frame_inputs.h"
 #include "scene/scene.h"
 
@@ -33,18 +33,18 @@ void prepareFrame(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, c
 void shadowPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const FrameInputs& frame, const FrameLight& light, int face,
                 ShadowMaps& maps);
 
-// Pass 2: z-buffer and shading into `image` (cleared by the caller to the
-// background). Only the fragment that ends up in a pixel is shaded: a
+// Pass 2: z-buffer and shading into the linear colour buffer `color`
+// (cleared by the caller to the background). Only the fragment that ends up in a pixel is shaded: a
 // tile's triangles are first resolved with the z-buffer (LESS, in triangle
 // order) to the last one that passed the test at each pixel, the one whose
 // colour the pixel keeps; shading is a function of triangle and pixel alone.
 // With triangleIds (width × height, bottom row first), the pass writes
 // which triangle each pixel keeps instead (Renderer::visibleTriangles) and
-// leaves the image alone.
+// leaves the colour buffer alone.
 // With fragmentCounts (width × height, bottom row first, zeroed by the
 // caller), the pass counts the fragments each pixel receives before any
 // test (Renderer::fragmentCounts) and does nothing else.
-void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, Image& image,
+void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, ColorBuffer& color,
              std::vector<std::uint32_t>* triangleIds = nullptr, std::vector<std::uint32_t>* fragmentCounts = nullptr);
 
 }  // namespace facet::cpu

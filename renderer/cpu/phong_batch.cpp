@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "cpu/fog.h"
-#include "cpu/srgb_table.h"
 
 namespace facet::cpu {
 
@@ -41,9 +40,7 @@ void PhongBatch::flush() {
   _mm_store_ps(rgb[0], color.x.v);
   _mm_store_ps(rgb[1], color.y.v);
   _mm_store_ps(rgb[2], color.z.v);
-  std::uint8_t bytes[3][kLanes];
-  for (int c = 0; c < 3; ++c) encodeLevels4(rgb[c], bytes[c]);
-  for (int k = 0; k < count_; ++k) pixels_[offset_[k]] = {bytes[0][k], bytes[1][k], bytes[2][k], 255};
+  for (int k = 0; k < count_; ++k) pixels_[offset_[k]] = {rgb[0][k], rgb[1][k], rgb[2][k], 1.0f};
   count_ = 0;
 }
 
@@ -57,7 +54,7 @@ void PhongBatch::flush() {
     const glm::vec3 O{O_[0][k], O_[1][k], O_[2][k]};
     const glm::vec3 E{E_[0][k], E_[1][k], E_[2][k]};
     const glm::vec3 lit = shade(illuminate(frame_, maps_, laneMaterial(*material_[k], E), P, N, viewVector<float>(frame_, P)), O);
-    pixels_[offset_[k]] = encodePixel(fogged(frame_.fog, lit, D_[k]));
+    pixels_[offset_[k]] = glm::vec4(fogged(frame_.fog, lit, D_[k]), 1.0f);
   }
   count_ = 0;
 }

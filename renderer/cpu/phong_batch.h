@@ -9,8 +9,7 @@
 #include <cstdint>
 
 #include "cpu/lighting.h"
-#include "cpu/srgb_table.h"
-#include "image/image.h"
+#include "image/color_buffer.h"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -22,7 +21,7 @@ class PhongBatch {
  public:
   static constexpr int kLanes = 4;  // add4 and flush assume four
 
-  PhongBatch(const FrameInputs& frame, const ShadowMaps& maps, Rgba8* pixels)
+  PhongBatch(const FrameInputs& frame, const ShadowMaps& maps, glm::vec4* pixels)
       : frame_(frame), maps_(maps), pixels_(pixels) {}
 
   // Queues the pixel at pixels[offset]: world position P, the interpolated
@@ -75,7 +74,7 @@ class PhongBatch {
  private:
   const FrameInputs& frame_;
   const ShadowMaps& maps_;
-  Rgba8* pixels_;
+  glm::vec4* pixels_;  // the colour buffer, linear RGBA
   int count_ = 0;
   std::size_t offset_[kLanes];
   const CourseMaterial* material_[kLanes];

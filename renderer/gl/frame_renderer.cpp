@@ -28,6 +28,7 @@ constexpr GLuint kOcclusionUnit = 4;          // usampler2D occlusionMap
 constexpr GLuint kEmissiveUnit = 5;           // usampler2D emissiveMap
 constexpr GLuint kNormalMapUnit = 6;          // usampler2D normalMap
 constexpr GLuint kBumpMapUnit = 7;            // usampler2D bumpMap (bump_mapping.glsl)
+constexpr GLuint kResolveUnit = 8;            // sampler2D linearColor (resolve.frag)
 constexpr GLuint kMeshIndicesBinding = 0;     // storage buffers of lit_flat.vert
 constexpr GLuint kMeshPositionsBinding = 1;
 constexpr GLuint kMeshTexcoordsBinding = 2;
@@ -105,7 +106,7 @@ std::vector<PassTiming> GlFrameRenderer::drawFrame(const Scene& scene, const Fra
   gl_.glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // clip z in [0, w], window origin at the lower left
   gl_.glFrontFace(GL_CCW);                           // counter-clockwise in window coordinates is front
   for (GLenum capability : {GL_BLEND, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_DITHER, GL_FRAMEBUFFER_SRGB, GL_POLYGON_OFFSET_FILL})
-    gl_.glDisable(capability);  // a pixel's value is the shader's output, rounded to 8 bits, nothing else
+    gl_.glDisable(capability);  // a pixel keeps the shader's float output, nothing else, until the resolve
 
   if (frame.shadowLayerCount > 0) {
     shadowPass(frame);
@@ -118,12 +119,17 @@ std::vector<PassTiming> GlFrameRenderer::drawFrame(const Scene& scene, const Fra
   gl_.glFinish();
   checkError("the lit pass");
   timings.push_back({"lit pass", millisecondsSince(start)});
+  start = Clock::now();
+  resolvePass(frame);
+  gl_.glFinish();
+  checkError("the resolve");
+  timings.push_back({"resolve", millisecondsSince(start)});
   return timings;
 }
 
 Image GlFrameRenderer::readImage() const {
-  Image image(target_.width(), target_.height());
-  gl_.glBindFramebuffer(GL_READ_FRAMEBUFFER, target_.framebuffer());
+  Image image(resolved_.width(), resolved_.height());
+  gl_.glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved_.framebuffer());
   gl_.glPixelStorei(GL_PACK_ALIGNMENT, 1);
   gl_.glPixelStorei(GL_PACK_ROW_LENGTH, 0);
   // Row 0 of glReadPixels is the bottom row, as facet::Image stores it: no flip.
@@ -313,8 +319,12 @@ bool GlFrameRenderer::preparePrograms(const FrameInputs& frame) {
                                      .alpha = alphaUniforms(program), .program = std::move(program)};
                }) || compiled;
   if (!backgroundProgram_) {
-    backgroundProgram_.emplace(buildProgram(gl_, {"background.vert", "background.frag"}));
+    backgroundProgram_.emplace(buildProgram(gl_, {"viewport_triangle.vert", "background.frag"}));
     backgroundViewportSize_ = uniformLocation(gl_, *backgroundProgram_, "viewportSize");
+    compiled = true;
+  }
+  if (!resolveProgram_) {
+    resolveProgram_.emplace(buildProgram(gl_, {"viewport_triangle.vert", "resolve.frag"}));
     compiled = true;
   }
   if (!lineProgram_ || lineFog_ != frame.fog.mode) {
@@ -431,6 +441,19 @@ void GlFrameRenderer::drawLines(const FrameInputs& frame) {
       gl_.glDrawElements(GL_POINTS, mesh.pointCount, GL_UNSIGNED_INT, nullptr);
     }
   }
+}
+
+void GlFrameRenderer::resolvePass(const FrameInputs& frame) {
+  resolved_.resize(gl_, frame.width, frame.height);
+  gl_.glBindFramebuffer(GL_FRAMEBUFFER, resolved_.framebuffer());
+  gl_.glViewport(0, 0, frame.width, frame.height);
+  gl_.glDisable(GL_DEPTH_TEST);
+  gl_.glDisable(GL_CULL_FACE);
+  gl_.glBindTextureUnit(kResolveUnit, target_.colorTexture());
+  gl_.glUseProgram(resolveProgram_->id());
+  gl_.glBindVertexArray(emptyVertexArray_.id());
+  gl_.glDrawArrays(GL_TRIANGLES, 0, 3);
+  gl_.glBindTextureUnit(kResolveUnit, 0);  // the colour buffer is the next frame's target
 }
 
 const GlFrameRenderer::LitProgram* GlFrameRenderer::litProgram(const FrameInputs& frame, DrawVariant variant) const {

@@ -2,7 +2,8 @@
 // Draws frames with OpenGL 4.5 into an offscreen framebuffer, as
 // renderer/PIPELINE.md lays them out: shadow pass 1 into a depth array
 // texture, then the lit pass (background, then every mesh instance with
-// flat, Gouraud or Phong shading). It needs only a current context and that
+// flat, Gouraud or Phong shading) into a linear RGBA32F colour buffer, then
+// the resolve into the RGBA8 image. It needs only a current context and that
 // context's getProcAddress, so the headless renderer (gl_renderer.cpp) and
 // the viewer's GLFW window share it. Every call needs its context current.
 #include <array>
@@ -36,7 +37,7 @@ class GlFrameRenderer {
   // Uploads the scene's meshes and textures; the frames drawn next must be built from this scene.
   void uploadScene(const Scene& scene);
 
-  // Pass 1 and the lit pass of one frame, with glFinish between them so that
+  // Pass 1, the lit pass and the resolve of one frame, with glFinish between them so that
   // each timing is that pass's. The frame must have passed checkFrame
   // (pipeline/frame_checks.h) against the uploaded scene. Throws
   // facet::Error (driver limits, framebuffer, shaders, a GL error).
@@ -55,8 +56,8 @@ class GlFrameRenderer {
   // a 32-bit float (exact to 2^24).
   std::vector<std::uint32_t> drawFragmentCounts(const FrameInputs& frame);
 
-  // The framebuffer drawFrame draws into (colour attachment 0), for a viewer to blit from.
-  GLuint framebuffer() const { return target_.framebuffer(); }
+  // The framebuffer drawFrame resolves into (colour attachment 0, RGBA8), for a viewer to blit from.
+  GLuint framebuffer() const { return resolved_.framebuffer(); }
 
  private:
   // A lit-pass program and its uniform locations (shaders/draw_uniforms.glsl).
@@ -108,6 +109,8 @@ class GlFrameRenderer {
   // The mesh's triangles through its vertex array, or one painter's run of them.
   void drawIndexed(const MeshBuffers& mesh, const PainterRun* run);
   void drawLines(const FrameInputs& frame);
+  // The colour buffer encoded into `resolved_` (shaders/resolve.frag).
+  void resolvePass(const FrameInputs& frame);
   void checkError(const char* where) const;
 
   GlFunctions gl_;
@@ -118,6 +121,7 @@ class GlFrameRenderer {
   std::map<int, DepthProgram> depthPrograms_;  // by DrawVariant::index(); only masked draws differ
   std::optional<ShaderProgram> backgroundProgram_;
   GLint backgroundViewportSize_ = -1;  // its uniform vec2 viewportSize
+  std::optional<ShaderProgram> resolveProgram_;
   struct LineProgram {
     GLint clipFromModel, colored, baseColorFactor;
     ShaderProgram program;
@@ -142,7 +146,8 @@ class GlFrameRenderer {
   SceneBuffers scene_;
   PaintersDraws painters_;  // hsr = painter: the frame's triangles back to front
   ShadowMapArray shadowMaps_;
-  RenderTarget target_;
+  RenderTarget target_{GL_RGBA32F};  // the lit pass's colour buffer, linear RGBA
+  RenderTarget resolved_{GL_RGBA8, RenderTarget::Depth::Without};
   RenderTarget idTarget_{GL_R32UI};
   RenderTarget countTarget_{GL_R32F};
 };

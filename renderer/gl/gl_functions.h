@@ -70,6 +70,7 @@ namespace facet::gl {
   X(PFNGLNAMEDFRAMEBUFFERDRAWBUFFERSPROC, glNamedFramebufferDrawBuffers)      \
   X(PFNGLNAMEDFRAMEBUFFERRENDERBUFFERPROC, glNamedFramebufferRenderbuffer)    \
   X(PFNGLNAMEDFRAMEBUFFERTEXTURELAYERPROC, glNamedFramebufferTextureLayer)    \
+  X(PFNGLNAMEDFRAMEBUFFERTEXTUREPROC, glNamedFramebufferTexture)              \
   X(PFNGLNAMEDRENDERBUFFERSTORAGEPROC, glNamedRenderbufferStorage)            \
   X(PFNGLPIXELSTOREIPROC, glPixelStorei)                                      \
   X(PFNGLPROGRAMUNIFORM1FPROC, glProgramUniform1f)                            \

@@ -44,23 +44,30 @@ void RenderTarget::resize(const GlFunctions& gl, int width, int height) {
   if (framebuffer_ && width == width_ && height == height_) return;
   const std::string what = "image size " + std::to_string(width) + "x" + std::to_string(height);
   for (int side : {width, height}) {
+    checkSizeLimit(gl, what, side, GL_MAX_TEXTURE_SIZE, "GL_MAX_TEXTURE_SIZE");
     checkSizeLimit(gl, what, side, GL_MAX_RENDERBUFFER_SIZE, "GL_MAX_RENDERBUFFER_SIZE");
     checkSizeLimit(gl, what, side, GL_MAX_VIEWPORT_DIMS, "GL_MAX_VIEWPORT_DIMS");
   }
   const GLenum format = colorFormat_;
-  *this = RenderTarget(format);
-  color_ = createRenderbuffer(gl);
-  gl.glNamedRenderbufferStorage(color_.id(), format, width, height);
-  depth_ = createRenderbuffer(gl);
-  gl.glNamedRenderbufferStorage(depth_.id(), GL_DEPTH_COMPONENT32F, width, height);
+  const Depth depth = depthAttached_;
+  *this = RenderTarget(format, depth);
+  color_ = createTexture(gl, GL_TEXTURE_2D);
+  gl.glTextureStorage2D(color_.id(), 1, format, width, height);
+  gl.glTextureParameteri(color_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  gl.glTextureParameteri(color_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   framebuffer_ = createFramebuffer(gl);
-  gl.glNamedFramebufferRenderbuffer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_.id());
-  gl.glNamedFramebufferRenderbuffer(framebuffer_.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
+  gl.glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, color_.id(), 0);
+  if (depth == Depth::With) {
+    depth_ = createRenderbuffer(gl);
+    gl.glNamedRenderbufferStorage(depth_.id(), GL_DEPTH_COMPONENT32F, width, height);
+    gl.glNamedFramebufferRenderbuffer(framebuffer_.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
+  }
   gl.glNamedFramebufferDrawBuffer(framebuffer_.id(), GL_COLOR_ATTACHMENT0);
   gl.glNamedFramebufferReadBuffer(framebuffer_.id(), GL_COLOR_ATTACHMENT0);
-  checkFramebufferComplete(gl, framebuffer_.id(), format == GL_RGBA8   ? "lit pass (RGBA8 + DEPTH_COMPONENT32F)"
-                                              : format == GL_R32UI ? "triangle id (R32UI + DEPTH_COMPONENT32F)"
-                                                                   : "fragment count (R32F + DEPTH_COMPONENT32F)");
+  checkFramebufferComplete(gl, framebuffer_.id(), format == GL_RGBA32F ? "lit pass (RGBA32F + DEPTH_COMPONENT32F)"
+                                              : format == GL_RGBA8   ? "resolve (RGBA8)"
+                                              : format == GL_R32UI   ? "triangle id (R32UI + DEPTH_COMPONENT32F)"
+                                                                     : "fragment count (R32F + DEPTH_COMPONENT32F)");
   width_ = width;
   height_ = height;
 }

@@ -13,21 +13,26 @@ void checkFramebufferComplete(const GlFunctions& gl, GLuint framebuffer, const s
 // Throws facet::Error when `size` exceeds the GL limit `limitName` (e.g. GL_MAX_TEXTURE_SIZE).
 void checkSizeLimit(const GlFunctions& gl, const std::string& what, int size, GLenum limit, const char* limitName);
 
-// A W×H framebuffer of one colour attachment and GL_DEPTH_COMPONENT32F
-// depth: the lit pass's (GL_RGBA8) and the triangle ids' (GL_R32UI).
+// A W×H framebuffer of one colour texture and, unless it is a resolve's
+// target, GL_DEPTH_COMPONENT32F depth: the lit pass's linear colours
+// (GL_RGBA32F), the resolved image (GL_RGBA8, no depth), the triangle ids
+// (GL_R32UI) and the fragment counts (GL_R32F).
 class RenderTarget {
  public:
-  explicit RenderTarget(GLenum colorFormat = GL_RGBA8) : colorFormat_(colorFormat) {}
+  enum class Depth { With, Without };
+  explicit RenderTarget(GLenum colorFormat, Depth depth = Depth::With) : colorFormat_(colorFormat), depthAttached_(depth) {}
   // Reallocates when the size changes. Throws facet::Error beyond the
   // driver's limits or when the framebuffer is incomplete.
   void resize(const GlFunctions& gl, int width, int height);
 
   GLuint framebuffer() const { return framebuffer_.id(); }
+  GLuint colorTexture() const { return color_.id(); }  // read with texelFetch: no filtering, one level
   int width() const { return width_; }
   int height() const { return height_; }
 
  private:
   GLenum colorFormat_;
+  Depth depthAttached_;
   GlObject color_, depth_, framebuffer_;
   int width_ = 0, height_ = 0;
 };

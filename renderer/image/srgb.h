@@ -25,6 +25,7 @@
 #include <cstdint>
 
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "image/image.h"
 
@@ -56,7 +57,17 @@ inline std::uint8_t encodeLevel(float linear) {
 // The same level as the count of thresholds at or below c, by binary search.
 std::uint8_t levelBySearch(float linear);
 
+// Alpha is coverage, not light: stored linearly as floor(255·a + 0.5) of a
+// clamped to [0, 1] (NaN to 0), a product and a sum each rounded once, in
+// float (shaders/srgb.glsl's alphaLevel computes it `precise`).
+inline std::uint8_t alphaLevel(float alpha) { return static_cast<std::uint8_t>(clampUnit(alpha) * 255.0f + 0.5f); }
+
 // The three levels of a linear colour, alpha 255.
 inline Rgba8 encodePixel(glm::vec3 linear) { return {encodeLevel(linear.r), encodeLevel(linear.g), encodeLevel(linear.b), 255}; }
+
+// A linear RGBA colour: sRGB levels and the alpha level.
+inline Rgba8 encodePixel(glm::vec4 linear) {
+  return {encodeLevel(linear.r), encodeLevel(linear.g), encodeLevel(linear.b), alphaLevel(linear.a)};
+}
 
 }  // namespace facet

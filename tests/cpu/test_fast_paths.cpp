@@ -6,6 +6,8 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
+#include <iterator>
 #include <limits>
 #include <random>
 #include <set>
@@ -16,7 +18,10 @@
 #include "cpu/cpu_renderer.h"
 #include "cpu/lighting.h"
 #include "cpu/phong_batch.h"
+#include "cpu/resolve.h"
+#include "cpu/thread_pool.h"
 #include "cpu/srgb_table.h"
+#include "image/color_buffer.h"
 #include "image/srgb.h"
 #include "pipeline/frame_inputs.h"
 #include "scene/default_scene.h"
@@ -84,6 +89,40 @@ TEST_CASE("sRGB buckets: encodeLevel equals the thresholds' binary search for ev
   CHECK(mismatches4 == 0);
 }
 
+TEST_CASE("Resolve: the CPU's four-channel resolve gives encodePixel's bytes for every pixel, alpha by its own linear rule") {
+  std::mt19937 random(174);
+  std::uniform_real_distribution<float> value(-0.25f, 1.25f);
+  constexpr int kWidth = 67, kHeight = 13;  // rows split unevenly across the workers
+  ColorBuffer buffer(kWidth, kHeight, glm::vec4(0.0f));
+  const float specials[] = {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(), -0.0f, 0.5f, 1.0f, 127.5f / 255.0f};
+  for (int i = 0; i < kWidth * kHeight; ++i) {
+    glm::vec4& c = buffer.data()[i];
+    c = {value(random), value(random), value(random), value(random)};
+    if (i % 7 == 0) c[i % 4] = specials[static_cast<std::size_t>(i / 7) % std::size(specials)];
+  }
+  cpu::ThreadPool pool(3);
+  Image image;
+  cpu::resolve(pool, buffer, image);
+  REQUIRE(image.width() == kWidth);
+  REQUIRE(image.height() == kHeight);
+  int differing = 0;
+  std::set<int> alphas;
+  for (int i = 0; i < kWidth * kHeight; ++i) {
+    differing += image.data()[i] == encodePixel(buffer.data()[i]) ? 0 : 1;
+    alphas.insert(image.data()[i].a);
+  }
+  CHECK(differing == 0);
+  CHECK(alphas.size() > 200);  // alpha is carried, not set to 255
+  // floor(255·a + 0.5) of the clamped alpha, NaN to 0.
+  CHECK(alphaLevel(0.0f) == 0);
+  CHECK(alphaLevel(1.0f) == 255);
+  CHECK(alphaLevel(0.5f) == 128);
+  CHECK(alphaLevel(0.4999f) == 127);
+  CHECK(alphaLevel(-3.0f) == 0);
+  CHECK(alphaLevel(7.0f) == 255);
+  CHECK(alphaLevel(std::numeric_limits<float>::quiet_NaN()) == 0);
+}
+
 TEST_CASE("CPU renderer: the image does not depend on the thread count, nor on the frames rendered before") {
   const Scene scene = makeDefaultScene();
   for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) {
@@ -143,7 +182,7 @@ TEST_CASE("Phong batch: four lanes at a time give the bits of illuminate<float>,
       for (float& d : maps.depth) d = unit(random);  // some texels nearer than the points, some farther
 
       constexpr int kPixels = 4001;  // not a multiple of the four lanes
-      Image batched(kPixels, 1), scalar(kPixels, 1);
+      ColorBuffer batched(kPixels, 1, glm::vec4(0.0f)), scalar(kPixels, 1, glm::vec4(0.0f));
       std::deque<CourseMaterial> materials;  // each pixel its own material; the batch keeps pointers until it shades
       cpu::PhongBatch batch(frame, maps, batched.data());
       for (int i = 0; i < kPixels; ++i) {
@@ -159,17 +198,17 @@ TEST_CASE("Phong batch: four lanes at a time give the bits of illuminate<float>,
         materials.push_back(material);
         batch.add(static_cast<std::size_t>(i), P, interpolated, back, baseColor, materials.back(), materials.back().emissive, 0.0f);
         const glm::vec3 lit = back ? -cpu::normalize3(interpolated) : cpu::normalize3(interpolated);
-        scalar.at(i, 0) = encodePixel(cpu::shade(cpu::illuminate(frame, maps, cpu::laneMaterial(material), P, lit, cpu::viewVector<float>(frame, P)), baseColor));
+        scalar.at(i, 0) = glm::vec4(cpu::shade(cpu::illuminate(frame, maps, cpu::laneMaterial(material), P, lit, cpu::viewVector<float>(frame, P)), baseColor), 1.0f);
       }
       batch.flush();
       CAPTURE(static_cast<int>(model));
       CAPTURE(perspective);
       int differing = 0;
-      for (int i = 0; i < kPixels; ++i) differing += batched.at(i, 0) == scalar.at(i, 0) ? 0 : 1;
+      for (int i = 0; i < kPixels; ++i) differing += std::memcmp(&batched.at(i, 0), &scalar.at(i, 0), sizeof(glm::vec4)) == 0 ? 0 : 1;  // to the bit
       CHECK(differing == 0);
       // The comparison means something: lit, shadowed and unlit pixels all occur.
       std::set<int> levels;
-      for (int i = 0; i < kPixels; ++i) levels.insert(scalar.at(i, 0).r);
+      for (int i = 0; i < kPixels; ++i) levels.insert(encodeLevel(scalar.at(i, 0).r));
       CHECK(levels.size() > 100);
     }
 }

@@ -288,10 +288,10 @@ TEST_CASE("one renderer draws frame after frame: the same image again, then othe
   CHECK(first.image == second.image);
   std::vector<std::string> passes;
   for (const PassTiming& t : first.timings) passes.push_back(t.pass);
-  CHECK(passes == std::vector<std::string>{"scene upload", "shader compile + link", "shadow pass (6 maps)", "lit pass", "read-back"});
+  CHECK(passes == std::vector<std::string>{"scene upload", "shader compile + link", "shadow pass (6 maps)", "lit pass", "resolve", "read-back"});
   passes.clear();
   for (const PassTiming& t : second.timings) passes.push_back(t.pass);
-  CHECK(passes == std::vector<std::string>{"shadow pass (6 maps)", "lit pass", "read-back"});  // uploaded and compiled once
+  CHECK(passes == std::vector<std::string>{"shadow pass (6 maps)", "lit pass", "resolve", "read-back"});  // uploaded and compiled once
 
   RenderSettings other = test::smallSettings(ShadingMode::Flat, false, false);
   other.width = 97;

@@ -61,7 +61,7 @@ std::vector<glm::vec4> evaluate(const std::string& expression, const std::vector
                             "void main() {\n  vec4 a = texelFetch(inputA, ivec2(gl_FragCoord.xy), 0), b = texelFetch(inputB, ivec2(gl_FragCoord.xy), 0);\n"
                             "  value = " + expression + ";\n}\n";
   const FrameInputs frame = buildFrameInputs(makeDefaultScene(), RenderSettings{});
-  const gl::ShaderProgram program = gl::buildProgram(gl, {"background.vert", "probe.frag"}, gl::litShaderDefines(frame, {}), [&](std::string_view name) {
+  const gl::ShaderProgram program = gl::buildProgram(gl, {"viewport_triangle.vert", "probe.frag"}, gl::litShaderDefines(frame, {}), [&](std::string_view name) {
     return name == "probe.frag" ? std::optional<std::string_view>(probe) : gl::findEmbeddedShaderFile(name);
   });
   gl.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
@@ -148,6 +148,20 @@ TEST_CASE("shader arithmetic: the sRGB level of a linear value, at every thresho
   CHECK(mismatches("vec4(float(encodeLevel(a.x)), float(encodeLevel(a.y)), float(encodeLevel(a.z)), float(encodeLevel(a.w)))", c, c,
                    [](const glm::vec4& x, const glm::vec4&) {
                      return glm::vec4(encodeLevel(x.x), encodeLevel(x.y), encodeLevel(x.z), encodeLevel(x.w));
+                   }) == 0);
+}
+
+TEST_CASE("shader arithmetic: the resolve's alpha level, at every level's boundary and the floats beside it, as the CPU's") {
+  std::mt19937 rng(14);
+  std::vector<glm::vec4> a = random(rng, -0.1f, 1.1f);
+  for (int k = 0; k < 256; ++k) {  // (k - 0.5)/255, where floor(255·a + 0.5) steps, and its neighbours
+    const float edge = (static_cast<float>(k) - 0.5f) / 255.0f;
+    a[static_cast<std::size_t>(k)] = {edge, std::nextafter(edge, -1.0f), std::nextafter(edge, 2.0f), static_cast<float>(k) / 255.0f};
+  }
+  a[256] = {std::nanf(""), -0.0f, 1.0f, 1e9f};
+  CHECK(mismatches("vec4(float(alphaLevel(a.x)), float(alphaLevel(a.y)), float(alphaLevel(a.z)), float(alphaLevel(a.w)))", a, a,
+                   [](const glm::vec4& x, const glm::vec4&) {
+                     return glm::vec4(alphaLevel(x.x), alphaLevel(x.y), alphaLevel(x.z), alphaLevel(x.w));
                    }) == 0);
 }
 

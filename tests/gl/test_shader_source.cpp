@@ -87,7 +87,7 @@ TEST_CASE("every shader file is embedded, and every program of the backend compi
     CHECK_NOTHROW(buildProgram(harness.gl, {"shadow_depth.vert", "shadow_depth.frag"}, defines));
     CHECK_NOTHROW(buildProgram(harness.gl, {"triangle_id.vert", "triangle_id.frag"}, defines));
   }
-  CHECK_NOTHROW(buildProgram(harness.gl, {"background.vert", "background.frag"}));
+  CHECK_NOTHROW(buildProgram(harness.gl, {"viewport_triangle.vert", "background.frag"}));
   // Each fog mode, in the lit programs (every texture and map on) and the line program.
   for (FogMode fog : {FogMode::None, FogMode::Linear, FogMode::Exponential, FogMode::Exponential2}) {
     RenderSettings settings;
@@ -110,7 +110,7 @@ TEST_CASE("a shader that does not compile: facet::Error names the file and line,
       {"helper.glsl", "vec4 helper() {\n  return undeclaredThing;\n}\n"},
   };
   try {
-    buildProgram(harness.gl, {"background.vert", "broken.frag"}, "", lookupIn(files));
+    buildProgram(harness.gl, {"viewport_triangle.vert", "broken.frag"}, "", lookupIn(files));
     FAIL("expected facet::Error");
   } catch (const Error& e) {
     const std::string message = e.what();
@@ -128,7 +128,7 @@ TEST_CASE("defines after #version leave the driver's line numbers those of the f
       {"broken.frag", "#version 450 core\nout vec4 color;\nvoid main() { color = vec4(FACET_VALUE) + undeclaredThing; }\n"},
   };
   try {
-    buildProgram(harness.gl, {"background.vert", "broken.frag"}, "#define FACET_VALUE 1.0\n#define FACET_OTHER 2\n", lookupIn(files));
+    buildProgram(harness.gl, {"viewport_triangle.vert", "broken.frag"}, "#define FACET_VALUE 1.0\n#define FACET_OTHER 2\n", lookupIn(files));
     FAIL("expected facet::Error");
   } catch (const Error& e) {
     const std::string message = e.what();

@@ -42,7 +42,7 @@ TEST_CASE("a base colour texel reaches the shader as its byte and decodes to the
   // texel() of shaders/texture.glsl: the bytes, decoded by the SrgbTables block.
   const std::string probe = "#version 450 core\n#include \"shading_math.glsl\"\n#include \"srgb.glsl\"\n#include \"texture.glsl\"\nlayout(binding = 1) uniform usampler2D image;\n"
                             "out vec4 value;\nvoid main() { value = texel(image, 0, int(gl_FragCoord.x), 0, true); }\n";
-  const gl::ShaderProgram program = gl::buildProgram(gl, {"background.vert", "probe.frag"}, "", [&](std::string_view name) {
+  const gl::ShaderProgram program = gl::buildProgram(gl, {"viewport_triangle.vert", "probe.frag"}, "", [&](std::string_view name) {
     return name == "probe.frag" ? std::optional<std::string_view>(probe) : gl::findEmbeddedShaderFile(name);
   });
   gl.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());

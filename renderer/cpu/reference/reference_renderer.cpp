@@ -11,7 +11,7 @@
 //   shading         flat, Gouraud or Phong: the illumination equation      (lighting.h)
 //
 // Pass 1 draws every triangle into each light's depth maps; pass 2 draws
-// them into the image. No tiles, threads or batches: the fast renderer
+// them into a linear colour buffer, resolved to the image. No tiles, threads or batches: the fast renderer
 // (cpu_renderer.cpp) gets the same pixels by the same rules.
 #include "cpu/fog.h"
 #include "cpu/reference/reference_renderer.h"
@@ -46,11 +46,11 @@ namespace {
 
 using namespace cpu;
 
-// A z-buffer, and in the lit pass the image (or the triangle ids) it guards.
+// A z-buffer, and in the lit pass the colour buffer (or the triangle ids) it guards.
 struct Target {
   int width = 0, height = 0;
   std::vector<float> depth;                   // window z, cleared to 1
-  Image* image = nullptr;                     // pass 2: the colour of each kept fragment
+  ColorBuffer* color = nullptr;               // pass 2: the linear colour of each kept fragment
   std::vector<std::uint32_t>* ids = nullptr;  // or which triangle it came from
   std::vector<std::uint32_t>* counts = nullptr;  // or how many fragments each pixel received (no test, nothing drawn)
 };
@@ -96,10 +96,10 @@ void drawTriangle(const ClipVertex (&vertex)[3], int varyingCount, bool cullBack
       if (keep && !keep(planes, px, py)) return;
       target.depth[pixel] = z;
       if (target.ids) (*target.ids)[pixel] = id;
-      if (!target.image) return;
+      if (!target.color) return;
       float varyings[kMaxVaryings];
       planes.varyingsAt(px, py, varyings);
-      target.image->at(px, py) = encodePixel(shade(varyings, snapped.frontFacing, planes, px, py));
+      target.color->at(px, py) = glm::vec4(shade(varyings, snapped.frontFacing, planes, px, py), 1.0f);
     });
   }
 }
@@ -281,7 +281,7 @@ void linePass(const Scene& scene, const FrameInputs& frame, Target& target) {
       addPoint(v, toWindow(v, halfWidth, halfHeight, 3), frame, baseColor, lines);
     }
   }
-  drawLines(frame, lines, {0, 0, frame.width - 1, frame.height - 1}, target.depth.data(), frame.width, *target.image);
+  drawLines(frame, lines, {0, 0, frame.width - 1, frame.height - 1}, target.depth.data(), frame.width, *target.color);
 }
 
 // The reference follows one triangle at a time through the z-buffer, its only hidden-surface removal.
@@ -301,13 +301,17 @@ class ReferenceRenderer final : public Renderer {
     const auto start = std::chrono::steady_clock::now();
     const ShadowMaps maps = shadowPass(scene, frame);
     RenderResult result;
-    result.image = Image(frame.width, frame.height, encodePixel(frame.background));
+    ColorBuffer color(frame.width, frame.height, glm::vec4(frame.background, 1.0f));
     for (int y = 0; y < frame.height; ++y)
-      for (int x = 0; x < frame.width; ++x) result.image.at(x, y) = encodePixel(backgroundAt(frame, x, y));
+      for (int x = 0; x < frame.width; ++x) color.at(x, y) = glm::vec4(backgroundAt(frame, x, y), 1.0f);
     Target target{frame.width, frame.height, std::vector<float>(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 1.0f)};
-    target.image = &result.image;
+    target.color = &color;
     litPass(scene, frame, maps, target);
     linePass(scene, frame, target);
+    // The resolve, one pixel at a time (cpu/resolve.cpp does it four channels at once).
+    result.image = Image(frame.width, frame.height);
+    for (int y = 0; y < frame.height; ++y)
+      for (int x = 0; x < frame.width; ++x) result.image.at(x, y) = encodePixel(color.at(x, y));
     result.timings.push_back({"both passes", std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count()});
     return result;
   }

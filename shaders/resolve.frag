@@ -1,0 +1,13 @@
+#version 450 core
+// The resolve (renderer/PIPELINE.md, section 7, "The colour buffer and the
+// resolve"): the lit pass's linear RGBA, read texel for texel, encoded
+// once into the RGBA8 image. Mirror: renderer/cpu/resolve.cpp.
+#include "srgb.glsl"
+
+layout(binding = 8) uniform sampler2D linearColor;  // the RGBA32F colour buffer (kResolveUnit)
+
+layout(location = 0) out vec4 color;
+
+void main() {
+  color = encodeSrgb(texelFetch(linearColor, ivec2(gl_FragCoord.xy), 0));
+}
