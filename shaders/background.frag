@@ -7,10 +7,11 @@
 #include "texture.glsl"
 #include "environment.glsl"
 
-uniform vec2 viewportSize;  // W, H
+uniform vec2 viewportSize;     // W, H
+uniform float backgroundAlpha;  // alpha of empty pixels
 
 layout(location = 0) out vec4 color;
 
 void main() {
-  color = vec4(backgroundAt(gl_FragCoord.xy, viewportSize), 1.0);
+  color = vec4(backgroundAt(gl_FragCoord.xy, viewportSize), backgroundAlpha);
 }

@@ -40,11 +40,11 @@ class CpuRenderer final : public Renderer {
     shadowPasses(scene, frame, result);
 
     const auto start = std::chrono::steady_clock::now();
-    color_.reset(frame.width, frame.height, glm::vec4(frame.background, 1.0f));
+    color_.reset(frame.width, frame.height, glm::vec4(frame.background, frame.backgroundAlpha));
     if (cpu::showsEnvironment(frame))  // the map behind everything, in each pixel's view direction
       cpu::forEachRange(pool_, static_cast<std::size_t>(frame.height), [&](std::size_t begin, std::size_t end, int) {
         for (std::size_t y = begin; y < end; ++y)
-          for (int x = 0; x < frame.width; ++x) color_.at(x, static_cast<int>(y)) = glm::vec4(cpu::backgroundAt(frame, x, static_cast<int>(y)), 1.0f);
+          for (int x = 0; x < frame.width; ++x) color_.at(x, static_cast<int>(y)) = glm::vec4(cpu::backgroundAt(frame, x, static_cast<int>(y)), frame.backgroundAlpha);
       });
     cpu::litPass(pool_, buffers_, scene, frame, maps_, color_);
     result.timings.push_back({"lit pass", millisecondsSince(start)});

@@ -321,6 +321,7 @@ bool GlFrameRenderer::preparePrograms(const FrameInputs& frame) {
   if (!backgroundProgram_) {
     backgroundProgram_.emplace(buildProgram(gl_, {"viewport_triangle.vert", "background.frag"}));
     backgroundViewportSize_ = uniformLocation(gl_, *backgroundProgram_, "viewportSize");
+    backgroundAlpha_ = uniformLocation(gl_, *backgroundProgram_, "backgroundAlpha");
     compiled = true;
   }
   if (!resolveProgram_) {
@@ -387,6 +388,7 @@ void GlFrameRenderer::litPass(const FrameInputs& frame) {
   gl_.glUseProgram(backgroundProgram_->id());
   gl_.glProgramUniform2f(backgroundProgram_->id(), backgroundViewportSize_, static_cast<float>(frame.width),
                          static_cast<float>(frame.height));
+  gl_.glProgramUniform1f(backgroundProgram_->id(), backgroundAlpha_, frame.backgroundAlpha);
   gl_.glBindVertexArray(emptyVertexArray_.id());
   gl_.glDrawArrays(GL_TRIANGLES, 0, 3);
 

@@ -121,6 +121,7 @@ class GlFrameRenderer {
   std::map<int, DepthProgram> depthPrograms_;  // by DrawVariant::index(); only masked draws differ
   std::optional<ShaderProgram> backgroundProgram_;
   GLint backgroundViewportSize_ = -1;  // its uniform vec2 viewportSize
+  GLint backgroundAlpha_ = -1;         // its uniform float backgroundAlpha
   std::optional<ShaderProgram> resolveProgram_;
   struct LineProgram {
     GLint clipFromModel, colored, baseColorFactor;

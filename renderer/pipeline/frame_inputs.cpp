@@ -143,6 +143,7 @@ FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings)
   if (f.hsr == HiddenSurface::Painter) f.paintersOrder = paintersOrder(scene, f);
   f.shadows = settings.shadows;
   f.background = settings.background;
+  f.backgroundAlpha = settings.backgroundAlpha;
   checkFrame(scene, f);
   return f;
 }

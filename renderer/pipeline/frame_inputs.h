@@ -71,6 +71,7 @@ struct FrameInputs {
   ShadowSettings shadows;
   int shadowLayerCount = 0;       // S×S depth maps over all lights: one per face
   glm::vec3 background{0.0f};    // linear RGB
+  float backgroundAlpha = 1.0f;   // alpha of empty pixels (the environment map's too)
   // Environment mapping (PIPELINE.md, section 8). `map` points into the Scene
   // the frame was built from (its environment), null when there is none.
   struct Environment {

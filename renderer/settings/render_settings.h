@@ -165,6 +165,7 @@ struct RenderSettings {
   EnvironmentSettings environment;
   FogSettings fog;
   glm::vec3 background{0.02f, 0.025f, 0.035f};  // linear RGB
+  float backgroundAlpha = 1.0f;                  // the colour buffer's alpha where no surface is drawn
 };
 
 }  // namespace facet

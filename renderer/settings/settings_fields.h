@@ -104,6 +104,7 @@ void visitSettings(Visitor& v, RenderSettings& s) {
     v.field({"density", "exponential and exponential2: density per world unit", 0, 1e3}, f.density);
   });
   v.field({"background", "linear RGB of empty pixels, each in [0, 1]", 0, 1, FieldKind::Color}, s.background);
+  v.field({"backgroundAlpha", "alpha of empty pixels in the PNG: 1 opaque, 0 transparent (as F3D's --no-background)", 0, 1}, s.backgroundAlpha);
 }
 
 }  // namespace facet

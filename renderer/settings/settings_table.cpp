@@ -14,7 +14,12 @@ std::string number(double v) {
   return std::string(text, end);
 }
 
-std::string vec3(glm::vec3 v) { return "[" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + "]"; }
+// Appended piece by piece: GCC 12's -Wrestrict misreads the inlined chain of operator+ here.
+std::string vec3(glm::vec3 v) {
+  std::string text = "[";
+  for (int k = 0; k < 3; ++k) text.append(k ? ", " : "").append(number(v[k]));
+  return text.append("]");
+}
 
 struct TableWriter {
   std::string prefix;

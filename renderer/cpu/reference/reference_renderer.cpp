@@ -301,9 +301,9 @@ class ReferenceRenderer final : public Renderer {
     const auto start = std::chrono::steady_clock::now();
     const ShadowMaps maps = shadowPass(scene, frame);
     RenderResult result;
-    ColorBuffer color(frame.width, frame.height, glm::vec4(frame.background, 1.0f));
+    ColorBuffer color(frame.width, frame.height, glm::vec4(frame.background, frame.backgroundAlpha));
     for (int y = 0; y < frame.height; ++y)
-      for (int x = 0; x < frame.width; ++x) color.at(x, y) = glm::vec4(backgroundAt(frame, x, y), 1.0f);
+      for (int x = 0; x < frame.width; ++x) color.at(x, y) = glm::vec4(backgroundAt(frame, x, y), frame.backgroundAlpha);
     Target target{frame.width, frame.height, std::vector<float>(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 1.0f)};
     target.color = &color;
     litPass(scene, frame, maps, target);
