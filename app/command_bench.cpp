@@ -110,8 +110,11 @@ BenchScene sphereScene(const std::string& name, int level, bool shadows, int wid
 }
 
 // Ten screen-filling quads drawn back to front: every pixel shaded ~10 times.
-BenchScene fillScene(int width, int height) {
-  BenchScene b{"fill-10x", {}, manualSettings(width, height)};
+// Blended (material.opacity 0.5), each of those fragments is also blended:
+// transparency's per-fragment path, with no visibility-first shortcut.
+BenchScene fillScene(const std::string& name, bool blended, int width, int height) {
+  BenchScene b{name, {}, manualSettings(width, height)};
+  if (blended) b.settings.material.opacity = 0.5f;
   b.scene.source = b.name;
   for (int i = 0; i < 10; ++i) {
     const float z = -9.0f + static_cast<float>(i);  // farthest first
@@ -144,14 +147,17 @@ BenchScene defaultScene(int width, int height) {
   return b;
 }
 
-std::vector<std::string> allSceneNames() { return {"sphere-100k", "sphere-1m", "sphere-100k-shadow", "sphere-1m-shadow", "fill-10x", "default"}; }
+std::vector<std::string> allSceneNames() {
+  return {"sphere-100k", "sphere-1m", "sphere-100k-shadow", "sphere-1m-shadow", "fill-10x", "fill-10x-blended", "default"};
+}
 
 BenchScene makeBenchScene(const std::string& name, int width, int height) {
   if (name == "sphere-100k") return sphereScene(name, kSphere100k, false, width, height);
   if (name == "sphere-1m") return sphereScene(name, kSphere1M, false, width, height);
   if (name == "sphere-100k-shadow") return sphereScene(name, kSphere100k, true, width, height);
   if (name == "sphere-1m-shadow") return sphereScene(name, kSphere1M, true, width, height);
-  if (name == "fill-10x") return fillScene(width, height);
+  if (name == "fill-10x") return fillScene(name, false, width, height);
+  if (name == "fill-10x-blended") return fillScene(name, true, width, height);
   if (name == "default") return defaultScene(width, height);
   throw Error("bench: unknown scene '" + name + "'");
 }
@@ -282,7 +288,7 @@ int runCallgrindMode(const BenchOptions& o, int width, int height) {
 Command addBenchCommand(CLI::App& app) {
   auto o = std::make_shared<BenchOptions>();
   CLI::App* command = app.add_subcommand("bench", "Benchmark the CPU rasterizer against OpenGL on llvmpipe, same scenes, same threads");
-  command->add_option("--scenes", o->scenes, "scenes (default: all): sphere-100k sphere-1m sphere-100k-shadow sphere-1m-shadow fill-10x default")
+  command->add_option("--scenes", o->scenes, "scenes (default: all): sphere-100k sphere-1m sphere-100k-shadow sphere-1m-shadow fill-10x fill-10x-blended default")
       ->delimiter(',')
       ->check(CLI::IsMember(allSceneNames()));
   command->add_option("--backends", o->backends, "cpu,gl (default both)")->delimiter(',')->check(CLI::IsMember({"cpu", "gl"}));

@@ -32,10 +32,13 @@ std::string describe(const Scene& scene, const RenderSettings& settings) {
   out << "materials: " << scene.materials.size() << "\n";
   for (std::size_t i = 0; i < scene.materials.size(); ++i) {
     const Material& m = scene.materials[i];
-    const CourseMaterial c = courseMaterial(m, settings.material);
+    const CourseMaterial c = courseMaterial(m, settings.material, settings.transparency);
     out << "  " << i << " '" << m.name << "': base colour " << str(glm::vec3(m.baseColor)) << (m.baseColorTexture >= 0 ? " x texture" : "")
         << ", metallic " << m.metallic << ", roughness " << m.roughness << " -> k_a " << c.ka << ", k_d " << c.kd << ", k_s " << c.ks
-        << ", n " << c.shininess << (m.doubleSided ? ", double-sided" : "") << "\n";
+        << ", n " << c.shininess << (m.doubleSided ? ", double-sided" : "");
+    if (c.blended) out << ", blended (alpha " << c.baseAlpha << ")";
+    else if (c.masked) out << ", masked at alpha " << c.alphaCutoff;
+    out << "\n";
   }
   out << "textures: " << scene.textures.size() << "\n";
   for (std::size_t i = 0; i < scene.textures.size(); ++i)

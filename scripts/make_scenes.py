@@ -1163,6 +1163,65 @@ def painter():
     return g
 
 
+def glass_texture(size=64):
+    """Frosted glass with a clear window: alpha 0.85 at the rim falling to
+    0.15 in a round window at the middle, and opaque white lead lines
+    (alpha 1) on a 4 x 4 grid, so the base colour texture's alpha varies
+    from nearly clear to opaque across one pane."""
+    def pixel(x, y):
+        u, v = (x + 0.5) / size * 2 - 1, (y + 0.5) / size * 2 - 1
+        r = math.sqrt(u * u + v * v)
+        a = 0.15 + 0.7 * max(0.0, min(1.0, (r - 0.35) / 0.4))
+        lead = max(abs((u + 1) * 2 % 1 - 0.5), abs((v + 1) * 2 % 1 - 0.5)) > 0.45
+        if lead:
+            return (235, 235, 230, 255)
+        return (200, 225, 255, int(round(255 * a)))
+    return png(size, size, pixel, alpha=True)
+
+
+def transparency():
+    g = Gltf("Transparency (alphaMode BLEND): blended surfaces are drawn after the opaque ones, back to front, "
+             "depth-tested without depth writes. Left: three tinted panes (red, green, blue, alpha 0.5) one behind "
+             "the other, overlapping, so each overlap shows two or three of them mixed. Middle: a glass ball "
+             "(alpha 0.3, double-sided) around an opaque gold cube: its back faces blend behind the cube, its front "
+             "faces over it; with transparency.sort=object a double-sided ball's own faces come in file order, with "
+             "triangle they come back to front. Right: a frosted pane whose texture alpha runs from 0.85 at the rim to 0.15 in "
+             "its window, with opaque leading; in front, a ramp whose COLOR_0 alpha runs from 0 to 1. At the back, "
+             "two crossing panes (amber, violet) pass through each other: no back-to-front order of the two exists, "
+             "so one half of their crossing blends in the wrong order, the painter's algorithm's failure. "
+             "Blended fragments cast shadows where alpha >= transparency.shadowCutoff (0.5): the tinted panes and "
+             "the leading do, the ball and the window do not.")
+    for k, (name, color) in enumerate((("red pane", (0.9, 0.1, 0.1, 0.5)), ("green pane", (0.1, 0.8, 0.2, 0.5)),
+                                       ("blue pane", (0.15, 0.3, 0.95, 0.5)))):
+        material = g.add_material(name, color, 0.0, 0.4, double_sided=True, alpha_mode="BLEND")
+        g.add_node(name, g.add_mesh(name, g.primitive(quad(0.9, 1.1), material)),
+                   translation=(-2.0 + 0.35 * k, 0.6 + 0.1 * k, 0.5 - 0.45 * k), rotation=axis_angle((0, 1, 0), 20))
+    gold = g.add_material("gold cube", (1.0, 0.75, 0.3, 1), 1.0, 0.35)
+    g.add_node("gold cube", g.add_mesh("gold cube", g.primitive(cube(0.5), gold)), translation=(-0.3, 0.25, 0.8),
+               rotation=axis_angle((0, 1, 0), 30))
+    glass = g.add_material("glass ball", (0.75, 0.9, 1.0, 0.3), 0.0, 0.05, double_sided=True, alpha_mode="BLEND")
+    g.add_node("glass ball", g.add_mesh("glass ball", g.primitive(uv_sphere(0.6, 32, 16), glass)), translation=(-0.3, 0.6, 0.8))
+    image = g.add_image("frosted glass 64x64 RGBA", glass_texture())
+    texture = g.add_texture(image, g.add_sampler(LINEAR, LINEAR_MIPMAP_LINEAR, CLAMP_TO_EDGE, CLAMP_TO_EDGE))
+    frosted = g.add_material("frosted pane", (1, 1, 1, 1), 0.0, 0.3, texture=texture, double_sided=True, alpha_mode="BLEND")
+    g.add_node("frosted pane", g.add_mesh("frosted pane", g.primitive(quad(1.1, 1.1), frosted)), translation=(1.9, 0.75, -0.1),
+               rotation=axis_angle((0, 1, 0), -20))
+    ramp = quad(1.2, 0.35)
+    colors = g.add_accessor([(0.95, 0.5, 0.1, 0.0), (0.95, 0.5, 0.1, 1.0), (0.95, 0.5, 0.1, 1.0), (0.95, 0.5, 0.1, 0.0)], "VEC4")
+    material = g.add_material("alpha ramp", (1, 1, 1, 1), 0.0, 0.6, double_sided=True, alpha_mode="BLEND")
+    g.add_node("alpha ramp", g.add_mesh("alpha ramp", g.primitive(ramp, material, colors=colors)), translation=(1.5, 0.2, 0.9))
+    for name, color, turn in (("amber pane", (0.95, 0.6, 0.1, 0.6), 35), ("violet pane", (0.55, 0.25, 0.85, 0.6), -35)):
+        material = g.add_material(name, color, 0.0, 0.5, double_sided=True, alpha_mode="BLEND")
+        g.add_node(name, g.add_mesh(name, g.primitive(quad(1.3, 0.9), material)), translation=(0.7, 0.9, -1.4),
+                   rotation=axis_angle((0, 1, 0), turn))
+    wall = g.add_material("wall", (0.75, 0.72, 0.68, 1), 0.0, 0.9)
+    g.add_node("wall", g.add_mesh("wall", g.primitive(quad(7, 3), wall)), translation=(0, 1.5, -2.6))
+    add_ground(g, 8, 7)
+    g.add_camera("camera", (0.2, 2.6, 6.4), (0.0, 0.6, -0.4))
+    g.add_light("key", "point", (2.0, 4.0, 3.5), intensity=20)
+    return g
+
+
 def write_png(path, png_bytes):
     os.makedirs(os.path.dirname(path), exist_ok=True)
     with open(path, "wb") as out:
@@ -1349,6 +1408,7 @@ SCENES = [
     (ASSETS_DIR, "bump.gltf", bump),
     (ASSETS_DIR, "fog.gltf", fog),
     (ASSETS_DIR, "painter.gltf", painter),
+    (ASSETS_DIR, "transparency.gltf", transparency),
 ]
 
 

@@ -6,12 +6,14 @@
 #include "srgb.glsl"
 #include "texture.glsl"
 #include "environment.glsl"
+#include "blending.glsl"
 
 uniform vec2 viewportSize;     // W, H
 uniform float backgroundAlpha;  // alpha of empty pixels
+uniform bool premultiplied;     // blending=premultiplied: the buffer holds C·a
 
 layout(location = 0) out vec4 color;
 
 void main() {
-  color = vec4(backgroundAt(gl_FragCoord.xy, viewportSize), backgroundAlpha);
+  color = stored(backgroundAt(gl_FragCoord.xy, viewportSize), backgroundAlpha, premultiplied);
 }

@@ -11,6 +11,8 @@
 #include "environment.glsl"
 #include "lighting.glsl"
 #include "fog.glsl"
+#include "blending.glsl"
+#include "lit_output.glsl"
 
 flat in vec3 frontDiffuse;
 flat in vec3 frontSpecular;
@@ -20,7 +22,6 @@ in vec4 st;  // TEXCOORD_0 in xy, TEXCOORD_1 in zw
 in vec4 vertexColor;
 in vec3 modelPoint;
 
-layout(location = 0) out vec4 color;
 
 void main() {
   Texcoords t = texcoordsAt(st);  // in uniform control flow, before anything can branch
@@ -31,5 +32,5 @@ void main() {
   precise vec3 specular = emissionAt(t) + I.specular;  // summed with k_e = 0 (summedMaterial)
   I.specular = specular;
 #endif
-  color = vec4(fogged(shade(I, O.rgb)), 1.0);
+  writeLit(fogged(shade(I, O.rgb)), O.a);
 }

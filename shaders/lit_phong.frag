@@ -15,6 +15,8 @@
 #include "normal_mapping.glsl"
 #include "bump_mapping.glsl"
 #include "fog.glsl"
+#include "blending.glsl"
+#include "lit_output.glsl"
 
 in vec3 worldPosition;
 in vec3 worldNormal;
@@ -23,7 +25,6 @@ in vec4 vertexColor;
 in vec3 modelPoint;
 in vec4 worldTangent;
 
-layout(location = 0) out vec4 color;
 
 void main() {
   Texcoords t = texcoordsAt(st);  // in uniform control flow, before anything can branch
@@ -40,12 +41,12 @@ void main() {
   vec4 O = baseColorAt(t, vertexColor, modelPoint);
   if (!alphaKept(O.a)) discard;  // alpha mask (a no-op unless FACET_MASKED)
 #if FACET_PBR
-  color = vec4(fogged(shadePhysicallyBased(pbrSurfaceAt(O.rgb, t), P, N, viewVector(P))), 1.0);
+  writeLit(fogged(shadePhysicallyBased(pbrSurfaceAt(O.rgb, t), P, N, viewVector(P))), O.a);
 #else
   CourseMaterial lit = material;
 #if FACET_EMISSIVE_MAP
   lit.emissive = emissionAt(t);  // k_e·E in k_e's place
 #endif
-  color = vec4(fogged(shade(illuminate(lit, P, N, viewVector(P)), O.rgb)), 1.0);
+  writeLit(fogged(shade(illuminate(lit, P, N, viewVector(P)), O.rgb)), O.a);
 #endif
 }

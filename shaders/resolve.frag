@@ -1,13 +1,17 @@
 #version 450 core
 // The resolve (renderer/PIPELINE.md, section 7, "The colour buffer and the
 // resolve"): the lit pass's linear RGBA, read texel for texel, encoded
-// once into the RGBA8 image. Mirror: renderer/cpu/resolve.cpp.
+// once into the RGBA8 image, straight (a premultiplied buffer's colour
+// divided by its alpha first). Mirror: renderer/cpu/resolve.cpp.
 #include "srgb.glsl"
+#include "blending.glsl"
+
+uniform bool premultiplied;  // blending=premultiplied: the buffer holds C·a
 
 layout(binding = 8) uniform sampler2D linearColor;  // the RGBA32F colour buffer (kResolveUnit)
 
 layout(location = 0) out vec4 color;
 
 void main() {
-  color = encodeSrgb(texelFetch(linearColor, ivec2(gl_FragCoord.xy), 0));
+  color = encodeSrgb(unstored(texelFetch(linearColor, ivec2(gl_FragCoord.xy), 0), premultiplied));
 }

@@ -23,11 +23,11 @@ inline float fragmentAlpha(const CourseMaterial& material, const float* vertexAl
 
 inline bool alphaKept(const CourseMaterial& material, float alpha) { return alpha >= material.alphaCutoff; }
 
-// The test at pixel (px, py) of a triangle whose planes `in` has set up up to
-// the layout's vertex colour (`texture`: the base colour texture, null when
-// the material or the mesh has none).
-inline bool keepsFragment(const CourseMaterial& material, const Texture* texture, bool colored, VaryingLayout layout, const Interpolation& in,
-                          int px, int py) {
+// α at pixel (px, py) of a triangle whose planes `in` has set up up to the
+// layout's vertex colour (`texture`: the base colour texture, null when the
+// material or the mesh has none).
+inline float fragmentAlphaAt(const CourseMaterial& material, const Texture* texture, bool colored, VaryingLayout layout, const Interpolation& in,
+                             int px, int py) {
   glm::vec4 texel{1.0f};
   if (texture) {
     const int uv = layout.texcoord(material.baseColorSet);
@@ -35,7 +35,13 @@ inline bool keepsFragment(const CourseMaterial& material, const Texture* texture
     texel = sampleBaseColorTexture(*texture, material, st, in.quadDerivatives(uv, px, py));
   }
   const float vertexAlpha = colored ? in.varyingAt(layout.color + 3, px, py) : 1.0f;
-  return alphaKept(material, fragmentAlpha(material, colored ? &vertexAlpha : nullptr, texture ? &texel : nullptr));
+  return fragmentAlpha(material, colored ? &vertexAlpha : nullptr, texture ? &texel : nullptr);
+}
+
+// The mask's test there.
+inline bool keepsFragment(const CourseMaterial& material, const Texture* texture, bool colored, VaryingLayout layout, const Interpolation& in,
+                          int px, int py) {
+  return alphaKept(material, fragmentAlphaAt(material, texture, colored, layout, in, px, py));
 }
 
 }  // namespace facet::cpu

@@ -40,16 +40,16 @@ class CpuRenderer final : public Renderer {
     shadowPasses(scene, frame, result);
 
     const auto start = std::chrono::steady_clock::now();
-    color_.reset(frame.width, frame.height, glm::vec4(frame.background, frame.backgroundAlpha));
+    color_.reset(frame.width, frame.height, cpu::backgroundPixel(frame, 0, 0));
     if (cpu::showsEnvironment(frame))  // the map behind everything, in each pixel's view direction
       cpu::forEachRange(pool_, static_cast<std::size_t>(frame.height), [&](std::size_t begin, std::size_t end, int) {
         for (std::size_t y = begin; y < end; ++y)
-          for (int x = 0; x < frame.width; ++x) color_.at(x, static_cast<int>(y)) = glm::vec4(cpu::backgroundAt(frame, x, static_cast<int>(y)), frame.backgroundAlpha);
+          for (int x = 0; x < frame.width; ++x) color_.at(x, static_cast<int>(y)) = cpu::backgroundPixel(frame, x, static_cast<int>(y));
       });
     cpu::litPass(pool_, buffers_, scene, frame, maps_, color_);
     result.timings.push_back({"lit pass", millisecondsSince(start)});
     const auto resolveStart = std::chrono::steady_clock::now();
-    cpu::resolve(pool_, color_, result.image);
+    cpu::resolve(pool_, color_, frame.blending, result.image);
     result.timings.push_back({"resolve", millisecondsSince(resolveStart)});
     if (frame.hsr == HiddenSurface::Scanline) {
       const auto frameDepth = static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height) * sizeof(float);

@@ -7,6 +7,7 @@
 #include <glm/vec3.hpp>
 
 #include "cpu/texture_sampling.h"
+#include "cpu/blending.h"
 #include "pipeline/frame_inputs.h"
 #include "pipeline/light_frustum.h"
 #include "scene/scene.h"
@@ -43,5 +44,8 @@ inline glm::vec3 backgroundAt(const FrameInputs& frame, int px, int py) {
   const float y = (2.0f * (static_cast<float>(py) + 0.5f)) / static_cast<float>(frame.height) - 1.0f;
   return environmentAt(*e.map, (e.forward + x * e.right) + y * e.up, 0);
 }
+
+// What the colour buffer is cleared to at (px, py): its background with backgroundAlpha, as the frame's blending holds it.
+inline glm::vec4 backgroundPixel(const FrameInputs& frame, int px, int py) { return stored(backgroundAt(frame, px, py), frame.backgroundAlpha, frame.blending); }
 
 }  // namespace facet::cpu

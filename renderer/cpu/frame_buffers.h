@@ -23,6 +23,7 @@
 #include "cpu/lighting.h"
 #include "cpu/line_raster.h"
 #include "cpu/triangle_setup.h"
+#include "image/color_buffer.h"
 #include "scene/memory_budget.h"
 
 namespace facet::cpu {
@@ -71,6 +72,16 @@ struct WorkerBins {
     float depth[kTileSize * kTileSize];
     std::uint32_t id[kTileSize * kTileSize];         // index into `triangles`
     std::vector<TileTriangle> triangles;
+    // Transparency: the tile's blended triangles in their drawing order (their
+    // ids and pixel boxes), then, one triangle at a time, which pixels its
+    // fragments reach past the depth test and their α.
+    struct Blended {
+      std::uint32_t id;
+      PixelBox box;
+    };
+    std::vector<Blended> blended;
+    std::uint32_t fragment[kTileSize * kTileSize];   // the id of the blended triangle drawn there, or none
+    float alpha[kTileSize * kTileSize];
   } tile;
 
   const float* vertex(const PassVertices& v, std::uint32_t ref) const {
@@ -109,6 +120,10 @@ struct FrameBuffers {
   std::vector<WorkerBins> workers;
   std::vector<DrawnLine> lines;  // the lit pass's segments and points (line_pass.h)
   std::vector<std::uint32_t> visible;  // hsr = scanline: each pixel's polygon (scanline_zbuffer.h)
+  // Transparency: the lit pass's triangle order (the opaque ones, then
+  // FrameInputs::transparentOrder), and the blended fragments' colours before they blend.
+  std::vector<std::uint32_t> submission;
+  ColorBuffer fragments;
 };
 
 }  // namespace facet::cpu

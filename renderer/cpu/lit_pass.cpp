@@ -14,6 +14,7 @@
 
 #include "cpu/alpha_mask.h"
 #include "cpu/binning.h"
+#include "cpu/blending.h"
 #include "cpu/fog.h"
 #include "cpu/bump_mapping.h"
 #include "cpu/interpolation.h"
@@ -52,9 +53,12 @@ LaneMaterial<float> vertexMaterial(const CourseMaterial& material, const Mesh& m
 }
 
 // The fragment stage of one shading mode: no branch on the mode per pixel.
+// It shades the pixels of `box` (within tile r) where `ids` (the tile's, row
+// by row) names a triangle, and writes (colour, 1) there into `color`.
 template <ShadingMode kMode>
-void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, WorkerBins::TileScratch& scratch, int tx0, int ty0, int tx1,
-               int ty1, ColorBuffer& color) {
+void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, WorkerBins::TileScratch& scratch, const std::uint32_t* ids,
+               const TileRect& r, const TileRect& box, ColorBuffer& color) {
+  const int tx0 = box.x0, ty0 = box.y0, tx1 = box.x1, ty1 = box.y1;
   constexpr VaryingLayout layout = varyingLayout(kMode);
   std::uint32_t current = kNoTriangle;
   Interpolation* in = nullptr;
@@ -73,7 +77,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
   PhongBatch batch(frame, maps, color.data());  // Phong: four pixels' illumination at a time
   for (int py = ty0; py <= ty1; ++py)
     for (int px = tx0; px <= tx1; ++px) {
-      const std::uint32_t id = scratch.id[(py - ty0) * kTileSize + (px - tx0)];
+      const std::uint32_t id = ids[(py - r.y0) * kTileSize + (px - r.x0)];
       if (id == kNoTriangle) continue;  // the background the image was cleared to
       if (id != current) {
         current = id;
@@ -99,7 +103,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
 #if defined(__SSE2__)
       if constexpr (kMode == ShadingMode::Phong) {
         // Four pixels of one untextured, uncoloured triangle in a row: interpolation on four lanes, straight into the batch.
-        const std::uint32_t* row = &scratch.id[(py - ty0) * kTileSize + (px - tx0)];
+        const std::uint32_t* row = &ids[(py - r.y0) * kTileSize + (px - r.x0)];
         if (!texture && !colored && !procedural && !normalMap && !bumpable && !emissiveMap && !foggy && px + 3 <= tx1 && row[1] == id && row[2] == id && row[3] == id) {
           const __m128 w = in->inverseW4(px, py);
           const __m128 P[3] = {in->varying4(0, px, py, w), in->varying4(1, px, py, w), in->varying4(2, px, py, w)};
@@ -197,6 +201,54 @@ void gatherVisible(const std::vector<WorkerBins>& workers, const PolygonNumberin
     }
 }
 
+// Shading in the frame's mode.
+void shadeIn(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, WorkerBins::TileScratch& scratch, const std::uint32_t* ids,
+             const TileRect& r, const TileRect& box, ColorBuffer& color) {
+  switch (frame.shading) {
+    case ShadingMode::Pbr: shadeTile<ShadingMode::Pbr>(scene, frame, maps, scratch, ids, r, box, color); break;
+    case ShadingMode::Phong: shadeTile<ShadingMode::Phong>(scene, frame, maps, scratch, ids, r, box, color); break;
+    case ShadingMode::Gouraud: shadeTile<ShadingMode::Gouraud>(scene, frame, maps, scratch, ids, r, box, color); break;
+    default: shadeTile<ShadingMode::Flat>(scene, frame, maps, scratch, ids, r, box, color); break;
+  }
+}
+
+// Transparency (PIPELINE.md, section 7): the tile's blended triangles in
+// their order, after everything opaque. Each one's fragments that pass the
+// depth test (no depth write) get their α, are shaded as a visible fragment
+// is (into `fragments`), and blend into the colour buffer.
+void blendTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, VaryingLayout layout, WorkerBins::TileScratch& scratch,
+               const TileRect& r, ColorBuffer& fragments, ColorBuffer& color) {
+  std::fill(std::begin(scratch.fragment), std::end(scratch.fragment), kNoTriangle);
+  for (const WorkerBins::TileScratch::Blended& blended : scratch.blended) {
+    WorkerBins::TileTriangle& triangle = scratch.triangles[blended.id];
+    const BinnedTriangle& t = triangle.bins->triangles[triangle.index];
+    const FrameInstance& instance = frame.instances[t.instance];
+    const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
+    const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
+    const Texture* texture = baseColorTextureOf(scene, frame, material, mesh);
+    const bool colored = !mesh.colors.empty();
+    Interpolation& in = triangle.interpolation;
+    in.setUpVaryings(layout.model);
+    TileRect drawn{r.x1 + 1, r.y1 + 1, r.x0 - 1, r.y0 - 1};  // the pixels it reaches, as a box
+    rasterizeBlocks(t.snapped, blended.box, [&](int px, int py) {
+      const int k = (py - r.y0) * kTileSize + (px - r.x0);
+      if (!(in.depthAt(px, py) < scratch.depth[k])) return;  // LESS, against the opaque surfaces; no depth write
+      scratch.fragment[k] = blended.id;
+      scratch.alpha[k] = fragmentAlphaAt(material, texture, colored, layout, in, px, py);
+      drawn = {std::min(drawn.x0, px), std::min(drawn.y0, py), std::max(drawn.x1, px), std::max(drawn.y1, py)};
+    });
+    if (drawn.x0 > drawn.x1) continue;
+    shadeIn(scene, frame, maps, scratch, scratch.fragment, r, drawn, fragments);
+    for (int py = drawn.y0; py <= drawn.y1; ++py)
+      for (int px = drawn.x0; px <= drawn.x1; ++px) {
+        const int k = (py - r.y0) * kTileSize + (px - r.x0);
+        if (scratch.fragment[k] != blended.id) continue;
+        scratch.fragment[k] = kNoTriangle;
+        color.at(px, py) = blend(color.at(px, py), glm::vec3(fragments.at(px, py)), scratch.alpha[k], frame.blending);
+      }
+  }
+}
+
 }  // namespace
 
 void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, ColorBuffer& color,
@@ -269,16 +321,30 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
   if (painter && frame.paintersOrder.size() != v.firstTriangle.back())
     throw Error("hsr painter: the frame's order has " + std::to_string(frame.paintersOrder.size()) + " triangles, the scene " +
                 std::to_string(v.firstTriangle.back()));
+  // Transparency: the opaque triangles in order, then the blended ones back to front.
+  const bool blending = !frame.transparentOrder.empty();
+  if (blending) {
+    std::vector<std::uint32_t>& order = buffers.submission;
+    order.clear();
+    for (std::size_t i = 0; i < frame.instances.size(); ++i)
+      if (!frame.materials[static_cast<std::size_t>(frame.instances[i].material)].blended)
+        for (std::size_t t = v.firstTriangle[i]; t < v.firstTriangle[i + 1]; ++t) order.push_back(static_cast<std::uint32_t>(t));
+    order.insert(order.end(), frame.transparentOrder.begin(), frame.transparentOrder.end());
+    if (order.size() != v.firstTriangle.back())
+      throw Error("transparency: the frame's order has " + std::to_string(order.size()) + " triangles, the scene " + std::to_string(v.firstTriangle.back()));
+    if (!triangleIds && !fragmentCounts) buffers.fragments.reset(frame.width, frame.height, glm::vec4(0.0f));
+  }
+  const std::uint32_t* order = painter ? frame.paintersOrder.data() : blending ? buffers.submission.data() : nullptr;
   forEachRange(pool, v.firstTriangle.back(), [&](std::size_t begin, std::size_t end, int w) {
     binTriangles(scene, frame, v, grid, true, begin, end, buffers.workers[static_cast<std::size_t>(w)],
-                 frame.shading == ShadingMode::Flat ? &flat : nullptr, painter ? frame.paintersOrder.data() : nullptr);
+                 frame.shading == ShadingMode::Flat ? &flat : nullptr, order);
   });
   // The scanline z-buffer decides every pixel's polygon first, a row at a time; the tiles then shade what it kept.
   const bool scanline = frame.hsr == HiddenSurface::Scanline && !fragmentCounts;
   std::optional<PolygonNumbering> numbering;
   if (scanline) scanlineVisibility(pool, buffers.workers, v, scene, frame, numbering.emplace(buffers.workers), buffers.visible);
 
-  // Segments and points, drawn after every triangle (not in the triangle-id pass).
+  // Segments and points, drawn after every opaque triangle (not in the triangle-id pass).
   if (triangleIds || fragmentCounts) buffers.lines.clear();
   else setUpLines(scene, frame, v, layout.color, buffers.lines);
 
@@ -287,7 +353,7 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
   // sizes its tile scratch for the fullest tile, so none grows later.
   std::size_t fullestTile = 0;
   for (int tile = 0; tile < grid.count(); ++tile) fullestTile = std::max(fullestTile, trianglesInTile(buffers.workers, tile));
-  for (WorkerBins& bins : buffers.workers) bins.tile.triangles.reserve(fullestTile);
+  for (WorkerBins& bins : buffers.workers) bins.tile.triangles.reserve(fullestTile), bins.tile.blended.reserve(fullestTile);
   forEachTile(pool, grid, [&](int worker, int tile, const TileRect& r) {
     if (trianglesInTile(buffers.workers, tile) == 0 && buffers.lines.empty()) return;
     if (fragmentCounts) {  // depth complexity: every fragment, before the tests; each pixel is in one tile
@@ -302,8 +368,18 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
     std::fill(std::begin(scratch.depth), std::end(scratch.depth), 1.0f);
     std::fill(std::begin(scratch.id), std::end(scratch.id), kNoTriangle);
     scratch.triangles.clear();  // keeps its capacity: no allocation once the sizes settle
-    if (scanline) gatherVisible(buffers.workers, *numbering, v, buffers.visible, frame.width, r, scratch);
-    else forEachTriangleInTile(buffers.workers, v, tile, r,
+    scratch.blended.clear();
+    if (scanline) {
+      gatherVisible(buffers.workers, *numbering, v, buffers.visible, frame.width, r, scratch);
+      if (blending)  // the blended triangles, in their order, against the kept polygons' depths
+        forEachTriangleInTile(buffers.workers, v, tile, r,
+                              [&](const WorkerBins& bins, std::uint32_t index, const BinnedTriangle& t, const InterpolationVertex (&vertices)[3],
+                                  const PixelBox& box) {
+                                if (!frame.materials[static_cast<std::size_t>(frame.instances[t.instance].material)].blended) return;
+                                scratch.blended.push_back({static_cast<std::uint32_t>(scratch.triangles.size()), box});
+                                scratch.triangles.push_back({Interpolation(vertices[0], vertices[1], vertices[2]), &bins, index});
+                              });
+    } else forEachTriangleInTile(buffers.workers, v, tile, r,
                           [&](const WorkerBins& bins, std::uint32_t index, const BinnedTriangle& t, const InterpolationVertex (&vertices)[3],
                               const PixelBox& box) {
                             // Set up once: the z-buffer reads its depth, shading its weights if it wins a pixel.
@@ -312,6 +388,10 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
                             Interpolation& interpolation = scratch.triangles.back().interpolation;
                             const FrameInstance& instance = frame.instances[t.instance];
                             const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
+                            if (material.blended) {  // drawn after the opaque surfaces and lines, in this order (blendTile)
+                              scratch.blended.push_back({id, box});
+                              return;
+                            }
                             if (!material.masked && !painter) {
                               rasterizeBlocks(t.snapped, box, [&](int px, int py) {
                                 const float z = interpolation.depthAt(px, py);
@@ -346,13 +426,9 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
         }
       return;
     }
-    switch (frame.shading) {
-      case ShadingMode::Pbr: shadeTile<ShadingMode::Pbr>(scene, frame, maps, scratch, r.x0, r.y0, r.x1, r.y1, color); break;
-      case ShadingMode::Phong: shadeTile<ShadingMode::Phong>(scene, frame, maps, scratch, r.x0, r.y0, r.x1, r.y1, color); break;
-      case ShadingMode::Gouraud: shadeTile<ShadingMode::Gouraud>(scene, frame, maps, scratch, r.x0, r.y0, r.x1, r.y1, color); break;
-      default: shadeTile<ShadingMode::Flat>(scene, frame, maps, scratch, r.x0, r.y0, r.x1, r.y1, color); break;
-    }
+    shadeIn(scene, frame, maps, scratch, scratch.id, r, r, color);
     drawLines(frame, buffers.lines, r, painter ? nullptr : scratch.depth, kTileSize, color);  // the painter has no depth to test
+    if (!scratch.blended.empty()) blendTile(scene, frame, maps, layout, scratch, r, buffers.fragments, color);
   });
 }
 

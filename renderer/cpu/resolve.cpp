@@ -1,17 +1,18 @@
 #include "cpu/resolve.h"
 
+#include "cpu/blending.h"
 #include "cpu/passes.h"
 #include "cpu/srgb_table.h"
 #include "image/srgb.h"
 
 namespace facet::cpu {
 
-void resolve(ThreadPool& pool, const ColorBuffer& buffer, Image& image) {
+void resolve(ThreadPool& pool, const ColorBuffer& buffer, Blending blending, Image& image) {
   image = Image(buffer.width(), buffer.height());
   const auto width = static_cast<std::size_t>(buffer.width());
   forEachRange(pool, static_cast<std::size_t>(buffer.height()), [&](std::size_t begin, std::size_t end, int) {
     for (std::size_t i = begin * width; i < end * width; ++i) {
-      const glm::vec4& linear = buffer.data()[i];
+      const glm::vec4 linear = unstored(buffer.data()[i], blending);
       Rgba8& out = image.data()[i];
       std::uint8_t levels[4];
       encodeLevels4(&linear.r, levels);  // four at a time; the fourth, alpha, is not light

@@ -126,6 +126,8 @@ void scanlineVisibility(ThreadPool& pool, const std::vector<WorkerBins>& workers
   for (std::size_t w = 0; w < workers.size(); ++w)
     for (std::size_t i = 0; i < workers[w].triangles.size(); ++i) {
       PixelBox box;
+      const FrameInstance& instance = frame.instances[workers[w].triangles[i].instance];
+      if (frame.materials[static_cast<std::size_t>(instance.material)].blended) continue;  // blended after, against what this keeps
       if (!pixelBox(workers[w].triangles[i].snapped, 0, 0, width - 1, height - 1, box)) continue;
       table.push_back({box.minY, static_cast<std::uint32_t>(numbering.first[w] + i)});
     }

@@ -21,10 +21,10 @@ void shadowPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, con
   const float half = 0.5f * static_cast<float>(size);
   PassVertices& v = buffers.vertices;
   const std::size_t vertexCount = v.world.size();
-  // An alpha-masked material needs its texture coordinates and vertex alpha
+  // An alpha-masked or blended material needs its texture coordinates and vertex alpha
   // (the flat layout's: uv, RGBA) to decide which fragments cast a shadow.
   bool anyMasked = false;
-  for (const FrameInstance& instance : frame.instances) anyMasked = anyMasked || frame.materials[static_cast<std::size_t>(instance.material)].masked;
+  for (const FrameInstance& instance : frame.instances) anyMasked = anyMasked || masksShadow(frame.materials[static_cast<std::size_t>(instance.material)]);
   const VaryingLayout mask = varyingLayout(ShadingMode::Flat);
   const int stride = anyMasked ? 4 + mask.count : 4;
   v.stride = stride;
@@ -68,7 +68,7 @@ void shadowPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, con
                             Interpolation interpolation(vertices[0], vertices[1], vertices[2]);
                             const FrameInstance& instance = frame.instances[t.instance];
                             const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
-                            if (!material.masked) {
+                            if (!masksShadow(material)) {
                               rasterizeBlocks(t.snapped, box, [&](int px, int py) {
                                 const float z = interpolation.depthAt(px, py);
                                 float& stored = depth[static_cast<std::size_t>(py) * static_cast<std::size_t>(size) + static_cast<std::size_t>(px)];

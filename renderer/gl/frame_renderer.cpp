@@ -83,7 +83,8 @@ void GlFrameRenderer::uploadScene(const Scene& scene) {
 
 std::vector<PassTiming> GlFrameRenderer::drawFrame(const Scene& scene, const FrameInputs& frame) {
   refuseScanline(frame);
-  if (frame.hsr == HiddenSurface::Painter) painters_.prepare(gl_, scene, frame);
+  if (frame.hsr == HiddenSurface::Painter) painters_.prepare(gl_, scene, frame, frame.paintersOrder);
+  if (!frame.transparentOrder.empty()) transparent_.prepare(gl_, scene, frame, frame.transparentOrder);
   std::vector<PassTiming> timings;
   gl_.glFinish();
   Clock::time_point start = Clock::now();
@@ -141,7 +142,7 @@ Image GlFrameRenderer::readImage() const {
 std::vector<std::uint32_t> GlFrameRenderer::drawTriangleIds(const Scene& scene, const FrameInputs& frame) {
   refuseScanline(frame);
   const bool painter = frame.hsr == HiddenSurface::Painter;
-  if (painter) painters_.prepare(gl_, scene, frame);
+  if (painter) painters_.prepare(gl_, scene, frame, frame.paintersOrder);
   const auto idVariant = [&](const FrameInstance& instance) { return maskVariant(frame, instance); };
   prepareMaskPrograms(triangleIdPrograms_, frame, {"triangle_id.vert", "triangle_id.frag"}, [&](ShaderProgram program) {
     const auto at = [&](const char* name) { return uniformLocation(gl_, program, name); };
@@ -170,6 +171,7 @@ std::vector<std::uint32_t> GlFrameRenderer::drawTriangleIds(const Scene& scene, 
   // One draw: the instance's triangles [first, first + count) of its mesh, or of the painter's index buffer.
   const auto draw = [&](const FrameInstance& instance, GLuint first, GLsizei count, const PainterRun* run) {
     const MeshBuffers& mesh = scene_.mesh(instance.mesh);
+    if (frame.materials[static_cast<std::size_t>(instance.material)].blended) return;  // they write no depth and keep no pixel
     const DrawVariant variant = idVariant(instance);
     const TriangleIdProgram& id = triangleIdPrograms_.at(variant.index());
     const GLuint program = id.program.id();
@@ -258,12 +260,16 @@ DrawVariant GlFrameRenderer::drawVariant(const FrameInputs& frame, const FrameIn
           pbr && reads(material.occlusionMap),
           reads(material.emissiveMap),  // every mode: k_e·E (renderer/cpu/texture_sampling.h, emissionAt)
           interpolatesNormals(frame.shading) && reads(material.normalMap) && mesh.tangents,
-          frame.bump.map != nullptr && mesh.tangents};
+          frame.bump.map != nullptr && mesh.tangents,
+          material.blended};
 }
 
 DrawVariant GlFrameRenderer::maskVariant(const FrameInputs& frame, const FrameInstance& instance) const {
+  // The shadow pass tests a blended material's α as a mask's (material_coefficients.h, masksShadow);
+  // the triangle-id pass draws no blended material.
   const DrawVariant v = drawVariant(frame, instance);
-  return v.masked ? DrawVariant{v.textured, v.colored, true} : DrawVariant{};  // one program for every unmasked draw
+  const bool masked = masksShadow(frame.materials[static_cast<std::size_t>(instance.material)]);
+  return masked ? DrawVariant{v.textured, v.colored, true} : DrawVariant{};  // one program for every unmasked draw
 }
 
 void GlFrameRenderer::setCulling(bool cull) {
@@ -322,10 +328,12 @@ bool GlFrameRenderer::preparePrograms(const FrameInputs& frame) {
     backgroundProgram_.emplace(buildProgram(gl_, {"viewport_triangle.vert", "background.frag"}));
     backgroundViewportSize_ = uniformLocation(gl_, *backgroundProgram_, "viewportSize");
     backgroundAlpha_ = uniformLocation(gl_, *backgroundProgram_, "backgroundAlpha");
+    backgroundPremultiplied_ = uniformLocation(gl_, *backgroundProgram_, "premultiplied");
     compiled = true;
   }
   if (!resolveProgram_) {
     resolveProgram_.emplace(buildProgram(gl_, {"viewport_triangle.vert", "resolve.frag"}));
+    resolvePremultiplied_ = uniformLocation(gl_, *resolveProgram_, "premultiplied");
     compiled = true;
   }
   if (!lineProgram_ || lineFog_ != frame.fog.mode) {
@@ -389,6 +397,7 @@ void GlFrameRenderer::litPass(const FrameInputs& frame) {
   gl_.glProgramUniform2f(backgroundProgram_->id(), backgroundViewportSize_, static_cast<float>(frame.width),
                          static_cast<float>(frame.height));
   gl_.glProgramUniform1f(backgroundProgram_->id(), backgroundAlpha_, frame.backgroundAlpha);
+  gl_.glProgramUniform1i(backgroundProgram_->id(), backgroundPremultiplied_, frame.blending == Blending::Premultiplied ? 1 : 0);
   gl_.glBindVertexArray(emptyVertexArray_.id());
   gl_.glDrawArrays(GL_TRIANGLES, 0, 3);
 
@@ -413,8 +422,17 @@ void GlFrameRenderer::litPass(const FrameInputs& frame) {
   if (painter)
     for (const PainterRun& run : painters_.runs()) draw(frame.instances[run.instance], &run);
   else
-    for (const FrameInstance& instance : frame.instances) draw(instance, nullptr);
+    for (const FrameInstance& instance : frame.instances)
+      if (!frame.materials[static_cast<std::size_t>(instance.material)].blended) draw(instance, nullptr);
   drawLines(frame);
+  if (frame.transparentOrder.empty()) return;
+  // Transparency (PIPELINE.md, section 7): the blended triangles back to front, depth-tested, no depth writes;
+  // each fragment blends into the colour buffer in its shader (lit_output.glsl), in primitive order.
+  gl_.glEnable(GL_DEPTH_TEST);
+  gl_.glDepthMask(GL_FALSE);
+  current = 0;
+  for (const PainterRun& run : transparent_.runs()) draw(frame.instances[run.instance], &run);
+  gl_.glDepthMask(GL_TRUE);
 }
 
 void GlFrameRenderer::drawLines(const FrameInputs& frame) {
@@ -453,6 +471,7 @@ void GlFrameRenderer::resolvePass(const FrameInputs& frame) {
   gl_.glDisable(GL_CULL_FACE);
   gl_.glBindTextureUnit(kResolveUnit, target_.colorTexture());
   gl_.glUseProgram(resolveProgram_->id());
+  gl_.glProgramUniform1i(resolveProgram_->id(), resolvePremultiplied_, frame.blending == Blending::Premultiplied ? 1 : 0);
   gl_.glBindVertexArray(emptyVertexArray_.id());
   gl_.glDrawArrays(GL_TRIANGLES, 0, 3);
   gl_.glBindTextureUnit(kResolveUnit, 0);  // the colour buffer is the next frame's target
@@ -486,7 +505,7 @@ void GlFrameRenderer::drawInstance(const LitProgram& lit, const FrameInputs& fra
   setMapUniforms(lit, material, variant);
 
   if (flat) {
-    gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshIndicesBinding, run ? painters_.indices() : mesh.indices.id());
+    gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshIndicesBinding, run ? run->indices : mesh.indices.id());
     gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshPositionsBinding, mesh.positions.id());
     // Read only when textured (base colour or emissive); something valid is bound either way.
     const bool mapped = textured || variant.emissiveMap;
@@ -508,7 +527,7 @@ void GlFrameRenderer::drawIndexed(const MeshBuffers& mesh, const PainterRun* run
     return;
   }
   // The run's indices from the painter's buffer, at three GLuint per position; the vertex array gets its own back.
-  gl_.glVertexArrayElementBuffer(mesh.vertexArray.id(), painters_.indices());
+  gl_.glVertexArrayElementBuffer(mesh.vertexArray.id(), run->indices);
   gl_.glDrawElements(GL_TRIANGLES, 3 * run->count, GL_UNSIGNED_INT,
                      reinterpret_cast<const void*>(static_cast<std::uintptr_t>(run->first) * 3 * sizeof(GLuint)));
   gl_.glVertexArrayElementBuffer(mesh.vertexArray.id(), mesh.indices.id());

@@ -122,6 +122,8 @@ class GlFrameRenderer {
   std::optional<ShaderProgram> backgroundProgram_;
   GLint backgroundViewportSize_ = -1;  // its uniform vec2 viewportSize
   GLint backgroundAlpha_ = -1;         // its uniform float backgroundAlpha
+  GLint backgroundPremultiplied_ = -1;  // its uniform bool premultiplied
+  GLint resolvePremultiplied_ = -1;     // the resolve's
   std::optional<ShaderProgram> resolveProgram_;
   struct LineProgram {
     GLint clipFromModel, colored, baseColorFactor;
@@ -146,6 +148,7 @@ class GlFrameRenderer {
   GlObject emptyVertexArray_;  // for draws that read no attributes (background, flat shading)
   SceneBuffers scene_;
   PaintersDraws painters_;  // hsr = painter: the frame's triangles back to front
+  PaintersDraws transparent_;  // the blended triangles back to front, after the rest
   ShadowMapArray shadowMaps_;
   RenderTarget target_{GL_RGBA32F};  // the lit pass's colour buffer, linear RGBA
   RenderTarget resolved_{GL_RGBA8, RenderTarget::Depth::Without};

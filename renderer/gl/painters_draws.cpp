@@ -2,18 +2,23 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <string>
+
+#include "common/error.h"
 
 namespace facet::gl {
 
-void PaintersDraws::prepare(const GlFunctions& gl, const Scene& scene, const FrameInputs& frame) {
+void PaintersDraws::prepare(const GlFunctions& gl, const Scene& scene, const FrameInputs& frame, const std::vector<std::uint32_t>& order) {
   std::vector<std::size_t> firstTriangle{0};  // per instance, then the total
   for (const FrameInstance& instance : frame.instances)
     firstTriangle.push_back(firstTriangle.back() + scene.meshes[static_cast<std::size_t>(instance.mesh)].triangleCount());
   std::vector<std::uint32_t> indices, triangles;
-  indices.reserve(3 * frame.paintersOrder.size());
+  indices.reserve(3 * order.size());
   runs_.clear();
-  for (std::size_t position = 0; position < frame.paintersOrder.size(); ++position) {
-    const std::uint32_t triangle = frame.paintersOrder[position];
+  for (std::size_t position = 0; position < order.size(); ++position) {
+    const std::uint32_t triangle = order[position];
+    if (triangle >= firstTriangle.back())
+      throw Error("the frame's draw order names triangle " + std::to_string(triangle) + "; the frame has " + std::to_string(firstTriangle.back()));
     const auto instance = static_cast<std::size_t>(std::upper_bound(firstTriangle.begin(), firstTriangle.end(), std::size_t{triangle}) -
                                                    firstTriangle.begin()) - 1;
     const Mesh& mesh = scene.meshes[static_cast<std::size_t>(frame.instances[instance].mesh)];
@@ -33,6 +38,7 @@ void PaintersDraws::prepare(const GlFunctions& gl, const Scene& scene, const Fra
   };
   indices_ = upload(indices);
   triangles_ = upload(triangles);
+  for (PainterRun& run : runs_) run.indices = indices_.id();
 }
 
 }  // namespace facet::gl

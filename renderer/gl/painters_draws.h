@@ -1,11 +1,14 @@
 #pragma once
-// hsr = painter on the OpenGL side (renderer/PIPELINE.md, section 6,
-// "Hidden-surface removal"): the frame's triangles in FrameInputs::paintersOrder,
-// cut into runs of one instance each. Their indices are copied in that order
+// Triangles drawn in an order of their own on the OpenGL side: hsr = painter
+// (renderer/PIPELINE.md, section 6, "Hidden-surface removal"), the frame's
+// triangles in FrameInputs::paintersOrder, and transparency (section 7), the
+// blended ones in FrameInputs::transparentOrder. The order is cut into runs of
+// one instance each. Their indices are copied in that order
 // into one index buffer, so that a run is one draw and GL's primitive order is
 // the painter's; the triangles' indices in the frame go into a storage buffer
 // for the triangle-id pass.
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "gl/gl_object.h"
@@ -16,13 +19,14 @@ namespace facet::gl {
 
 struct PainterRun {
   std::size_t instance = 0;       // index into FrameInputs::instances
-  GLsizei first = 0, count = 0;   // positions in the painter's order, in triangles
+  GLsizei first = 0, count = 0;   // positions in the order, in triangles
+  GLuint indices = 0;             // the index buffer they are drawn from (PaintersDraws::indices)
 };
 
 class PaintersDraws {
  public:
-  // Once per painter frame, before its draws.
-  void prepare(const GlFunctions& gl, const Scene& scene, const FrameInputs& frame);
+  // Once per frame, before its draws: `order` holds indices into the frame's triangle list.
+  void prepare(const GlFunctions& gl, const Scene& scene, const FrameInputs& frame, const std::vector<std::uint32_t>& order);
 
   const std::vector<PainterRun>& runs() const { return runs_; }
   GLuint indices() const { return indices_.id(); }      // three mesh-local vertex indices per position

@@ -27,14 +27,19 @@ std::string drawVariantDefines(DrawVariant variant) {
   d += "#define FACET_EMISSIVE_MAP " + std::string(variant.emissiveMap ? "1" : "0") + "\n";
   d += "#define FACET_NORMAL_MAP " + std::string(variant.normalMap ? "1" : "0") + "\n";
   d += "#define FACET_BUMP_MAP " + std::string(variant.bumped ? "1" : "0") + "\n";
+  d += "#define FACET_BLENDED " + std::string(variant.blended ? "1" : "0") + "\n";
   return d;
 }
 
 std::string fogDefine(const FrameInputs& frame) { return "#define FACET_FOG " + std::to_string(static_cast<int>(frame.fog.mode)) + "\n"; }
 
 std::string litShaderDefines(const FrameInputs& frame, DrawVariant variant) {
-  std::string d = drawVariantDefines(variant);
- d += "#define FACET_ENVIRONMENT " + std::string(frame.environment.map ? "1" : "0") + "\n";
+  // A blended draw reads the colour buffer in its fragment shader (lit_output.glsl); the
+  // directive comes first, before any declaration, and only the fragment stage uses it.
+  std::string d = variant.blended ? "#extension GL_EXT_shader_framebuffer_fetch : enable\n" : "";
+  d += drawVariantDefines(variant);
+  if (variant.blended) d += "#define FACET_PREMULTIPLIED " + std::string(frame.blending == Blending::Premultiplied ? "1" : "0") + "\n";
+  d += "#define FACET_ENVIRONMENT " + std::string(frame.environment.map ? "1" : "0") + "\n";
   d += "#define FACET_PBR " + std::string(frame.shading == ShadingMode::Pbr ? "1" : "0") + "\n";
   d += fogDefine(frame);
   d += "#define FACET_PROCEDURAL " + std::to_string(static_cast<int>(frame.procedural)) + "\n";

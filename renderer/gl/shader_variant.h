@@ -22,20 +22,22 @@ struct DrawVariant {
   bool metallicRoughnessMap = false, occlusionMap = false, emissiveMap = false;
   bool normalMap = false;  // a normal texture and tangents (Phong and pbr)
   bool bumped = false;     // the frame's bump map and the mesh's tangents (Phong and pbr)
-  static constexpr int kCount = 256;
+  bool blended = false;    // transparency: the fragment blends into the colour buffer (lit pass only)
+  static constexpr int kCount = 512;
   int index() const {
     return (textured ? 1 : 0) + (colored ? 2 : 0) + (masked ? 4 : 0) + (metallicRoughnessMap ? 8 : 0) + (occlusionMap ? 16 : 0) + (emissiveMap ? 32 : 0) +
-           (normalMap ? 64 : 0) + (bumped ? 128 : 0);
+           (normalMap ? 64 : 0) + (bumped ? 128 : 0) + (blended ? 256 : 0);
   }
   static DrawVariant of(int index) {
     return {(index & 1) != 0,  (index & 2) != 0,  (index & 4) != 0,  (index & 8) != 0,
-            (index & 16) != 0, (index & 32) != 0, (index & 64) != 0, (index & 128) != 0};
+            (index & 16) != 0, (index & 32) != 0, (index & 64) != 0, (index & 128) != 0, (index & 256) != 0};
   }
 };
 
 // The #define lines of a variant's draw-specific macros (FACET_TEXTURED,
 // FACET_COLORED, FACET_MASKED, FACET_METALLIC_ROUGHNESS_MAP, FACET_OCCLUSION_MAP,
-// FACET_EMISSIVE_MAP): the lit programs' and the triangle-id pass's.
+// FACET_EMISSIVE_MAP, FACET_NORMAL_MAP, FACET_BUMP_MAP, FACET_BLENDED): the lit
+// programs' and the triangle-id pass's.
 std::string drawVariantDefines(DrawVariant variant);
 
 // "#define FACET_FOG m": the frame's fog mode (fog.glsl), for the lit and the line programs.

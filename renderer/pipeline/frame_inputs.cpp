@@ -1,5 +1,6 @@
 #include "pipeline/frame_inputs.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -15,6 +16,7 @@
 #include "pipeline/frame_checks.h"
 #include "pipeline/material_coefficients.h"
 #include "pipeline/painters_order.h"
+#include "pipeline/transparency_order.h"
 #include "pipeline/texture_filter.h"
 #include "pipeline/view_setup.h"
 
@@ -81,7 +83,7 @@ FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings)
   }
 
   for (const Material& m : scene.materials) {
-    CourseMaterial course = courseMaterial(m, settings.material);
+    CourseMaterial course = courseMaterial(m, settings.material, settings.transparency);
     if (course.baseColorTexture >= 0 && static_cast<std::size_t>(course.baseColorTexture) < scene.textures.size())  // else refused by checkFrame
       course.baseColorSampler = filteredSampler(scene.textures[static_cast<std::size_t>(course.baseColorTexture)].sampler, settings.textures.filter);
     for (MaterialMap* map : {&course.metallicRoughnessMap, &course.occlusionMap, &course.emissiveMap, &course.normalMap})
@@ -90,7 +92,7 @@ FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings)
         map->srgb = scene.textures[static_cast<std::size_t>(map->texture)].encoding == TexelEncoding::Srgb;
     f.materials.push_back(course);
   }
-  f.materials.push_back(courseMaterial(Material{}, settings.material));  // glTF's default material
+  f.materials.push_back(courseMaterial(Material{}, settings.material, settings.transparency));  // glTF's default material
   const int defaultMaterial = static_cast<int>(f.materials.size() - 1);
 
   f.instances.reserve(scene.instances.size());
@@ -141,6 +143,17 @@ FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings)
   f.cullBackFaces = settings.cullBackFaces;
   f.hsr = settings.hsr;
   if (f.hsr == HiddenSurface::Painter) f.paintersOrder = paintersOrder(scene, f);
+  f.blending = settings.blending;
+  const bool anyBlended = std::any_of(f.instances.begin(), f.instances.end(),
+                                      [&](const FrameInstance& i) { return f.materials[static_cast<std::size_t>(i.material)].blended; });
+  if (anyBlended && f.hsr == HiddenSurface::Painter) {
+    // The painter's algorithm keeps no depth to test blended fragments against after the opaque ones.
+    f.warnings.push_back("hsr " + std::string(kHiddenSurfaceNames[static_cast<std::size_t>(f.hsr)]) +
+                         ": blended materials are drawn opaque (transparency is drawn with hsr zbuffer)");
+    for (CourseMaterial& material : f.materials) material.blended = false;
+  } else if (anyBlended) {
+    f.transparentOrder = transparentOrder(scene, f, settings.transparency.sort);
+  }
   f.shadows = settings.shadows;
   f.background = settings.background;
   f.backgroundAlpha = settings.backgroundAlpha;

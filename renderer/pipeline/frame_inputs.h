@@ -68,6 +68,11 @@ struct FrameInputs {
   // list, instances in order) in the order they are drawn, back to front
   // (pipeline/painters_order.h); empty otherwise.
   std::vector<std::uint32_t> paintersOrder;
+  // Transparency (PIPELINE.md, section 7): the blended triangles, drawn after
+  // every other triangle and line in this order, back to front
+  // (pipeline/transparency_order.h); empty when no material is blended.
+  Blending blending = Blending::Straight;
+  std::vector<std::uint32_t> transparentOrder;
   ShadowSettings shadows;
   int shadowLayerCount = 0;       // S×S depth maps over all lights: one per face
   glm::vec3 background{0.0f};    // linear RGB

@@ -6,7 +6,7 @@
 
 namespace facet {
 
-CourseMaterial courseMaterial(const Material& material, const MaterialOverrides& overrides) {
+CourseMaterial courseMaterial(const Material& material, const MaterialOverrides& overrides, const TransparencySettings& transparency) {
   const float m = std::clamp(material.metallic, 0.0f, 1.0f);
   const float r = std::clamp(material.roughness, 0.0f, 1.0f);
   const float alpha = r * r;
@@ -14,14 +14,15 @@ CourseMaterial courseMaterial(const Material& material, const MaterialOverrides&
   const float f0 = 0.04f * (1.0f - m) + 0.9f * m;
   CourseMaterial out;
   out.baseColor = glm::vec3(material.baseColor);
-  out.baseAlpha = material.baseColor.a;
+  out.baseAlpha = overrides.opacity.value_or(material.baseColor.a);
   // KHR_texture_transform: T·R·S, turned as Khronos' TextureTransformTest checks (PIPELINE.md, section 8), in double, rounded once.
   const TextureTransform& t = material.baseColorTransform;
   const double c = std::cos(static_cast<double>(t.rotation)), s = std::sin(static_cast<double>(t.rotation));
   out.uvRow0 = glm::vec3(static_cast<float>(c * t.scale.x), static_cast<float>(s * t.scale.y), t.offset.x);
   out.uvRow1 = glm::vec3(static_cast<float>(-s * t.scale.x), static_cast<float>(c * t.scale.y), t.offset.y);
-  out.masked = material.alphaMode == AlphaMode::Mask;
-  out.alphaCutoff = material.alphaCutoff;
+  out.blended = material.alphaMode == AlphaMode::Blend || (overrides.opacity && *overrides.opacity < 1.0f);
+  out.masked = material.alphaMode == AlphaMode::Mask && !out.blended;
+  out.alphaCutoff = out.blended ? transparency.shadowCutoff : material.alphaCutoff;
   out.baseColorTexture = material.baseColorTexture;
   const TexcoordSets& sets = material.texcoordSets;
   out.baseColorSet = sets.baseColor;

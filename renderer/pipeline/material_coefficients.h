@@ -37,10 +37,14 @@ struct CourseMaterial {
   MaterialMap normalMap;
   float normalScale = 1;        // scales its x and y
   bool doubleSided = false;
-  // Alpha mask (PIPELINE.md, section 8): α = factor·COLOR_0.a·texel.a, each where present;
+  // Alpha (PIPELINE.md, section 8): α = factor·COLOR_0.a·texel.a, each where present;
   // with `masked`, a fragment is kept when α ≥ alphaCutoff (NaN discards).
-  float baseAlpha = 1.0f;     // the base colour factor's alpha
+  float baseAlpha = 1.0f;     // the base colour factor's alpha (material.opacity in its place)
   bool masked = false;
+  // Transparency (PIPELINE.md, section 7): blended into the colour buffer by
+  // α after the opaque surfaces; in the shadow pass it is masked, with
+  // alphaCutoff = transparency.shadowCutoff.
+  bool blended = false;
   float alphaCutoff = 0.5f;
 };
 
@@ -59,6 +63,12 @@ inline constexpr float kMinDerivedShininess = 8.0f;
 //                                               black outside its highlights)
 //   O_s = (1 - m) + m·O_d                      (metals tint their highlights)
 // Any of k_a, k_d, k_s, n set in `overrides` replaces the derived value.
-CourseMaterial courseMaterial(const Material& material, const MaterialOverrides& overrides);
+// Alpha: glTF's alphaMode, or `overrides.opacity` in the factor's place,
+// which blends every material when below 1.
+CourseMaterial courseMaterial(const Material& material, const MaterialOverrides& overrides, const TransparencySettings& transparency = {});
+
+// The shadow pass and the triangle-id pass test α against alphaCutoff for a
+// masked material, and the shadow pass for a blended one too.
+inline bool masksShadow(const CourseMaterial& material) { return material.masked || material.blended; }
 
 }  // namespace facet

@@ -11,7 +11,7 @@
 
 namespace facet {
 
-std::vector<std::uint32_t> paintersOrder(const Scene& scene, const FrameInputs& frame) {
+std::vector<double> farthestEyeDepths(const Scene& scene, const FrameInputs& frame) {
   std::vector<double> farthest;
   for (const FrameInstance& instance : frame.instances) {
     const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
@@ -29,6 +29,11 @@ std::vector<std::uint32_t> paintersOrder(const Scene& scene, const FrameInputs& 
       farthest.push_back(finite ? d : std::numeric_limits<double>::infinity());
     }
   }
+  return farthest;
+}
+
+std::vector<std::uint32_t> paintersOrder(const Scene& scene, const FrameInputs& frame) {
+  const std::vector<double> farthest = farthestEyeDepths(scene, frame);
   std::vector<std::uint32_t> order(farthest.size());
   std::iota(order.begin(), order.end(), 0u);
   std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return farthest[a] > farthest[b]; });

@@ -18,4 +18,8 @@ struct FrameInputs;
 // triangle whose depth is not a number comes first (the rasterizers drop it).
 std::vector<std::uint32_t> paintersOrder(const Scene& scene, const FrameInputs& frame);
 
+// The painter's key d of every triangle of the frame, in its triangle list's
+// order: +infinity where a vertex's depth is not a number.
+std::vector<double> farthestEyeDepths(const Scene& scene, const FrameInputs& frame);
+
 }  // namespace facet

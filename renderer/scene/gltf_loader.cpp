@@ -334,7 +334,6 @@ void convertMaterials(const tinygltf::Model& model, Scene& scene, Warnings& warn
       material.alphaCutoff = static_cast<float>(src.alphaCutoff);
     } else if (src.alphaMode == "BLEND") {
       material.alphaMode = AlphaMode::Blend;
-      warnings.push_back(at("materials", m) + ": alphaMode BLEND is drawn opaque (facet does not blend yet)");
     }
     material.baseColorTransform = textureTransformOf(pbr.baseColorTexture.extensions, at("materials", m) + ": baseColorTexture");
     // A texture reference: its index when it names a texture with an image, else -1 with a warning;

@@ -49,8 +49,8 @@ struct MeshInstance {
   glm::mat4 worldFromModel{1.0f};          // TM
 };
 
-// glTF 2.0's alphaMode. BLEND is read and drawn as OPAQUE (with a warning)
-// until blending lands; MASK discards fragments below alphaCutoff.
+// glTF 2.0's alphaMode: MASK discards fragments below alphaCutoff, BLEND
+// blends them by α (renderer/PIPELINE.md, section 7, "Transparency").
 enum class AlphaMode { Opaque, Mask, Blend };
 
 // KHR_texture_transform of a texture reference: uv' = T(offset)·R(rotation)·S(scale)·uv.

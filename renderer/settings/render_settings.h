@@ -101,6 +101,9 @@ struct MaterialOverrides {
   std::optional<float> kd;
   std::optional<float> ks;
   std::optional<float> shininess;  // n
+  // α's factor for every material in place of the base colour factor's alpha;
+  // below 1 every material is blended (PIPELINE.md, section 7, "Transparency").
+  std::optional<float> opacity;
   Procedural procedural = Procedural::None;
   float proceduralScale = 4.0f;     // k: pattern cells per model unit
   // Displacement mapping (PIPELINE.md, section 8): P' = P + (scale·h)·N at the
@@ -148,6 +151,21 @@ struct FogSettings {
 enum class HiddenSurface { ZBuffer, Painter, Scanline, Count };
 inline constexpr std::array<std::string_view, static_cast<int>(HiddenSurface::Count)> kHiddenSurfaceNames = {"zbuffer", "painter", "scanline"};
 
+// Transparency (renderer/PIPELINE.md, section 7, "Transparency"): the
+// course's two blending equations, straight
+//   C_o = (C_f α_f + C_b α_b (1 − α_f)) / α_o,  α_o = α_f + α_b (1 − α_f)
+// and premultiplied C_o = C_f + C_b (1 − α_f) (the colour buffer holds C·α);
+// blended triangles are drawn after the opaque ones, back to front by object
+// or by triangle (the painter's key), depth-tested without depth writes.
+enum class Blending { Straight, Premultiplied, Count };
+inline constexpr std::array<std::string_view, static_cast<int>(Blending::Count)> kBlendingNames = {"straight", "premultiplied"};
+enum class TransparencySort { Object, Triangle, Count };
+inline constexpr std::array<std::string_view, static_cast<int>(TransparencySort::Count)> kTransparencySortNames = {"object", "triangle"};
+struct TransparencySettings {
+  TransparencySort sort = TransparencySort::Object;
+  float shadowCutoff = 0.5f;  // a blended fragment casts a shadow where α ≥ this
+};
+
 struct RenderSettings {
   int width = 800;   // image size in pixels
   int height = 600;
@@ -160,6 +178,8 @@ struct RenderSettings {
   bool cullBackFaces = true;
   HiddenSurface hsr = HiddenSurface::ZBuffer;
   MaterialOverrides material;
+  Blending blending = Blending::Straight;
+  TransparencySettings transparency;
   ShadowSettings shadows;
   TextureSettings textures;
   EnvironmentSettings environment;

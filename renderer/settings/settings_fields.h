@@ -67,6 +67,7 @@ void visitSettings(Visitor& v, RenderSettings& s) {
     v.field({"kd", "k_d for every material (null: derived from glTF)", 0, 1}, m.kd);
     v.field({"ks", "k_s for every material (null: derived from glTF)", 0, 1}, m.ks);
     v.field({"shininess", "n for every material (null: derived from glTF)", 1, 4096}, m.shininess);
+    v.field({"opacity", "alpha factor for every material in place of glTF's; below 1 every material is blended (null: glTF's)", 0, 1}, m.opacity);
     v.choice({"procedural", "none, or a checker or noise pattern of the model-space point in place of every base colour texture"}, m.procedural,
              kProceduralNames);
     v.field({"proceduralScale", "k: the pattern's cells per model unit", 0.01, 1000}, m.proceduralScale);
@@ -76,6 +77,15 @@ void visitSettings(Visitor& v, RenderSettings& s) {
             m.displacementSubdivisions);
     v.field({"bumpMap", "a greyscale PNG height map h read at TEXCOORD_0 that bends N per pixel (phong, pbr); empty: none"}, m.bumpMap);
     v.field({"bumpScale", "k of the bump B = k h, in texture-coordinate units", -10, 10}, m.bumpScale);
+  });
+  v.choice({"blending",
+            "straight: C_o = (C_f a_f + C_b a_b (1 - a_f)) / a_o; premultiplied: C_o = C_f + C_b (1 - a_f), the colour buffer holding C a"},
+           s.blending, kBlendingNames);
+  v.group("transparency", [&] {
+    TransparencySettings& t = s.transparency;
+    v.choice({"sort", "blended surfaces drawn back to front by object (bounding-box centre) or by triangle (farthest vertex)"}, t.sort,
+             kTransparencySortNames);
+    v.field({"shadowCutoff", "a blended fragment casts a shadow where its alpha is at least this", 0, 1}, t.shadowCutoff);
   });
   v.group("shadows", [&] {
     ShadowSettings& sh = s.shadows;

@@ -194,9 +194,11 @@ int main(int argc, char** argv) {
       const auto t2 = std::chrono::steady_clock::now();
       long covered = 0;
       const long mismatches = triangleMismatches(gl->visibleTriangles(scene, frame), cpu->visibleTriangles(scene, frame), covered);
-      if (covered == 0) {  // lines and points keep no triangle: what they drew is what differs from the frame without them
+      if (covered == 0) {  // lines, points and blended surfaces keep no triangle: what they drew is what differs from the frame without them
         FrameInputs empty = frame;
         empty.instances.clear();
+        empty.paintersOrder.clear();
+        empty.transparentOrder.clear();
         const Image background = cpu->render(scene, empty).image;
         for (int y = 0; y < cpuImage.height(); ++y)
           for (int x = 0; x < cpuImage.width(); ++x) {

@@ -1,6 +1,6 @@
 // The shaders' arithmetic (shaders/shading_math.glsl, lighting.glsl,
-// srgb.glsl) against its C++ mirror (renderer/cpu/shading_math.h,
-// lighting.h, image/srgb.h) on llvmpipe, bit for bit, over random inputs and
+// srgb.glsl, blending.glsl) against its C++ mirror (renderer/cpu/shading_math.h,
+// lighting.h, blending.h, image/srgb.h) on llvmpipe, bit for bit, over random inputs and
 // the edge cases each function decides: a fragment shader evaluates one
 // GLSL expression per pixel from two input textures and writes the floats.
 #include <cmath>
@@ -13,6 +13,7 @@
 
 #include <doctest/doctest.h>
 
+#include "cpu/blending.h"
 #include "cpu/lighting.h"
 #include "cpu/physically_based.h"
 #include "cpu/shading_math.h"
@@ -56,7 +57,7 @@ std::vector<glm::vec4> evaluate(const std::string& expression, const std::vector
 
   const std::string probe = "#version 450 core\n#include \"frame_block.glsl\"\n#include \"transform.glsl\"\n#include \"shading_math.glsl\"\n"
                             "#include \"srgb.glsl\"\n#include \"texture.glsl\"\n#include \"procedural.glsl\"\n#include \"draw_uniforms.glsl\"\n"
-                            "#include \"environment.glsl\"\n#include \"lighting.glsl\"\n#include \"physically_based.glsl\"\n"
+                            "#include \"environment.glsl\"\n#include \"lighting.glsl\"\n#include \"physically_based.glsl\"\n#include \"blending.glsl\"\n"
                             "layout(binding = 14) uniform sampler2D inputA;\nlayout(binding = 15) uniform sampler2D inputB;\nout vec4 value;\n"
                             "void main() {\n  vec4 a = texelFetch(inputA, ivec2(gl_FragCoord.xy), 0), b = texelFetch(inputB, ivec2(gl_FragCoord.xy), 0);\n"
                             "  value = " + expression + ";\n}\n";
@@ -189,4 +190,24 @@ TEST_CASE("shader arithmetic: exp2Of and shading=pbr's Fresnel, GGX, Smith visib
                      const glm::vec2 ab = cpu::environmentBrdf(a.z, b.w);
                      return glm::vec4(smithVisibility(a.x, a.y, b.z), ab.x, ab.y, cpu::exp2Of(-200.0f * a.w + 60.0f));
                    }) == 0);
+}
+
+TEST_CASE("shader arithmetic: both blending equations and the premultiplied buffer's store and resolve give the CPU's bits") {
+  std::mt19937 rng(7);
+  std::vector<glm::vec4> held = random(rng, 0.0f, 1.0f), fragment = random(rng, -0.5f, 1.5f);  // alpha beyond [0, 1] is clamped
+  // What each equation decides: alpha NaN, 0, 1, below 0; nothing under a clear fragment (α_o = 0); colours above 1.
+  const glm::vec4 edgesHeld[] = {{0.2f, 0.4f, 0.6f, 0.0f}, {0.2f, 0.4f, 0.6f, 1.0f}, {0.5f, 0.5f, 0.5f, 0.3f}, {3.0f, 0.0f, 1.0f, 0.5f}, {0, 0, 0, 0}};
+  const glm::vec4 edgesFragment[] = {{1, 0, 0, 0.0f}, {1, 0, 0, std::nanf("")}, {0.1f, 0.9f, 0.3f, 1.0f}, {0.7f, 0.2f, 0.1f, -2.0f}, {4.0f, 1.0f, 0.0f, 0.25f}};
+  for (std::size_t i = 0; i < 5; ++i) held[i] = edgesHeld[i], fragment[i] = edgesFragment[i];
+  for (const bool premultiplied : {false, true}) {
+    const Blending blending = premultiplied ? Blending::Premultiplied : Blending::Straight;
+    const std::string p = premultiplied ? "true" : "false";
+    CAPTURE(p);
+    CHECK(mismatches("blend(a, b.xyz, b.w, " + p + ")", held, fragment, [&](const glm::vec4& a, const glm::vec4& b) {
+            return cpu::blend(a, glm::vec3(b), b.w, blending);
+          }) == 0);
+    CHECK(mismatches("vec4(stored(a.xyz, a.w, " + p + ").xyz, unstored(b, " + p + ").x)", held, fragment, [&](const glm::vec4& a, const glm::vec4& b) {
+            return glm::vec4(glm::vec3(cpu::stored(glm::vec3(a), a.w, blending)), cpu::unstored(b, blending).x);
+          }) == 0);
+  }
 }

@@ -3,6 +3,8 @@
 #include <map>
 #include <string>
 
+#include <vector>
+
 #include <doctest/doctest.h>
 
 #include "common/error.h"
@@ -52,7 +54,23 @@ TEST_CASE("a driver log names files, on one line") {
   CHECK(describeLog("7:1(1): warning: z\n", files) == "7:1(1): warning: z");  // no such file: left as it is
 }
 
-TEST_CASE("every shader file is embedded, and every program of the backend compiles and links, in every specialization") {
+namespace {
+
+// The draw variants with at most two macros on, and those with at most two
+// off: every pair of macros is compiled in all four combinations (and every
+// macro alone), at a fifth of the cost of all 2^9 variants.
+std::vector<int> pairwiseVariants() {
+  std::vector<int> variants;
+  for (int v = 0; v < DrawVariant::kCount; ++v) {
+    const int on = __builtin_popcount(static_cast<unsigned>(v)), bits = __builtin_popcount(static_cast<unsigned>(DrawVariant::kCount - 1));
+    if (on <= 2 || bits - on <= 2) variants.push_back(v);
+  }
+  return variants;
+}
+
+}  // namespace
+
+TEST_CASE("every shader file is embedded, and every program of the backend compiles and links, every pair of specializations") {
   for (const char* name : {"frame_block.glsl", "transform.glsl", "shading_math.glsl", "lighting.glsl", "srgb.glsl", "texture.glsl", "draw_uniforms.glsl"})
     CHECK_MESSAGE(findEmbeddedShaderFile(name).has_value(), name);
   test::GlHarness harness;
@@ -75,13 +93,13 @@ TEST_CASE("every shader file is embedded, and every program of the backend compi
   }
   for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong})
     for (const RenderSettings& settings : lightSets)
-      for (int variant = 0; variant < DrawVariant::kCount; ++variant) {
+      for (const int variant : pairwiseVariants()) {
         const std::string name(kShadingModeNames[static_cast<std::size_t>(mode)]);
         const std::string defines = litShaderDefines(buildFrameInputs(scene, settings), DrawVariant::of(variant));
         INFO(name, "\n", defines);
         CHECK_NOTHROW(buildProgram(harness.gl, {"lit_" + name + ".vert", "lit_" + name + ".frag"}, defines));
       }
-  for (int variant = 0; variant < DrawVariant::kCount; ++variant) {
+  for (const int variant : pairwiseVariants()) {
     const std::string defines = drawVariantDefines(DrawVariant::of(variant));
     INFO(defines);
     CHECK_NOTHROW(buildProgram(harness.gl, {"shadow_depth.vert", "shadow_depth.frag"}, defines));

@@ -16,6 +16,7 @@
 #include "cpu/fog.h"
 #include "cpu/reference/reference_renderer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <string>
 #include <functional>
@@ -37,6 +38,7 @@
 #include "cpu/texture_sampling.h"
 #include "cpu/triangle_setup.h"
 #include "cpu/varyings.h"
+#include "cpu/blending.h"
 #include "cpu/vertex_math.h"
 #include "image/srgb.h"
 #include "pipeline/frame_checks.h"
@@ -62,9 +64,13 @@ using FragmentShader = std::function<glm::vec3(const float* varyings, bool front
 // Whether a fragment that passed the z-test is kept (the alpha mask), before it writes depth.
 using FragmentTest = std::function<bool(const Interpolation& planes, int px, int py)>;
 
+// Transparency: a blended fragment's α; it is tested, writes no depth and blends into the colour buffer.
+using FragmentAlpha = std::function<float(const Interpolation& planes, int px, int py)>;
+
 // One triangle, its three vertices after the vertex stage, to the z-buffer.
 void drawTriangle(const ClipVertex (&vertex)[3], int varyingCount, bool cullBackFaces, std::uint32_t id, Target& target,
-                  const FragmentShader& shade, const FragmentTest& keep = nullptr) {
+                  const FragmentShader& shade, const FragmentTest& keep = nullptr, const FragmentAlpha& blendedAlpha = nullptr,
+                  Blending blending = Blending::Straight) {
   const float halfWidth = 0.5f * static_cast<float>(target.width), halfHeight = 0.5f * static_cast<float>(target.height);
   // Clipping: the triangle itself when it lies inside the view volume, else the clipped polygon as a fan.
   WindowVertex window[3];
@@ -94,12 +100,14 @@ void drawTriangle(const ClipVertex (&vertex)[3], int varyingCount, bool cullBack
       const float z = planes.depthAt(px, py);
       if (!(z < target.depth[pixel])) return;
       if (keep && !keep(planes, px, py)) return;
-      target.depth[pixel] = z;
+      if (!blendedAlpha) target.depth[pixel] = z;
       if (target.ids) (*target.ids)[pixel] = id;
       if (!target.color) return;
       float varyings[kMaxVaryings];
       planes.varyingsAt(px, py, varyings);
-      target.color->at(px, py) = glm::vec4(shade(varyings, snapped.frontFacing, planes, px, py), 1.0f);
+      const glm::vec3 lit = shade(varyings, snapped.frontFacing, planes, px, py);
+      glm::vec4& held = target.color->at(px, py);
+      held = blendedAlpha ? blend(held, lit, blendedAlpha(planes, px, py), blending) : glm::vec4(lit, 1.0f);
     });
   }
 }
@@ -133,7 +141,7 @@ ShadowMaps shadowPass(const Scene& scene, const FrameInputs& frame) {
             putTexcoords(v[k].varyings.data(), mask.uv, mesh, i);
             for (int c = 0; c < 4; ++c) v[k].varyings[static_cast<std::size_t>(mask.color + c)] = rgba[c];
           }
-          drawTriangle(v, material.masked ? mask.count : 0, false, 0, target, nullptr, material.masked ? keep : nullptr);
+          drawTriangle(v, masksShadow(material) ? mask.count : 0, false, 0, target, nullptr, masksShadow(material) ? keep : nullptr);
         }
       }
       std::copy(target.depth.begin(), target.depth.end(), maps.layer(light.shadowLayer + face));
@@ -142,14 +150,45 @@ ShadowMaps shadowPass(const Scene& scene, const FrameInputs& frame) {
   return maps;
 }
 
-// Pass 2: every triangle into the image, shaded by its mode, with the
+// Triangles [first, first + count) of one instance's mesh.
+struct Run {
+  std::size_t instance = 0;
+  std::size_t first = 0, count = 0;
+};
+
+// Which triangles pass 2 draws, in their order: the opaque ones (instances in
+// order), the blended ones (FrameInputs::transparentOrder), or every one.
+enum class Drawn { Opaque, Blended, All };
+
+std::vector<Run> runsOf(const Scene& scene, const FrameInputs& frame, Drawn drawn, std::vector<std::size_t>& firstTriangle) {
+  firstTriangle.assign(1, 0);
+  for (const FrameInstance& instance : frame.instances)
+    firstTriangle.push_back(firstTriangle.back() + scene.meshes[static_cast<std::size_t>(instance.mesh)].triangleCount());
+  std::vector<Run> runs;
+  if (drawn == Drawn::Blended) {
+    for (const std::uint32_t triangle : frame.transparentOrder) {
+      const auto i = static_cast<std::size_t>(std::upper_bound(firstTriangle.begin(), firstTriangle.end(), std::size_t{triangle}) - firstTriangle.begin()) - 1;
+      const std::size_t local = triangle - firstTriangle[i];
+      if (!runs.empty() && runs.back().instance == i && runs.back().first + runs.back().count == local) ++runs.back().count;
+      else runs.push_back({i, local, 1});
+    }
+    return runs;
+  }
+  for (std::size_t i = 0; i < frame.instances.size(); ++i)
+    if (drawn == Drawn::All || !frame.materials[static_cast<std::size_t>(frame.instances[i].material)].blended)
+      runs.push_back({i, 0, firstTriangle[i + 1] - firstTriangle[i]});
+  return runs;
+}
+
+// Pass 2: the triangles `drawn` into the image, shaded by its mode, with the
 // varyings of varyings.h (Phong: position, normal; Gouraud: the
 // illumination of both sides; all: texture coordinates and vertex colour).
-void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, Target& target) {
+void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, Target& target, Drawn drawn) {
   const VaryingLayout layout = varyingLayout(frame.shading);
   const int count = layout.packed(frame.procedural), color = layout.color, model = layout.model;
-  std::uint32_t id = 0;
-  for (const FrameInstance& instance : frame.instances) {
+  std::vector<std::size_t> firstTriangle;
+  for (const Run& run : runsOf(scene, frame, drawn, firstTriangle)) {
+    const FrameInstance& instance = frame.instances[run.instance];
     const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
     const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
     const Texture* texture = baseColorTextureOf(scene, frame, material, mesh);
@@ -175,7 +214,10 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
     const FragmentTest keep = [&](const Interpolation& planes, int px, int py) {
       return keepsFragment(material, texture, colored, layout, planes, px, py);
     };
-    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    const FragmentAlpha alpha = [&](const Interpolation& planes, int px, int py) {
+      return fragmentAlphaAt(material, texture, colored, layout, planes, px, py);
+    };
+    for (std::size_t t = 3 * run.first; t < 3 * (run.first + run.count); t += 3) {
       // Vertex stage.
       ClipVertex v[3];
       glm::vec3 world[3];
@@ -252,12 +294,14 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
       const FragmentShader fragment = [&](const float* f, bool front, const Interpolation& planes, int px, int py) {
         return fogged(frame.fog, surface(f, front, planes, px, py), eyeDepth(frame, planes.oneOverWAt(px, py), planes.depthAt(px, py)));
       };
-      drawTriangle(v, count, instance.cullBackFaces, ++id, target, fragment, material.masked ? keep : nullptr);
+      const auto id = static_cast<std::uint32_t>(firstTriangle[run.instance] + t / 3 + 1);
+      drawTriangle(v, count, instance.cullBackFaces, id, target, fragment, material.masked ? keep : nullptr, material.blended ? alpha : nullptr,
+                   frame.blending);
     }
   }
 }
 
-// Pass 2's lines and points, after every triangle: each instance's
+// Pass 2's lines and points, after every opaque triangle: each instance's
 // segments, then its points, from their own vertex stage.
 void linePass(const Scene& scene, const FrameInputs& frame, Target& target) {
   const float halfWidth = 0.5f * static_cast<float>(frame.width), halfHeight = 0.5f * static_cast<float>(frame.height);
@@ -301,17 +345,18 @@ class ReferenceRenderer final : public Renderer {
     const auto start = std::chrono::steady_clock::now();
     const ShadowMaps maps = shadowPass(scene, frame);
     RenderResult result;
-    ColorBuffer color(frame.width, frame.height, glm::vec4(frame.background, frame.backgroundAlpha));
+    ColorBuffer color(frame.width, frame.height, glm::vec4(0.0f));
     for (int y = 0; y < frame.height; ++y)
-      for (int x = 0; x < frame.width; ++x) color.at(x, y) = glm::vec4(backgroundAt(frame, x, y), frame.backgroundAlpha);
+      for (int x = 0; x < frame.width; ++x) color.at(x, y) = backgroundPixel(frame, x, y);
     Target target{frame.width, frame.height, std::vector<float>(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 1.0f)};
     target.color = &color;
-    litPass(scene, frame, maps, target);
+    litPass(scene, frame, maps, target, Drawn::Opaque);
     linePass(scene, frame, target);
+    litPass(scene, frame, maps, target, Drawn::Blended);
     // The resolve, one pixel at a time (cpu/resolve.cpp does it four channels at once).
     result.image = Image(frame.width, frame.height);
     for (int y = 0; y < frame.height; ++y)
-      for (int x = 0; x < frame.width; ++x) result.image.at(x, y) = encodePixel(color.at(x, y));
+      for (int x = 0; x < frame.width; ++x) result.image.at(x, y) = encodePixel(unstored(color.at(x, y), frame.blending));
     result.timings.push_back({"both passes", std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count()});
     return result;
   }
@@ -323,7 +368,7 @@ class ReferenceRenderer final : public Renderer {
     std::vector<std::uint32_t> ids(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 0u);
     Target target{frame.width, frame.height, std::vector<float>(ids.size(), 1.0f)};
     target.ids = &ids;
-    litPass(scene, frame, maps, target);
+    litPass(scene, frame, maps, target, Drawn::Opaque);  // blended triangles write no depth and keep no pixel
     return ids;
   }
 
@@ -333,7 +378,7 @@ class ReferenceRenderer final : public Renderer {
     std::vector<std::uint32_t> counts(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 0u);
     Target target{frame.width, frame.height, std::vector<float>(counts.size(), 1.0f)};
     target.counts = &counts;
-    litPass(scene, frame, maps, target);
+    litPass(scene, frame, maps, target, Drawn::All);
     return counts;
   }
 

@@ -1,0 +1,18 @@
+// The lit pass's output (renderer/PIPELINE.md, section 7, "Transparency"):
+// an opaque fragment writes (C, 1) into the linear colour buffer; a blended
+// one (FACET_BLENDED) reads the buffer at its pixel (EXT_shader_framebuffer_fetch,
+// which sees every earlier fragment there in primitive order) and blends into
+// it by the frame's equation (FACET_PREMULTIPLIED). Mirror: renderer/cpu/lit_pass.cpp.
+#if FACET_BLENDED
+layout(location = 0) inout vec4 color;
+#else
+layout(location = 0) out vec4 color;
+#endif
+
+void writeLit(vec3 lit, float alpha) {
+#if FACET_BLENDED
+  color = blend(color, lit, alpha, FACET_PREMULTIPLIED != 0);
+#else
+  color = vec4(lit, 1.0);
+#endif
+}
