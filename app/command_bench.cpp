@@ -133,9 +133,11 @@ BenchScene fillScene(const std::string& name, bool blended, int width, int heigh
   return b;
 }
 
-// The default scene with its own camera and light written as manual settings.
-BenchScene defaultScene(int width, int height) {
-  BenchScene b{"default", makeDefaultScene(), manualSettings(width, height)};
+// The default scene with its own camera and light written as manual settings;
+// with `samples` > 1 anti-aliased (four passes of the camera, one of each shadow map).
+BenchScene defaultScene(const std::string& name, int samples, int width, int height) {
+  BenchScene b{name, makeDefaultScene(), manualSettings(width, height)};
+  b.settings.antialiasing.samples = samples;
   const SceneCamera& camera = b.scene.cameras.front();
   b.settings.camera.eye = camera.eye;
   b.settings.camera.reference = camera.reference;
@@ -148,7 +150,7 @@ BenchScene defaultScene(int width, int height) {
 }
 
 std::vector<std::string> allSceneNames() {
-  return {"sphere-100k", "sphere-1m", "sphere-100k-shadow", "sphere-1m-shadow", "fill-10x", "fill-10x-blended", "default"};
+  return {"sphere-100k", "sphere-1m", "sphere-100k-shadow", "sphere-1m-shadow", "fill-10x", "fill-10x-blended", "default", "default-aa4"};
 }
 
 BenchScene makeBenchScene(const std::string& name, int width, int height) {
@@ -158,7 +160,8 @@ BenchScene makeBenchScene(const std::string& name, int width, int height) {
   if (name == "sphere-1m-shadow") return sphereScene(name, kSphere1M, true, width, height);
   if (name == "fill-10x") return fillScene(name, false, width, height);
   if (name == "fill-10x-blended") return fillScene(name, true, width, height);
-  if (name == "default") return defaultScene(width, height);
+  if (name == "default") return defaultScene(name, 1, width, height);
+  if (name == "default-aa4") return defaultScene(name, 4, width, height);
   throw Error("bench: unknown scene '" + name + "'");
 }
 
@@ -288,7 +291,7 @@ int runCallgrindMode(const BenchOptions& o, int width, int height) {
 Command addBenchCommand(CLI::App& app) {
   auto o = std::make_shared<BenchOptions>();
   CLI::App* command = app.add_subcommand("bench", "Benchmark the CPU rasterizer against OpenGL on llvmpipe, same scenes, same threads");
-  command->add_option("--scenes", o->scenes, "scenes (default: all): sphere-100k sphere-1m sphere-100k-shadow sphere-1m-shadow fill-10x fill-10x-blended default")
+  command->add_option("--scenes", o->scenes, "scenes (default: all): sphere-100k sphere-1m sphere-100k-shadow sphere-1m-shadow fill-10x fill-10x-blended default default-aa4")
       ->delimiter(',')
       ->check(CLI::IsMember(allSceneNames()));
   command->add_option("--backends", o->backends, "cpu,gl (default both)")->delimiter(',')->check(CLI::IsMember({"cpu", "gl"}));

@@ -1222,6 +1222,44 @@ def transparency():
     return g
 
 
+def antialiasing():
+    g = Gltf("Anti-aliasing (with --set antialiasing.samples=4, 9 or 16, and antialiasing.pattern=jittered): "
+             "geometry finer than a pixel, which mipmaps cannot smooth. A floor of 1 m tiles in two colours "
+             "receding to the horizon, whose far rows break into moire with one sample per pixel; a wheel of 40 "
+             "spokes that thin to a point at its hub; five wires at shallow slopes, whose edges step; each edge "
+             "averaged in linear light where samples resolve it.")
+    light_tiles, dark_tiles = [], []
+    for row in range(40):
+        for col in range(-8, 8):
+            (light_tiles if (row + col) % 2 == 0 else dark_tiles).append((col, -row))
+    for name, tiles, color in (("light tiles", light_tiles, (0.85, 0.85, 0.8, 1)), ("dark tiles", dark_tiles, (0.08, 0.08, 0.1, 1))):
+        positions, normals, indices = [], [], []
+        for x, z in tiles:
+            n = len(positions)
+            positions += [(x, 0, z), (x + 1, 0, z), (x + 1, 0, z - 1), (x, 0, z - 1)]
+            normals += [(0, 1, 0)] * 4
+            indices += quad_indices(n, n + 1, n + 2, n + 3)
+        g.add_node(name, g.add_mesh(name, g.primitive(Mesh(positions, normals, indices), g.add_material(name, color, 0.0, 0.8))),
+                   translation=(0, 0, 2))
+    positions, normals, indices = [], [], []
+    for k in range(40):
+        a0, a1 = 2 * math.pi * k / 40, 2 * math.pi * (k + 0.35) / 40  # each spoke a thin wedge, 35 % of its sector
+        n = len(positions)
+        positions += [(0, 0, 0), (math.cos(a0), math.sin(a0), 0), (math.cos(a1), math.sin(a1), 0)]
+        normals += [(0, 0, 1)] * 3
+        indices += [n, n + 1, n + 2]
+    g.add_node("wheel", g.add_mesh("wheel", g.primitive(Mesh(positions, normals, indices),
+                                                       g.add_material("wheel", (0.9, 0.3, 0.1, 1), 0.0, 0.5, double_sided=True))),
+               translation=(-1.6, 1.5, -2.0), scale=(1.2, 1.2, 1.2))
+    for k in range(5):
+        wire = cube(1.0)
+        g.add_node("wire %d" % k, g.add_mesh("wire %d" % k, g.primitive(wire, g.add_material("wire %d" % k, (0.2, 0.5, 0.95, 1), 0.0, 0.4))),
+                   translation=(1.6, 0.8 + 0.35 * k, -2.0), rotation=axis_angle((0, 0, 1), 3 + 4 * k), scale=(2.6, 0.03, 0.03))
+    g.add_camera("camera", (0.0, 1.6, 4.0), (0.0, 0.9, -4.0))
+    g.add_light("sun", "directional", (-2, 6, 4), (0, 0, 0), intensity=1.2)
+    return g
+
+
 def write_png(path, png_bytes):
     os.makedirs(os.path.dirname(path), exist_ok=True)
     with open(path, "wb") as out:
@@ -1409,6 +1447,7 @@ SCENES = [
     (ASSETS_DIR, "fog.gltf", fog),
     (ASSETS_DIR, "painter.gltf", painter),
     (ASSETS_DIR, "transparency.gltf", transparency),
+    (ASSETS_DIR, "antialiasing.gltf", antialiasing),
 ]
 
 

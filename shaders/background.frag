@@ -11,9 +11,11 @@
 uniform vec2 viewportSize;     // W, H
 uniform float backgroundAlpha;  // alpha of empty pixels
 uniform bool premultiplied;     // blending=premultiplied: the buffer holds C·a
+uniform vec2 sampleOffset;      // anti-aliasing: this pass's sample offset, in pixels
 
 layout(location = 0) out vec4 color;
 
 void main() {
-  color = stored(backgroundAt(gl_FragCoord.xy, viewportSize), backgroundAlpha, premultiplied);
+  precise vec2 at = gl_FragCoord.xy + sampleOffset;  // the pixel's sample: its centre, moved by the pass's offset
+  color = stored(backgroundAt(at, viewportSize), backgroundAlpha, premultiplied);
 }

@@ -16,6 +16,12 @@ vec4 unstored(vec4 held, bool premultiplied) {
   return held.a > 0.0 ? vec4(divided, held.a) : vec4(vec3(0.0), held.a);
 }
 
+// What the buffer holds as premultiplied (C·a, a), the form samples are averaged in (anti-aliasing).
+vec4 premultipliedOf(vec4 held, bool premultiplied) {
+  precise vec3 scaled = held.rgb * held.a;
+  return premultiplied ? held : vec4(scaled, held.a);
+}
+
 // A fragment of linear colour C_f and alpha α (clamped to [0, 1], NaN to 0)
 // over what the buffer holds at its pixel:
 //   straight       t = α_b·(1 − α_f), α_o = α_f + t, C_o = (C_f·α_f + C_b·t) / α_o (0 where α_o = 0)

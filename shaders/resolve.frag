@@ -6,12 +6,14 @@
 #include "srgb.glsl"
 #include "blending.glsl"
 
-uniform bool premultiplied;  // blending=premultiplied: the buffer holds C·a
+uniform bool premultiplied;  // the buffer holds C·a (blending=premultiplied, or a sum of samples)
+uniform float samples;       // the passes summed into it: anti-aliasing's box filter divides by their count
 
 layout(binding = 8) uniform sampler2D linearColor;  // the RGBA32F colour buffer (kResolveUnit)
 
 layout(location = 0) out vec4 color;
 
 void main() {
-  color = encodeSrgb(unstored(texelFetch(linearColor, ivec2(gl_FragCoord.xy), 0), premultiplied));
+  precise vec4 mean = texelFetch(linearColor, ivec2(gl_FragCoord.xy), 0) / samples;
+  color = encodeSrgb(unstored(mean, premultiplied));
 }

@@ -22,6 +22,11 @@ inline glm::vec4 unstored(glm::vec4 held, Blending blending) {
   return held.a > 0.0f ? glm::vec4(glm::vec3(held) / held.a, held.a) : glm::vec4(0.0f, 0.0f, 0.0f, held.a);
 }
 
+// What the buffer holds as premultiplied (C·a, a), the form samples are averaged in (anti-aliasing).
+inline glm::vec4 premultipliedOf(glm::vec4 held, Blending blending) {
+  return blending == Blending::Premultiplied ? held : glm::vec4(glm::vec3(held) * held.a, held.a);
+}
+
 // A fragment of linear colour C_f and alpha α (clamped to [0, 1], NaN to 0)
 // over what the buffer holds at its pixel:
 //   straight       t = α_b·(1 − α_f), α_o = α_f + t, C_o = (C_f·α_f + C_b·t) / α_o (0 where α_o = 0)

@@ -11,6 +11,7 @@
 #include "cpu/lighting.h"
 #include "cpu/passes.h"
 #include "cpu/resolve.h"
+#include "pipeline/antialiasing.h"
 #include "cpu/scanline_zbuffer.h"
 #include "cpu/thread_pool.h"
 #include "pipeline/frame_checks.h"
@@ -40,16 +41,30 @@ class CpuRenderer final : public Renderer {
     shadowPasses(scene, frame, result);
 
     const auto start = std::chrono::steady_clock::now();
-    color_.reset(frame.width, frame.height, cpu::backgroundPixel(frame, 0, 0));
-    if (cpu::showsEnvironment(frame))  // the map behind everything, in each pixel's view direction
-      cpu::forEachRange(pool_, static_cast<std::size_t>(frame.height), [&](std::size_t begin, std::size_t end, int) {
-        for (std::size_t y = begin; y < end; ++y)
-          for (int x = 0; x < frame.width; ++x) color_.at(x, static_cast<int>(y)) = cpu::backgroundPixel(frame, x, static_cast<int>(y));
-      });
-    cpu::litPass(pool_, buffers_, scene, frame, maps_, color_);
-    result.timings.push_back({"lit pass", millisecondsSince(start)});
+    // One pass into the colour buffer: the background, then the lit pass.
+    const auto drawPass = [&](const FrameInputs& pass) {
+      color_.reset(pass.width, pass.height, cpu::backgroundPixel(pass, 0, 0));
+      if (cpu::showsEnvironment(pass))  // the map behind everything, in each pixel's view direction
+        cpu::forEachRange(pool_, static_cast<std::size_t>(pass.height), [&](std::size_t begin, std::size_t end, int) {
+          for (std::size_t y = begin; y < end; ++y)
+            for (int x = 0; x < pass.width; ++x) color_.at(x, static_cast<int>(y)) = cpu::backgroundPixel(pass, x, static_cast<int>(y));
+        });
+      cpu::litPass(pool_, buffers_, scene, pass, maps_, color_);
+    };
+    if (frame.samples.empty()) {
+      drawPass(frame);
+      result.timings.push_back({"lit pass", millisecondsSince(start)});
+    } else {  // anti-aliasing: a pass per sample, summed premultiplied (PIPELINE.md, section 7)
+      sum_.reset(frame.width, frame.height, glm::vec4(0.0f));
+      for (const glm::vec2 offset : frame.samples) {
+        drawPass(sampleFrame(frame, offset));
+        cpu::accumulate(pool_, color_, frame.blending, sum_);
+      }
+      result.timings.push_back({"lit pass (" + std::to_string(frame.samples.size()) + " samples)", millisecondsSince(start)});
+    }
     const auto resolveStart = std::chrono::steady_clock::now();
-    cpu::resolve(pool_, color_, frame.blending, result.image);
+    if (frame.samples.empty()) cpu::resolve(pool_, color_, frame.blending, 1, result.image);
+    else cpu::resolve(pool_, sum_, Blending::Premultiplied, static_cast<int>(frame.samples.size()), result.image);
     result.timings.push_back({"resolve", millisecondsSince(resolveStart)});
     if (frame.hsr == HiddenSurface::Scanline) {
       const auto frameDepth = static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height) * sizeof(float);
@@ -102,6 +117,7 @@ class CpuRenderer final : public Renderer {
   cpu::FrameBuffers buffers_;
   cpu::ShadowMaps maps_;
   ColorBuffer color_;  // the lit pass's linear colours, kept from frame to frame
+  ColorBuffer sum_;    // anti-aliasing: the samples' premultiplied sum
 };
 
 }  // namespace

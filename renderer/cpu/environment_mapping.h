@@ -36,12 +36,13 @@ inline glm::vec3 environmentAt(const EnvironmentMap& map, glm::vec3 D, int level
 inline bool showsEnvironment(const FrameInputs& frame) { return frame.environment.map && frame.environment.background; }
 
 // The linear colour of empty pixel (px, py): env(D), D = (F + x·X) + y·Y with
-// x, y its centre in NDC, where the frame shows its map; else the background.
+// x, y its sample's position in NDC, where the frame shows its map; else the background.
 inline glm::vec3 backgroundAt(const FrameInputs& frame, int px, int py) {
   if (!showsEnvironment(frame)) return frame.background;
   const FrameInputs::Environment& e = frame.environment;
-  const float x = (2.0f * (static_cast<float>(px) + 0.5f)) / static_cast<float>(frame.width) - 1.0f;
-  const float y = (2.0f * (static_cast<float>(py) + 0.5f)) / static_cast<float>(frame.height) - 1.0f;
+  // The sample's position in the pixel: its centre, moved by the frame's sample offset (anti-aliasing).
+  const float x = (2.0f * ((static_cast<float>(px) + 0.5f) + frame.sampleOffset.x)) / static_cast<float>(frame.width) - 1.0f;
+  const float y = (2.0f * ((static_cast<float>(py) + 0.5f) + frame.sampleOffset.y)) / static_cast<float>(frame.height) - 1.0f;
   return environmentAt(*e.map, (e.forward + x * e.right) + y * e.up, 0);
 }
 

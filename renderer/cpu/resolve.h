@@ -3,7 +3,7 @@
 // buffer and the resolve"): each pixel of the linear colour buffer clamped,
 // its colour (a premultiplied buffer's divided by its alpha first) encoded to
 // sRGB levels and its alpha to a linear level.
-// Mirror: shaders/resolve.frag.
+// Mirror: shaders/resolve.frag, shaders/accumulate.frag.
 #include "cpu/thread_pool.h"
 #include "image/color_buffer.h"
 #include "image/image.h"
@@ -11,7 +11,13 @@
 
 namespace facet::cpu {
 
-// `image` takes the buffer's size; rows are split across the pool.
-void resolve(ThreadPool& pool, const ColorBuffer& buffer, Blending blending, Image& image);
+// `image` takes the buffer's size; rows are split across the pool. The
+// buffer holds colours as `holding` says, summed over `samples` passes
+// (divided by that count first: anti-aliasing's box filter).
+void resolve(ThreadPool& pool, const ColorBuffer& buffer, Blending holding, int samples, Image& image);
+
+// Anti-aliasing: one sample's colour buffer, held as `blending` says, added
+// premultiplied into `sum` (pixel by pixel, in the order the samples are drawn).
+void accumulate(ThreadPool& pool, const ColorBuffer& sample, Blending blending, ColorBuffer& sum);
 
 }  // namespace facet::cpu

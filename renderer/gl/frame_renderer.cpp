@@ -12,6 +12,7 @@
 
 #include "common/error.h"
 #include "gl/shader_variant.h"
+#include "pipeline/antialiasing.h"
 
 namespace facet::gl {
 namespace {
@@ -116,12 +117,27 @@ std::vector<PassTiming> GlFrameRenderer::drawFrame(const Scene& scene, const Fra
     timings.push_back({"shadow pass (" + std::to_string(frame.shadowLayerCount) + " maps)", millisecondsSince(start)});
     start = Clock::now();
   }
-  litPass(frame);
-  gl_.glFinish();
-  checkError("the lit pass");
-  timings.push_back({"lit pass", millisecondsSince(start)});
+  if (frame.samples.empty()) {
+    litPass(frame);
+    gl_.glFinish();
+    checkError("the lit pass");
+    timings.push_back({"lit pass", millisecondsSince(start)});
+  } else {  // anti-aliasing: a pass per sample, summed premultiplied (PIPELINE.md, section 7)
+    sum_.resize(gl_, frame.width, frame.height);
+    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    gl_.glClearNamedFramebufferfv(sum_.framebuffer(), GL_COLOR, 0, zero);
+    for (const glm::vec2 offset : frame.samples) {
+      const FrameInputs pass = sampleFrame(frame, offset);
+      litPass(pass);
+      accumulatePass(pass);
+    }
+    gl_.glFinish();
+    checkError("the lit pass");
+    timings.push_back({"lit pass (" + std::to_string(frame.samples.size()) + " samples)", millisecondsSince(start)});
+  }
   start = Clock::now();
-  resolvePass(frame);
+  if (frame.samples.empty()) resolvePass(frame, target_.colorTexture(), frame.blending == Blending::Premultiplied, 1);
+  else resolvePass(frame, sum_.colorTexture(), true, static_cast<int>(frame.samples.size()));
   gl_.glFinish();
   checkError("the resolve");
   timings.push_back({"resolve", millisecondsSince(start)});
@@ -329,11 +345,18 @@ bool GlFrameRenderer::preparePrograms(const FrameInputs& frame) {
     backgroundViewportSize_ = uniformLocation(gl_, *backgroundProgram_, "viewportSize");
     backgroundAlpha_ = uniformLocation(gl_, *backgroundProgram_, "backgroundAlpha");
     backgroundPremultiplied_ = uniformLocation(gl_, *backgroundProgram_, "premultiplied");
+    backgroundSampleOffset_ = uniformLocation(gl_, *backgroundProgram_, "sampleOffset");
+    compiled = true;
+  }
+  if (!frame.samples.empty() && !accumulateProgram_) {
+    accumulateProgram_.emplace(buildProgram(gl_, {"viewport_triangle.vert", "accumulate.frag"}));
+    accumulatePremultiplied_ = uniformLocation(gl_, *accumulateProgram_, "premultiplied");
     compiled = true;
   }
   if (!resolveProgram_) {
     resolveProgram_.emplace(buildProgram(gl_, {"viewport_triangle.vert", "resolve.frag"}));
     resolvePremultiplied_ = uniformLocation(gl_, *resolveProgram_, "premultiplied");
+    resolveSamples_ = uniformLocation(gl_, *resolveProgram_, "samples");
     compiled = true;
   }
   if (!lineProgram_ || lineFog_ != frame.fog.mode) {
@@ -398,6 +421,7 @@ void GlFrameRenderer::litPass(const FrameInputs& frame) {
                          static_cast<float>(frame.height));
   gl_.glProgramUniform1f(backgroundProgram_->id(), backgroundAlpha_, frame.backgroundAlpha);
   gl_.glProgramUniform1i(backgroundProgram_->id(), backgroundPremultiplied_, frame.blending == Blending::Premultiplied ? 1 : 0);
+  gl_.glProgramUniform2f(backgroundProgram_->id(), backgroundSampleOffset_, frame.sampleOffset.x, frame.sampleOffset.y);
   gl_.glBindVertexArray(emptyVertexArray_.id());
   gl_.glDrawArrays(GL_TRIANGLES, 0, 3);
 
@@ -463,15 +487,29 @@ void GlFrameRenderer::drawLines(const FrameInputs& frame) {
   }
 }
 
-void GlFrameRenderer::resolvePass(const FrameInputs& frame) {
+void GlFrameRenderer::accumulatePass(const FrameInputs& frame) {
+  gl_.glBindFramebuffer(GL_FRAMEBUFFER, sum_.framebuffer());
+  gl_.glViewport(0, 0, frame.width, frame.height);
+  gl_.glDisable(GL_DEPTH_TEST);
+  gl_.glDisable(GL_CULL_FACE);
+  gl_.glBindTextureUnit(kResolveUnit, target_.colorTexture());
+  gl_.glUseProgram(accumulateProgram_->id());
+  gl_.glProgramUniform1i(accumulateProgram_->id(), accumulatePremultiplied_, frame.blending == Blending::Premultiplied ? 1 : 0);
+  gl_.glBindVertexArray(emptyVertexArray_.id());
+  gl_.glDrawArrays(GL_TRIANGLES, 0, 3);
+  gl_.glBindTextureUnit(kResolveUnit, 0);  // the colour buffer is the next sample's target
+}
+
+void GlFrameRenderer::resolvePass(const FrameInputs& frame, GLuint source, bool premultiplied, int samples) {
   resolved_.resize(gl_, frame.width, frame.height);
   gl_.glBindFramebuffer(GL_FRAMEBUFFER, resolved_.framebuffer());
   gl_.glViewport(0, 0, frame.width, frame.height);
   gl_.glDisable(GL_DEPTH_TEST);
   gl_.glDisable(GL_CULL_FACE);
-  gl_.glBindTextureUnit(kResolveUnit, target_.colorTexture());
+  gl_.glBindTextureUnit(kResolveUnit, source);
   gl_.glUseProgram(resolveProgram_->id());
-  gl_.glProgramUniform1i(resolveProgram_->id(), resolvePremultiplied_, frame.blending == Blending::Premultiplied ? 1 : 0);
+  gl_.glProgramUniform1i(resolveProgram_->id(), resolvePremultiplied_, premultiplied ? 1 : 0);
+  gl_.glProgramUniform1f(resolveProgram_->id(), resolveSamples_, static_cast<float>(samples));
   gl_.glBindVertexArray(emptyVertexArray_.id());
   gl_.glDrawArrays(GL_TRIANGLES, 0, 3);
   gl_.glBindTextureUnit(kResolveUnit, 0);  // the colour buffer is the next frame's target

@@ -109,8 +109,11 @@ class GlFrameRenderer {
   // The mesh's triangles through its vertex array, or one painter's run of them.
   void drawIndexed(const MeshBuffers& mesh, const PainterRun* run);
   void drawLines(const FrameInputs& frame);
-  // The colour buffer encoded into `resolved_` (shaders/resolve.frag).
-  void resolvePass(const FrameInputs& frame);
+  // A colour buffer encoded into `resolved_` (shaders/resolve.frag): `source`
+  // holds its colours premultiplied or not, summed over `samples` passes.
+  void resolvePass(const FrameInputs& frame, GLuint source, bool premultiplied, int samples);
+  // Anti-aliasing: target_'s sample added into sum_ (shaders/accumulate.frag).
+  void accumulatePass(const FrameInputs& frame);
   void checkError(const char* where) const;
 
   GlFunctions gl_;
@@ -124,6 +127,10 @@ class GlFrameRenderer {
   GLint backgroundAlpha_ = -1;         // its uniform float backgroundAlpha
   GLint backgroundPremultiplied_ = -1;  // its uniform bool premultiplied
   GLint resolvePremultiplied_ = -1;     // the resolve's
+  GLint resolveSamples_ = -1;
+  GLint backgroundSampleOffset_ = -1;
+  std::optional<ShaderProgram> accumulateProgram_;
+  GLint accumulatePremultiplied_ = -1;
   std::optional<ShaderProgram> resolveProgram_;
   struct LineProgram {
     GLint clipFromModel, colored, baseColorFactor;
@@ -152,6 +159,7 @@ class GlFrameRenderer {
   ShadowMapArray shadowMaps_;
   RenderTarget target_{GL_RGBA32F};  // the lit pass's colour buffer, linear RGBA
   RenderTarget resolved_{GL_RGBA8, RenderTarget::Depth::Without};
+  RenderTarget sum_{GL_RGBA32F, RenderTarget::Depth::Without};  // anti-aliasing: the samples' premultiplied sum
   RenderTarget idTarget_{GL_R32UI};
   RenderTarget countTarget_{GL_R32F};
 };

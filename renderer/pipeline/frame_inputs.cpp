@@ -12,6 +12,7 @@
 #include "math/normal_matrix.h"
 #include "math/projection.h"
 #include "math/viewport.h"
+#include "pipeline/antialiasing.h"
 #include "pipeline/displacement.h"
 #include "pipeline/frame_checks.h"
 #include "pipeline/material_coefficients.h"
@@ -144,6 +145,9 @@ FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings)
   f.hsr = settings.hsr;
   if (f.hsr == HiddenSurface::Painter) f.paintersOrder = paintersOrder(scene, f);
   f.blending = settings.blending;
+  if (settings.antialiasing.samples > 1)
+    f.samples = sampleOffsets(samplesPerSide(settings.antialiasing.samples), settings.antialiasing.pattern,
+                              static_cast<unsigned>(settings.antialiasing.seed));
   const bool anyBlended = std::any_of(f.instances.begin(), f.instances.end(),
                                       [&](const FrameInstance& i) { return f.materials[static_cast<std::size_t>(i.material)].blended; });
   if (anyBlended && f.hsr == HiddenSurface::Painter) {

@@ -73,6 +73,11 @@ struct FrameInputs {
   // (pipeline/transparency_order.h); empty when no material is blended.
   Blending blending = Blending::Straight;
   std::vector<std::uint32_t> transparentOrder;
+  // Anti-aliasing (PIPELINE.md, section 7): the sample offsets of the frame's
+  // passes (pipeline/antialiasing.h), empty for one sample at each pixel's
+  // centre; and the offset a sample's frame is drawn at (sampleFrame).
+  std::vector<glm::vec2> samples;
+  glm::vec2 sampleOffset{0.0f};
   ShadowSettings shadows;
   int shadowLayerCount = 0;       // S×S depth maps over all lights: one per face
   glm::vec3 background{0.0f};    // linear RGB

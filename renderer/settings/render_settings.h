@@ -166,6 +166,25 @@ struct TransparencySettings {
   float shadowCutoff = 0.5f;  // a blended fragment casts a shadow where α ≥ this
 };
 
+// Anti-aliasing (renderer/PIPELINE.md, section 7, "Anti-aliasing"): the
+// course's supersampling, `samples` = s² sub-pixel positions per pixel on an
+// s × s ordered grid, or one jittered position in each grid cell from a
+// seeded generator; every sample is a full pass, box-filtered in linear light.
+enum class SamplePattern { Grid, Jittered, Count };
+inline constexpr std::array<std::string_view, static_cast<int>(SamplePattern::Count)> kSamplePatternNames = {"grid", "jittered"};
+inline constexpr int kMaxSamplesPerSide = 4;  // samples: 1, 4, 9 or 16
+// s for s × s samples: the largest s with s² ≤ samples.
+inline int samplesPerSide(int samples) {
+  int side = 1;
+  while ((side + 1) * (side + 1) <= samples) ++side;
+  return side;
+}
+struct AntialiasingSettings {
+  int samples = 1;
+  SamplePattern pattern = SamplePattern::Grid;
+  int seed = 1;  // jittered: the generator's seed
+};
+
 struct RenderSettings {
   int width = 800;   // image size in pixels
   int height = 600;
@@ -180,6 +199,7 @@ struct RenderSettings {
   MaterialOverrides material;
   Blending blending = Blending::Straight;
   TransparencySettings transparency;
+  AntialiasingSettings antialiasing;
   ShadowSettings shadows;
   TextureSettings textures;
   EnvironmentSettings environment;

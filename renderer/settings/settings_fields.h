@@ -87,6 +87,13 @@ void visitSettings(Visitor& v, RenderSettings& s) {
              kTransparencySortNames);
     v.field({"shadowCutoff", "a blended fragment casts a shadow where its alpha is at least this", 0, 1}, t.shadowCutoff);
   });
+  v.group("antialiasing", [&] {
+    AntialiasingSettings& a = s.antialiasing;
+    v.field({"samples", "supersampling: 1, 4, 9 or 16 samples per pixel (s x s), averaged in linear light", 1, kMaxSamplesPerSide * kMaxSamplesPerSide},
+            a.samples);
+    v.choice({"pattern", "grid: the cells' centres; jittered: one seeded random position in each cell"}, a.pattern, kSamplePatternNames);
+    v.field({"seed", "jittered: the generator's seed (the same seed places the same samples)", 0, 16777216}, a.seed);
+  });
   v.group("shadows", [&] {
     ShadowSettings& sh = s.shadows;
     v.field({"enabled", "2-pass shadow maps"}, sh.enabled);

@@ -187,6 +187,9 @@ struct JsonReader {
 void validate(const RenderSettings& s) {
   if (!(s.camera.far > s.camera.near)) throw Error("settings key 'camera.far': must be greater than camera.near");
   if (s.fog.mode == FogMode::Linear && !(s.fog.end > s.fog.start)) throw Error("settings key 'fog.end': must be greater than fog.start");
+  const int side = samplesPerSide(s.antialiasing.samples);
+  if (side * side != s.antialiasing.samples)
+    throw Error("settings key 'antialiasing.samples': " + std::to_string(s.antialiasing.samples) + " is not one of 1, 4, 9, 16 (s x s samples)");
   for (std::size_t i = 0; i < s.lights.size(); ++i) {
     const Light& l = s.lights[i];
     const std::string key = "settings key 'lights." + std::to_string(i);

@@ -102,7 +102,7 @@ TEST_CASE("Resolve: the CPU's four-channel resolve gives encodePixel's bytes for
   }
   cpu::ThreadPool pool(3);
   Image image;
-  cpu::resolve(pool, buffer, Blending::Straight, image);
+  cpu::resolve(pool, buffer, Blending::Straight, 1, image);
   REQUIRE(image.width() == kWidth);
   REQUIRE(image.height() == kHeight);
   int differing = 0;

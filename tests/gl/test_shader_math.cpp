@@ -192,7 +192,7 @@ TEST_CASE("shader arithmetic: exp2Of and shading=pbr's Fresnel, GGX, Smith visib
                    }) == 0);
 }
 
-TEST_CASE("shader arithmetic: both blending equations and the premultiplied buffer's store and resolve give the CPU's bits") {
+TEST_CASE("shader arithmetic: both blending equations, the premultiplied buffer's store and resolve and the samples' sum give the CPU's bits") {
   std::mt19937 rng(7);
   std::vector<glm::vec4> held = random(rng, 0.0f, 1.0f), fragment = random(rng, -0.5f, 1.5f);  // alpha beyond [0, 1] is clamped
   // What each equation decides: alpha NaN, 0, 1, below 0; nothing under a clear fragment (α_o = 0); colours above 1.
@@ -208,6 +208,9 @@ TEST_CASE("shader arithmetic: both blending equations and the premultiplied buff
           }) == 0);
     CHECK(mismatches("vec4(stored(a.xyz, a.w, " + p + ").xyz, unstored(b, " + p + ").x)", held, fragment, [&](const glm::vec4& a, const glm::vec4& b) {
             return glm::vec4(glm::vec3(cpu::stored(glm::vec3(a), a.w, blending)), cpu::unstored(b, blending).x);
+          }) == 0);
+    CHECK(mismatches("premultipliedOf(b, " + p + ") + a", held, fragment, [&](const glm::vec4& a, const glm::vec4& b) {
+            return a + cpu::premultipliedOf(b, blending);  // anti-aliasing's sum (shaders/accumulate.frag)
           }) == 0);
   }
 }

@@ -330,6 +330,8 @@ void linePass(const Scene& scene, const FrameInputs& frame, Target& target) {
 
 // The reference follows one triangle at a time through the z-buffer, its only hidden-surface removal.
 void refuseHiddenSurface(const FrameInputs& frame) {
+  if (!frame.samples.empty())
+    throw Error("settings key 'antialiasing.samples': the reference backend draws one sample per pixel; --backend cpu and gl supersample");
   if (frame.hsr != HiddenSurface::ZBuffer)
     throw Error("settings key 'hsr': the reference backend has the z-buffer only; --backend cpu draws " +
                 std::string(kHiddenSurfaceNames[static_cast<std::size_t>(frame.hsr)]));
