@@ -11,6 +11,10 @@
 
 namespace facet::cpu {
 
+// An opaque fragment's colour as the buffer holds it, whichever the blending (C·1 = C):
+// what every opaque surface, line and point writes. Mirror: writeLit in shaders/lit_output.glsl.
+inline glm::vec4 opaque(glm::vec3 color) { return glm::vec4(color, 1.0f); }
+
 // A colour C with alpha a as the buffer holds it: (C, a) straight, (C·a, a) premultiplied.
 inline glm::vec4 stored(glm::vec3 color, float alpha, Blending blending) {
   return blending == Blending::Premultiplied ? glm::vec4(color * alpha, alpha) : glm::vec4(color, alpha);

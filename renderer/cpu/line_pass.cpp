@@ -1,5 +1,6 @@
 #include "cpu/fog.h"
 #include "cpu/line_pass.h"
+#include "cpu/blending.h"
 
 #include <algorithm>
 #include <cmath>
@@ -75,7 +76,7 @@ void drawLines(const FrameInputs& frame, const std::vector<DrawnLine>& lines, co
         }
         const glm::vec3 lit = line.baseColor * glm::vec3(line.raster.colorAt(0, px, py), line.raster.colorAt(1, px, py), line.raster.colorAt(2, px, py));
         const float d = frame.fog.mode != FogMode::None ? eyeDepth(frame, line.raster.oneOverW.at(px, py), z) : 0.0f;
-        color.at(px, py) = glm::vec4(fogged(frame.fog, lit, d), 1.0f);
+        color.at(px, py) = opaque(fogged(frame.fog, lit, d));
       }
   }
 }

@@ -163,7 +163,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         if (emissiveMap) I.specular = emission() + I.specular;  // summed with k_e = 0 for the triangle
         lit = shade(I, baseColor);
       }
-      color.at(px, py) = glm::vec4(fogged(frame.fog, lit, depth), 1.0f);
+      color.at(px, py) = opaque(fogged(frame.fog, lit, depth));
     }
   batch.flush();
 }

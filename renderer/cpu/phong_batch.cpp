@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "cpu/fog.h"
+#include "cpu/blending.h"
 
 namespace facet::cpu {
 
@@ -54,7 +55,7 @@ void PhongBatch::flush() {
     const glm::vec3 O{O_[0][k], O_[1][k], O_[2][k]};
     const glm::vec3 E{E_[0][k], E_[1][k], E_[2][k]};
     const glm::vec3 lit = shade(illuminate(frame_, maps_, laneMaterial(*material_[k], E), P, N, viewVector<float>(frame_, P)), O);
-    pixels_[offset_[k]] = glm::vec4(fogged(frame_.fog, lit, D_[k]), 1.0f);
+    pixels_[offset_[k]] = opaque(fogged(frame_.fog, lit, D_[k]));
   }
   count_ = 0;
 }

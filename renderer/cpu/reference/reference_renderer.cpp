@@ -107,7 +107,7 @@ void drawTriangle(const ClipVertex (&vertex)[3], int varyingCount, bool cullBack
       planes.varyingsAt(px, py, varyings);
       const glm::vec3 lit = shade(varyings, snapped.frontFacing, planes, px, py);
       glm::vec4& held = target.color->at(px, py);
-      held = blendedAlpha ? blend(held, lit, blendedAlpha(planes, px, py), blending) : glm::vec4(lit, 1.0f);
+      held = blendedAlpha ? blend(held, lit, blendedAlpha(planes, px, py), blending) : opaque(lit);
     });
   }
 }
