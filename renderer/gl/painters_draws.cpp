@@ -9,9 +9,7 @@
 namespace facet::gl {
 
 void PaintersDraws::prepare(const GlFunctions& gl, const Scene& scene, const FrameInputs& frame, const std::vector<std::uint32_t>& order) {
-  std::vector<std::size_t> firstTriangle{0};  // per instance, then the total
-  for (const FrameInstance& instance : frame.instances)
-    firstTriangle.push_back(firstTriangle.back() + scene.meshes[static_cast<std::size_t>(instance.mesh)].triangleCount());
+  const std::vector<std::size_t> firstTriangle = firstTriangles(scene, frame);
   std::vector<std::uint32_t> indices, triangles;
   indices.reserve(3 * order.size());
   runs_.clear();
@@ -19,8 +17,7 @@ void PaintersDraws::prepare(const GlFunctions& gl, const Scene& scene, const Fra
     const std::uint32_t triangle = order[position];
     if (triangle >= firstTriangle.back())
       throw Error("the frame's draw order names triangle " + std::to_string(triangle) + "; the frame has " + std::to_string(firstTriangle.back()));
-    const auto instance = static_cast<std::size_t>(std::upper_bound(firstTriangle.begin(), firstTriangle.end(), std::size_t{triangle}) -
-                                                   firstTriangle.begin()) - 1;
+    const std::size_t instance = instanceOfTriangle(firstTriangle, triangle);
     const Mesh& mesh = scene.meshes[static_cast<std::size_t>(frame.instances[instance].mesh)];
     const std::size_t t = 3 * (triangle - firstTriangle[instance]);
     indices.insert(indices.end(), {mesh.indices[t], mesh.indices[t + 1], mesh.indices[t + 2]});

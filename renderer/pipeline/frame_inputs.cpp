@@ -23,6 +23,17 @@
 
 namespace facet {
 
+std::vector<std::size_t> firstTriangles(const Scene& scene, const FrameInputs& frame) {
+  std::vector<std::size_t> first{0};
+  for (const FrameInstance& instance : frame.instances)
+    first.push_back(first.back() + scene.meshes[static_cast<std::size_t>(instance.mesh)].triangleCount());
+  return first;
+}
+
+std::size_t instanceOfTriangle(const std::vector<std::size_t>& first, std::size_t triangle) {
+  return static_cast<std::size_t>(std::upper_bound(first.begin(), first.end(), triangle) - first.begin()) - 1;
+}
+
 FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings) {
   for (std::size_t i = 0; i < scene.instances.size(); ++i)  // read below, before checkFrame
     if (scene.instances[i].mesh < 0 || static_cast<std::size_t>(scene.instances[i].mesh) >= scene.meshes.size())

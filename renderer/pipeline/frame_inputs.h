@@ -109,6 +109,13 @@ struct FrameInputs {
   std::vector<std::string> warnings;  // what building the frame dropped (lights beyond kMaxLights)
 };
 
+// The frame's triangle list (instances in order, each mesh's triangles in
+// order): where each instance's triangles begin in it, then their total.
+std::vector<std::size_t> firstTriangles(const Scene& scene, const FrameInputs& frame);
+
+// The instance whose triangles hold list index `triangle` (below first.back()).
+std::size_t instanceOfTriangle(const std::vector<std::size_t>& first, std::size_t triangle);
+
 // Throws facet::Error (naming the settings key) when the camera cannot be
 // built (eye on the reference point, up along the line of sight), when the
 // settings list more than kMaxLights lights, when an instance names a mesh

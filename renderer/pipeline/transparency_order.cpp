@@ -33,15 +33,13 @@ double centreEyeDepth(const Mesh& mesh, const FrameInputs& frame, const FrameIns
 }  // namespace
 
 std::vector<std::uint32_t> transparentOrder(const Scene& scene, const FrameInputs& frame, TransparencySort sort) {
-  std::vector<std::uint32_t> firstTriangle{0};  // per instance, then the total
-  for (const FrameInstance& instance : frame.instances)
-    firstTriangle.push_back(firstTriangle.back() + static_cast<std::uint32_t>(scene.meshes[static_cast<std::size_t>(instance.mesh)].triangleCount()));
+  const std::vector<std::size_t> firstTriangle = firstTriangles(scene, frame);
   std::vector<std::uint32_t> order;
   if (sort == TransparencySort::Triangle) {
     const std::vector<double> farthest = farthestEyeDepths(scene, frame);
     for (std::size_t i = 0; i < frame.instances.size(); ++i)
       if (blendedInstance(frame, frame.instances[i]))
-        for (std::uint32_t t = firstTriangle[i]; t < firstTriangle[i + 1]; ++t) order.push_back(t);
+        for (std::size_t t = firstTriangle[i]; t < firstTriangle[i + 1]; ++t) order.push_back(static_cast<std::uint32_t>(t));
     std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return farthest[a] > farthest[b]; });
     return order;
   }
@@ -54,7 +52,7 @@ std::vector<std::uint32_t> transparentOrder(const Scene& scene, const FrameInput
   }
   std::stable_sort(instances.begin(), instances.end(), [&](std::size_t a, std::size_t b) { return depth[a] > depth[b]; });
   for (const std::size_t i : instances)
-    for (std::uint32_t t = firstTriangle[i]; t < firstTriangle[i + 1]; ++t) order.push_back(t);
+    for (std::size_t t = firstTriangle[i]; t < firstTriangle[i + 1]; ++t) order.push_back(static_cast<std::uint32_t>(t));
   return order;
 }
 

@@ -89,7 +89,7 @@ TEST_CASE("anti-aliasing: an edge pixel is the fraction of its samples the surfa
     const Image image = test::renderCpu(scene, s);
     const int side = samplesPerSide(samples);
     int covered = 0;  // columns of samples left of 0.3 of the pixel: (i + 0.5)/s < 0.3
-    for (int i = 0; i < side; ++i) covered += (i + 0.5f) / static_cast<float>(side) < 0.3f ? 1 : 0;
+    for (int i = 0; i < side; ++i) covered += (static_cast<float>(i) + 0.5f) / static_cast<float>(side) < 0.3f ? 1 : 0;
     const float fraction = static_cast<float>(covered) / static_cast<float>(side);
     CHECK(image.at(40, 20) == test::expectedPixel(glm::vec3(fraction)));
     CHECK(image.at(39, 20) == test::expectedPixel(glm::vec3(1.0f)));

@@ -161,13 +161,11 @@ struct Run {
 enum class Drawn { Opaque, Blended, All };
 
 std::vector<Run> runsOf(const Scene& scene, const FrameInputs& frame, Drawn drawn, std::vector<std::size_t>& firstTriangle) {
-  firstTriangle.assign(1, 0);
-  for (const FrameInstance& instance : frame.instances)
-    firstTriangle.push_back(firstTriangle.back() + scene.meshes[static_cast<std::size_t>(instance.mesh)].triangleCount());
+  firstTriangle = firstTriangles(scene, frame);
   std::vector<Run> runs;
   if (drawn == Drawn::Blended) {
     for (const std::uint32_t triangle : frame.transparentOrder) {
-      const auto i = static_cast<std::size_t>(std::upper_bound(firstTriangle.begin(), firstTriangle.end(), std::size_t{triangle}) - firstTriangle.begin()) - 1;
+      const std::size_t i = instanceOfTriangle(firstTriangle, triangle);
       const std::size_t local = triangle - firstTriangle[i];
       if (!runs.empty() && runs.back().instance == i && runs.back().first + runs.back().count == local) ++runs.back().count;
       else runs.push_back({i, local, 1});
