@@ -35,16 +35,19 @@ inline glm::vec3 environmentAt(const EnvironmentMap& map, glm::vec3 D, int level
 // Whether empty pixels show the map rather than the background colour.
 inline bool showsEnvironment(const FrameInputs& frame) { return frame.environment.map && frame.environment.background; }
 
-// The linear colour of empty pixel (px, py): env(D), D = (F + x·X) + y·Y with
-// x, y its sample's position in NDC, where the frame shows its map; else the background.
-inline glm::vec3 backgroundAt(const FrameInputs& frame, int px, int py) {
+// The linear colour of empty pixel (px, py) seen at `offset` from its centre:
+// env(D), D = (F + x·X) + y·Y with x, y that position in NDC, where the frame
+// shows its map; else the background.
+inline glm::vec3 backgroundAt(const FrameInputs& frame, int px, int py, glm::vec2 offset) {
   if (!showsEnvironment(frame)) return frame.background;
   const FrameInputs::Environment& e = frame.environment;
-  // The sample's position in the pixel: its centre, moved by the frame's sample offset (anti-aliasing).
-  const float x = (2.0f * ((static_cast<float>(px) + 0.5f) + frame.sampleOffset.x)) / static_cast<float>(frame.width) - 1.0f;
-  const float y = (2.0f * ((static_cast<float>(py) + 0.5f) + frame.sampleOffset.y)) / static_cast<float>(frame.height) - 1.0f;
+  const float x = (2.0f * ((static_cast<float>(px) + 0.5f) + offset.x)) / static_cast<float>(frame.width) - 1.0f;
+  const float y = (2.0f * ((static_cast<float>(py) + 0.5f) + offset.y)) / static_cast<float>(frame.height) - 1.0f;
   return environmentAt(*e.map, (e.forward + x * e.right) + y * e.up, 0);
 }
+
+// The same at the frame's sample offset (anti-aliasing; the centre for one sample).
+inline glm::vec3 backgroundAt(const FrameInputs& frame, int px, int py) { return backgroundAt(frame, px, py, frame.sampleOffset); }
 
 // What the colour buffer is cleared to at (px, py): its background with backgroundAlpha, as the frame's blending holds it.
 inline glm::vec4 backgroundPixel(const FrameInputs& frame, int px, int py) { return stored(backgroundAt(frame, px, py), frame.backgroundAlpha, frame.blending); }

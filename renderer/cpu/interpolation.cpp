@@ -13,4 +13,16 @@ void Interpolation::setUpVaryings(int count) {
     varying_[static_cast<std::size_t>(k)] = planeOf(setup_, a.varyings[k] * a.invW, b.varyings[k] * b.invW, c.varyings[k] * c.invW);
 }
 
+Interpolation Interpolation::movedBy(float dx, float dy) const {
+  const auto moved = [&](Plane p) {
+    p.a0 = fusedMultiplyAdd(p.dady, dy, fusedMultiplyAdd(p.dadx, dx, p.a0));
+    return p;
+  };
+  Interpolation out = *this;
+  out.z_ = moved(z_);
+  out.oneOverW_ = moved(oneOverW_);
+  for (int k = 0; k < count_; ++k) out.varying_[static_cast<std::size_t>(k)] = moved(varying_[static_cast<std::size_t>(k)]);
+  return out;
+}
+
 }  // namespace facet::cpu

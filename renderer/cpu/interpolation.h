@@ -41,6 +41,12 @@ class Interpolation {
   // Sets up the planes of 1/w and of varyings [0, count); once, before the calls below.
   void setUpVaryings(int count);
 
+  // The same planes with each one's value at pixel (0, 0)'s centre moved to
+  // fma(dady, dy, fma(dadx, dx, a(0))), so that every call below at (px, py)
+  // gives the value at (px + dx, py + dy): area-weighted averaging shades a
+  // cell at its centroid this way, as a sample's pass at that offset would.
+  Interpolation movedBy(float dx, float dy) const;
+
   // The varyings [0, count) at pixel (px, py): plane(a·(1/w)) · (1 / plane(1/w)).
   void varyingsAt(int px, int py, float* out) const {
     const float w = 1.0f / oneOverW_.at(px, py);

@@ -156,7 +156,8 @@ FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings)
   f.hsr = settings.hsr;
   if (f.hsr == HiddenSurface::Painter) f.paintersOrder = paintersOrder(scene, f);
   f.blending = settings.blending;
-  if (settings.antialiasing.samples > 1)
+  f.areaAveraged = settings.antialiasing.pattern == SamplePattern::Area;
+  if (settings.antialiasing.samples > 1 && !f.areaAveraged)
     f.samples = sampleOffsets(samplesPerSide(settings.antialiasing.samples), settings.antialiasing.pattern,
                               static_cast<unsigned>(settings.antialiasing.seed));
   const bool anyBlended = std::any_of(f.instances.begin(), f.instances.end(),

@@ -170,8 +170,10 @@ struct TransparencySettings {
 // course's supersampling, `samples` = s² sub-pixel positions per pixel on an
 // s × s ordered grid, or one jittered position in each grid cell from a
 // seeded generator; every sample is a full pass, box-filtered in linear light.
-enum class SamplePattern { Grid, Jittered, Count };
-inline constexpr std::array<std::string_view, static_cast<int>(SamplePattern::Count)> kSamplePatternNames = {"grid", "jittered"};
+// `area` (the CPU backend's) is the course's area-weighted averaging instead:
+// exact coverage of each pixel by each polygon, `samples` playing no part.
+enum class SamplePattern { Grid, Jittered, Area, Count };
+inline constexpr std::array<std::string_view, static_cast<int>(SamplePattern::Count)> kSamplePatternNames = {"grid", "jittered", "area"};
 inline constexpr int kMaxSamplesPerSide = 4;  // samples: 1, 4, 9 or 16
 // s for s × s samples: the largest s with s² ≤ samples.
 inline int samplesPerSide(int samples) {

@@ -91,7 +91,7 @@ void visitSettings(Visitor& v, RenderSettings& s) {
     AntialiasingSettings& a = s.antialiasing;
     v.field({"samples", "supersampling: 1, 4, 9 or 16 samples per pixel (s x s), averaged in linear light", 1, kMaxSamplesPerSide * kMaxSamplesPerSide},
             a.samples);
-    v.choice({"pattern", "grid: the cells' centres; jittered: one seeded random position in each cell"}, a.pattern, kSamplePatternNames);
+    v.choice({"pattern", "grid: the cells' centres; jittered: one seeded random position in each cell; area: exact coverage (CPU only)"}, a.pattern, kSamplePatternNames);
     v.field({"seed", "jittered: the generator's seed (the same seed places the same samples)", 0, 16777216}, a.seed);
   });
   v.group("shadows", [&] {

@@ -12,9 +12,12 @@
 //
 // Pass 1 draws every triangle into each light's depth maps; pass 2 draws
 // them into a linear colour buffer, resolved to the image. No tiles, threads or batches: the fast renderer
-// (cpu_renderer.cpp) gets the same pixels by the same rules.
+// (cpu_renderer.cpp) gets the same pixels by the same rules. Area-weighted
+// averaging (antialiasing.pattern=area) draws pass 2 twice, in place of
+// coverage: once to cut the pixels into cells, once to shade them (area_averaging.h).
 #include "cpu/fog.h"
 #include "cpu/reference/reference_renderer.h"
+#include "cpu/reference/area_averaging.h"
 
 #include <algorithm>
 #include <chrono>
@@ -23,6 +26,7 @@
 #include <vector>
 
 #include "common/error.h"
+#include "common/quote.h"
 #include "cpu/alpha_mask.h"
 #include "cpu/bump_mapping.h"
 #include "cpu/clipper.h"
@@ -55,6 +59,7 @@ struct Target {
   ColorBuffer* color = nullptr;               // pass 2: the linear colour of each kept fragment
   std::vector<std::uint32_t>* ids = nullptr;  // or which triangle it came from
   std::vector<std::uint32_t>* counts = nullptr;  // or how many fragments each pixel received (no test, nothing drawn)
+  AreaAveraging* area = nullptr;              // or, in place of coverage, area-weighted averaging's surfaces and cells
 };
 
 // The fragment stage: the pixel's interpolated varyings, the side seen, and
@@ -83,13 +88,27 @@ void drawTriangle(const ClipVertex (&vertex)[3], int varyingCount, bool cullBack
     SnappedTriangle snapped;
     PixelBox box;
     if (!snapTriangle({v[0]->x, v[1]->x, v[2]->x}, {v[0]->y, v[1]->y, v[2]->y}, snapped)) continue;
-    if (!pixelBox(snapped, 0, 0, target.width - 1, target.height - 1, box)) continue;
     if (cullBackFaces && !snapped.frontFacing) continue;
+    // (Area-weighted averaging counts a triangle that covers no pixel centre too.)
+    if (!target.area && !pixelBox(snapped, 0, 0, target.width - 1, target.height - 1, box)) continue;
     toSetUpOrder(snapped, v);
     InterpolationVertex corners[3];
     for (int k = 0; k < 3; ++k) corners[k] = {v[k]->x, v[k]->y, v[k]->z, v[k]->invW, v[k]->varyings.data()};
     Interpolation planes(corners[0], corners[1], corners[2]);
     planes.setUpVaryings(varyingCount);
+    if (target.area) {  // area-weighted averaging: the triangle as a surface, or its fragments in the cells it shows in
+      if (target.area->collecting()) {
+        target.area->collect(snapped, planes, blendedAlpha ? AreaRole::Blended : keep ? AreaRole::Masked : AreaRole::Opaque);
+        continue;
+      }
+      target.area->shade(planes, [&](const Interpolation& moved, int px, int py) -> std::optional<glm::vec4> {
+        if (keep && !keep(moved, px, py)) return std::nullopt;
+        float varyings[kMaxVaryings];
+        moved.varyingsAt(px, py, varyings);
+        return glm::vec4(shade(varyings, snapped.frontFacing, moved, px, py), blendedAlpha ? blendedAlpha(moved, px, py) : 1.0f);
+      });
+      continue;
+    }
     // Coverage, then per pixel: depth, the z-buffer test, the varyings, the fragment's colour.
     rasterize(snapped, box, [&](int px, int py) {
       const std::size_t pixel = static_cast<std::size_t>(py) * static_cast<std::size_t>(target.width) + static_cast<std::size_t>(px);
@@ -326,6 +345,18 @@ void linePass(const Scene& scene, const FrameInputs& frame, Target& target) {
   drawLines(frame, lines, {0, 0, frame.width - 1, frame.height - 1}, target.depth.data(), frame.width, *target.color);
 }
 
+// Area-weighted averaging covers triangles by the z-buffer's visibility.
+void refuseOutsideArea(const Scene& scene, const FrameInputs& frame) {
+  if (frame.hsr == HiddenSurface::Painter)
+    throw Error("settings key 'hsr': area-weighted averaging (antialiasing.pattern=area) resolves visibility by depth; painter is drawn with grid or jittered samples");
+  for (const FrameInstance& instance : frame.instances) {
+    const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
+    if (!mesh.lines.empty() || !mesh.points.empty())
+      throw Error("settings key 'antialiasing.pattern': area covers triangles only, and mesh " + quoteInput(mesh.name) +
+                  " has lines or points; draw them with grid or jittered samples");
+  }
+}
+
 // The reference follows one triangle at a time through the z-buffer, its only hidden-surface removal.
 void refuseHiddenSurface(const FrameInputs& frame) {
   if (!frame.samples.empty())
@@ -341,6 +372,7 @@ class ReferenceRenderer final : public Renderer {
 
   RenderResult render(const Scene& scene, const FrameInputs& frame) override {
     check_(scene, frame);
+    if (frame.areaAveraged) return renderAreaAveraged(scene, frame);
     refuseHiddenSurface(frame);
     const auto start = std::chrono::steady_clock::now();
     const ShadowMaps maps = shadowPass(scene, frame);
@@ -387,6 +419,29 @@ class ReferenceRenderer final : public Renderer {
 };
 
 }  // namespace
+
+RenderResult renderAreaAveraged(const Scene& scene, const FrameInputs& frame) {
+  refuseOutsideArea(scene, frame);
+  const auto start = std::chrono::steady_clock::now();
+  const ShadowMaps maps = shadowPass(scene, frame);
+  AreaAveraging area(frame.width, frame.height);
+  Target target{frame.width, frame.height, {}};
+  target.area = &area;
+  // Pass 2 as the z-buffer draws it, twice: the surfaces, then (once every pixel is cut) their fragments.
+  for (int step = 0; step < 2; ++step) {
+    litPass(scene, frame, maps, target, Drawn::Opaque);
+    litPass(scene, frame, maps, target, Drawn::Blended);
+    if (step == 0) area.cut();
+  }
+  const ColorBuffer sum = area.composite(frame);
+  RenderResult result;
+  result.image = Image(frame.width, frame.height);
+  for (int y = 0; y < frame.height; ++y)
+    for (int x = 0; x < frame.width; ++x) result.image.at(x, y) = encodePixel(unstored(sum.at(x, y), Blending::Premultiplied));
+  result.timings.push_back({"area-weighted averaging", std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count()});
+  result.notes.push_back(area.summary());
+  return result;
+}
 
 std::unique_ptr<Renderer> makeReferenceRenderer() { return std::make_unique<ReferenceRenderer>(); }
 

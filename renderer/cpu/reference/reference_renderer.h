@@ -15,4 +15,11 @@ namespace facet {
 // One thread, no tiles, no batching; much slower than makeCpuRenderer.
 std::unique_ptr<Renderer> makeReferenceRenderer();
 
+// antialiasing.pattern=area: the frame by the course's area-weighted
+// averaging (renderer/PIPELINE.md, section 7), the reference's vertex and
+// fragment stages with exact coverage in place of pixel centres; the CPU
+// backend draws such frames with it too. Throws facet::Error for what it
+// does not cover (lines, points, the painter's order).
+RenderResult renderAreaAveraged(const Scene& scene, const FrameInputs& frame);
+
 }  // namespace facet
