@@ -170,8 +170,11 @@ inline Vec3x4 environmentLanes(const EnvironmentMap& map, const Vec3x4& R) {
 #endif
 
 // Illumination at world point P with unit normal N and unit view vector V.
-template <class F>
-IlluminationOf<F> illuminate(const FrameInputs& frame, const ShadowMaps& maps, const LaneMaterial<F>& material, const Vec3Of<F>& P,
+// S of each light from `shadows`: the light's shadow maps (ShadowMaps, the
+// rasterizers' pass 1), or whatever type has its own shadowFactorLanes (the
+// ray tracer's shadow rays, found by argument-dependent lookup).
+template <class F, class Shadows>
+IlluminationOf<F> illuminate(const FrameInputs& frame, const Shadows& shadows, const LaneMaterial<F>& material, const Vec3Of<F>& P,
                              const Vec3Of<F>& N, const Vec3Of<F>& V) {
   using Vec3 = Vec3Of<F>;
   IlluminationOf<F> I;
@@ -186,7 +189,7 @@ IlluminationOf<F> illuminate(const FrameInputs& frame, const ShadowMaps& maps, c
     const MaskOf<F> active = both(toward.reaches, NdotL > F(0.0f));  // no diffuse and no specular where N·L ≤ 0
     if (!anyLane(active)) continue;
     const Vec3 Ip = splat<F>(fl.intensity);
-    const F S = shadowFactorLanes(maps, fl, frame.shadows, P, N, L, active);
+    const F S = shadowFactorLanes(shadows, fl, frame.shadows, P, N, L, active);
     const Vec3 diffuse = (S * fAtt) * ((material.kd * NdotL) * Ip);
     const Vec3 specular = (S * fAtt) * ((material.ks * specularTerm(N, L, V, material.shininess, frame.specular)) * Ip);
     I.diffuse = select(active, I.diffuse + diffuse, I.diffuse);

@@ -91,8 +91,10 @@ inline glm::vec3 prefilteredAt(const EnvironmentMap& map, glm::vec3 R, float rou
   return glm::vec3(lerp(glm::vec4(above, 0.0f), glm::vec4(environmentAt(map, R, k + 1), 0.0f), lod - whole));
 }
 
-// L_o at world point P with unit normal N and unit view vector V, linear and unclamped.
-inline glm::vec3 shadePhysicallyBased(const FrameInputs& frame, const ShadowMaps& maps, const PbrSurface& s, glm::vec3 P, glm::vec3 N, glm::vec3 V) {
+// L_o at world point P with unit normal N and unit view vector V, linear and
+// unclamped; S from `shadows` (shadow maps, or the ray tracer's shadow rays: lighting.h, illuminate).
+template <class Shadows>
+glm::vec3 shadePhysicallyBased(const FrameInputs& frame, const Shadows& shadows, const PbrSurface& s, glm::vec3 P, glm::vec3 N, glm::vec3 V) {
   const float m = s.metallic;
   const glm::vec3 cDiff = s.baseColor * (1.0f - m);
   const glm::vec3 F0 = glm::vec3(kDielectricF0 * (1.0f - m)) + s.baseColor * m;
@@ -113,7 +115,7 @@ inline glm::vec3 shadePhysicallyBased(const FrameInputs& frame, const ShadowMaps
     const glm::vec3 F = schlickFresnel(F0, VdotH);
     const float specular = ggxDistribution(NdotH, alpha2) * smithVisibility(NdotL, NdotV, alpha2);
     const glm::vec3 f = (glm::vec3(1.0f) - F) * lambert + F * specular;
-    const float S = shadowFactor(maps, fl, frame.shadows, P, N, L);
+    const float S = shadowFactorLanes(shadows, fl, frame.shadows, P, N, L, true);
     const glm::vec3 radiance = (S * toward.fAtt) * (NdotL * fl.intensity);
     color = color + radiance * f;
   }

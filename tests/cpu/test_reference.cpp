@@ -9,6 +9,7 @@
 
 #include "cpu/cpu_renderer.h"
 #include "cpu/reference/reference_renderer.h"
+#include "pipeline/bump_map.h"
 #include "pipeline/frame_inputs.h"
 #include "scene/default_scene.h"
 #include "scene/load_scene.h"
@@ -83,4 +84,24 @@ TEST_CASE("the fast CPU renderer equals the one-triangle reference: textured, cl
   sun.direction = {0.5f, -1.0f, -0.3f};
   lights.lights = {spot, sun};
   compare(scene, lights, "spot and directional");
+}
+
+TEST_CASE("the fast CPU renderer equals the one-triangle reference: pbr, normal, emissive, bump and procedural textures, fog") {
+  const std::string scenes = std::string(FACET_ASSETS) + "/scenes/";
+  for (const char* name : {"normal_map.gltf", "pbr_maps.gltf", "emissive.gltf", "texcoord_sets.gltf"}) {
+    const Scene scene = loadScene(scenes + name);
+    for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong, ShadingMode::Pbr})
+      compare(scene, settings(mode, true, true), std::string(name) + " " + std::string(kShadingModeNames[static_cast<std::size_t>(mode)]));
+  }
+  Scene bump = loadScene(std::string(FACET_ASSETS) + "/bump.gltf");
+  RenderSettings bumped = settings(ShadingMode::Phong, true, true);
+  bumped.material.bumpMap = std::string(FACET_ASSETS) + "/displacement/height.png";
+  useBumpMap(bump, bumped.material);
+  compare(bump, bumped, "bump.gltf");
+  const Scene scene = makeDefaultScene();
+  RenderSettings procedural = settings(ShadingMode::Phong, true, true);
+  procedural.material.procedural = Procedural::Checker;
+  procedural.fog.mode = FogMode::Exponential;
+  procedural.fog.density = 0.1f;
+  compare(scene, procedural, "procedural checker, exponential fog");
 }

@@ -39,6 +39,7 @@
 #include "cpu/physically_based.h"
 #include "cpu/rasterize.h"
 #include "cpu/shadow_maps.h"
+#include "cpu/surface_shading.h"
 #include "cpu/texture_sampling.h"
 #include "cpu/triangle_setup.h"
 #include "cpu/varyings.h"
@@ -208,26 +209,12 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
     const FrameInstance& instance = frame.instances[run.instance];
     const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
     const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
-    const Texture* texture = baseColorTextureOf(scene, frame, material, mesh);
-    const Texture* normalMap = interpolatesNormals(frame.shading) ? normalMapOf(scene, material, mesh) : nullptr;
-    const bool bumpable = interpolatesNormals(frame.shading) && frame.bump.map && !mesh.tangents.empty();
-    const bool colored = !mesh.colors.empty();
-    // An emissive texture: k_e·E at the pixel in the course's modes; Gouraud and flat sum with k_e = 0 (PIPELINE.md, section 5).
-    const Texture* emissiveMap = frame.shading != ShadingMode::Pbr ? emissiveMapOf(scene, material, mesh) : nullptr;
-    const LaneMaterial<float> summed = laneMaterial(material, emissiveMap ? glm::vec3(0.0f) : material.emissive);
-    // A texture coordinate set at a pixel, from its varyings.
+    // What the fragment stage shades with (cpu/surface_shading.h), and a texture coordinate set at a pixel, from its varyings.
+    const SurfaceDraw draw = surfaceDraw(scene, frame, instance);
+    const Texture* texture = draw.texture;
+    const bool colored = draw.colored;
+    const LaneMaterial<float> summed = draw.summed;
     const auto stOf = [&](const float* v, int set) { return glm::vec2(v[layout.texcoord(set)], v[layout.texcoord(set) + 1]); };
-    // O_d = factor · COLOR_0 · texel, each factor only where the mesh has it; the texel is a
-    // procedural texture's grey where the frame has one.
-    const auto baseColor = [&](const float* v, const Interpolation& planes, int px, int py) {
-      glm::vec3 O = material.baseColor;
-      if (colored) O = O * glm::vec3(v[color], v[color + 1], v[color + 2]);
-      if (frame.procedural != Procedural::None)
-        O = O * proceduralGrey(frame.procedural, {v[model], v[model + 1], v[model + 2]}, frame.proceduralScale);
-      else if (texture)
-        O = O * glm::vec3(sampleBaseColorTexture(*texture, material, stOf(v, material.baseColorSet), planes.quadDerivatives(layout.texcoord(material.baseColorSet), px, py)));
-      return O;
-    };
     const FragmentTest keep = [&](const Interpolation& planes, int px, int py) {
       return keepsFragment(material, texture, colored, layout, planes, px, py);
     };
@@ -272,40 +259,24 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
         flat[0] = illuminate(frame, maps, summed, centroid, N, V);
         if (!instance.cullBackFaces) flat[1] = illuminate(frame, maps, summed, centroid, -N, V);
       }
-      // Fragment stage.
+      // Fragment stage: the point the varyings describe at the pixel, shaded (cpu/surface_shading.h).
       const auto surface = [&](const float* f, bool front, const Interpolation& planes, int px, int py) -> glm::vec3 {
-        const auto emission = [&] {
-          const int set = material.emissiveMap.set;
-          return emissionAt(*emissiveMap, material, stOf(f, set), planes.quadDerivatives(layout.texcoord(set), px, py));
-        };
+        SurfacePoint p;
+        p.front = front;
+        for (int set = 0; set < 2; ++set) p.st[set] = stOf(f, set), p.derivatives[set] = planes.quadDerivatives(layout.texcoord(set), px, py);
+        p.color = glm::vec4(f[color], f[color + 1], f[color + 2], f[color + 3]);
+        if (count == layout.count) p.model = glm::vec3(f[model], f[model + 1], f[model + 2]);
         if (interpolatesNormals(frame.shading)) {
-          const glm::vec3 P{f[0], f[1], f[2]};
-          glm::vec3 normal{f[3], f[4], f[5]};
-          // The normal texture, then the bump map, bend the unit normal; the result is normalized as the interpolated one is.
-          const glm::vec4 tangent{f[layout.tangent], f[layout.tangent + 1], f[layout.tangent + 2], f[layout.tangent + 3]};
-          const int normalSet = material.normalMap.set;
-          if (normalMap)
-            normal = normalMapped(*normalMap, material, normalize3(normal), tangent, stOf(f, normalSet), planes.quadDerivatives(layout.texcoord(normalSet), px, py));
-          if (bumpable) normal = bumped(*frame.bump.map, frame.bump.scale, normalize3(normal), tangent, stOf(f, 0));
-          const glm::vec3 unit = normalize3(normal);
-          const glm::vec3 N = front ? unit : -unit;  // two-sided lighting
-          if (frame.shading == ShadingMode::Pbr)
-            return shadePhysicallyBased(frame, maps,
-                                        pbrSurfaceAt(scene, material, mesh, baseColor(f, planes, px, py), {stOf(f, 0), stOf(f, 1)},
-                                                     {planes.quadDerivatives(layout.texcoord(0), px, py), planes.quadDerivatives(layout.texcoord(1), px, py)}),
-                                        P, N, viewVector<float>(frame, P));
-          const LaneMaterial<float> lit = laneMaterial(material, emissiveMap ? emission() : material.emissive);
-          return shade(illuminate(frame, maps, lit, P, N, viewVector<float>(frame, P)), baseColor(f, planes, px, py));
-        }
-        if (frame.shading == ShadingMode::Gouraud) {
+          p.P = glm::vec3(f[0], f[1], f[2]);
+          p.normal = glm::vec3(f[3], f[4], f[5]);
+          p.tangent = glm::vec4(f[layout.tangent], f[layout.tangent + 1], f[layout.tangent + 2], f[layout.tangent + 3]);
+        } else if (frame.shading == ShadingMode::Gouraud) {
           const int side = front ? 0 : 6;
-          Illumination I{{f[side], f[side + 1], f[side + 2]}, {f[side + 3], f[side + 4], f[side + 5]}};
-          if (emissiveMap) I.specular = emission() + I.specular;
-          return shade(I, baseColor(f, planes, px, py));
+          p.lit = Illumination{{f[side], f[side + 1], f[side + 2]}, {f[side + 3], f[side + 4], f[side + 5]}};
+        } else {
+          p.lit = front ? flat[0] : flat[1];
         }
-        Illumination I = front ? flat[0] : flat[1];
-        if (emissiveMap) I.specular = emission() + I.specular;
-        return shade(I, baseColor(f, planes, px, py));
+        return shadeSurface(draw, maps, p);
       };
       // Fog, by the pixel's eye depth (PIPELINE.md, section 7).
       const FragmentShader fragment = [&](const float* f, bool front, const Interpolation& planes, int px, int py) {
