@@ -113,6 +113,7 @@ void displaceMeshes(Scene& scene, const Image& heights, float scale, int subdivi
       continue;
     }
     for (int k = 0; k < subdivisions; ++k) subdivide(mesh);
+    mesh.sphere = false;  // displaced, it is no longer the sphere the ray tracer could trace in its place
     for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
       const double h = heightAt(heights, mesh.texcoords[v].x, mesh.texcoords[v].y);
       mesh.positions[v] += static_cast<float>(scale * h) * mesh.normals[v];

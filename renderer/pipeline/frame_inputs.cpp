@@ -172,6 +172,9 @@ FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings)
   }
   f.shadows = settings.shadows;
   f.background = settings.background;
+  f.ray = settings.ray;
+  const Bounds bounds = scene.worldBounds();
+  f.sceneRadius = bounds.empty || !(bounds.radius() > 0.0f) ? 1.0f : bounds.radius();
   f.backgroundAlpha = settings.backgroundAlpha;
   checkFrame(scene, f);
   return f;

@@ -83,6 +83,10 @@ struct FrameInputs {
   bool areaAveraged = false;
   ShadowSettings shadows;
   int shadowLayerCount = 0;       // S×S depth maps over all lights: one per face
+  // The ray tracer's knobs (PIPELINE.md, section 10), and the radius R of the
+  // scene's bounding sphere that ray.epsilon scales.
+  RaySettings ray;
+  float sceneRadius = 1.0f;
   glm::vec3 background{0.0f};    // linear RGB
   float backgroundAlpha = 1.0f;   // alpha of empty pixels (the environment map's too)
   // Environment mapping (PIPELINE.md, section 8). `map` points into the Scene

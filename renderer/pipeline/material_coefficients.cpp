@@ -1,8 +1,7 @@
 #include "pipeline/material_coefficients.h"
 
-#include <cmath>
-
 #include <algorithm>
+#include <cmath>
 
 namespace facet {
 
@@ -44,6 +43,13 @@ CourseMaterial courseMaterial(const Material& material, const MaterialOverrides&
   out.normalMap.texture = material.normalTexture;
   out.normalScale = material.normalScale;
   out.doubleSided = material.doubleSided;
+  out.reflectivity = overrides.reflectivity.value_or(m * (1.0f - r));
+  out.transmission = overrides.transmission.value_or(std::clamp(material.transmission, 0.0f, 1.0f));
+  out.ior = overrides.ior.value_or(material.ior);
+  // Beer's law: what is left after attenuationDistance is attenuationColor, so σ = -ln(c)/d per channel
+  // (a channel of c = 0 absorbs everything: σ infinite).
+  if (std::isfinite(material.attenuationDistance) && material.attenuationDistance > 0.0f)
+    for (int k = 0; k < 3; ++k) out.absorption[k] = -std::log(std::clamp(material.attenuationColor[k], 0.0f, 1.0f)) / material.attenuationDistance;
   return out;
 }
 

@@ -46,6 +46,13 @@ struct CourseMaterial {
   // alphaCutoff = transparency.shadowCutoff.
   bool blended = false;
   float alphaCutoff = 0.5f;
+  // The ray tracer's recursive terms (PIPELINE.md, section 10): k_r = reflectivity·O_s
+  // of the reflected ray, k_t of the transmitted one, the index of refraction
+  // n, and Beer's law's σ per channel inside the medium (0: no attenuation).
+  float reflectivity = 0;
+  float transmission = 0;
+  float ior = 1.5f;
+  glm::vec3 absorption{0.0f};
 };
 
 // The smallest derived exponent: (cos θ)^8 falls to half at θ = 23.6°, a
@@ -63,6 +70,9 @@ inline constexpr float kMinDerivedShininess = 8.0f;
 //                                               black outside its highlights)
 //   O_s = (1 - m) + m·O_d                      (metals tint their highlights)
 // Any of k_a, k_d, k_s, n set in `overrides` replaces the derived value.
+// The ray tracer's: reflectivity = m·(1 - r), transmission and ior from
+// KHR_materials_transmission and _ior, σ = -ln(attenuationColor)/attenuationDistance
+// from KHR_materials_volume; the overrides replace the first three.
 // Alpha: glTF's alphaMode, or `overrides.opacity` in the factor's place,
 // which blends every material when below 1.
 CourseMaterial courseMaterial(const Material& material, const MaterialOverrides& overrides, const TransparencySettings& transparency = {});

@@ -309,6 +309,54 @@ TextureTransform textureTransformOf(const tinygltf::ExtensionMap& extensions, co
   return out;
 }
 
+// What the ray tracer refracts (PIPELINE.md, section 10): KHR_materials_transmission's
+// transmissionFactor, KHR_materials_ior's ior, KHR_materials_volume's attenuation.
+// A value outside its extension's range is ignored with a warning; the
+// textures these extensions allow are not read (a warning says so).
+void readRefraction(const tinygltf::Material& src, const std::string& where, Material& material, Warnings& warnings) {
+  // A number property of an extension object, or nothing when absent; a value of another type is refused.
+  const auto property = [&](const tinygltf::Value& extension, const char* extensionName, const char* key) -> std::optional<double> {
+    if (!extension.Has(key)) return std::nullopt;
+    const tinygltf::Value& v = extension.Get(key);
+    if (!v.IsNumber()) throw Error(where + ": " + extensionName + "." + key + " is not a number");
+    return v.GetNumberAsDouble();
+  };
+  const auto texture = [&](const tinygltf::Value& extension, const char* extensionName, const char* key) {
+    if (extension.Has(key)) warnings.push_back(where + ": " + extensionName + "." + key + " is not read; the factor alone applies");
+  };
+  if (const auto found = src.extensions.find("KHR_materials_transmission"); found != src.extensions.end()) {
+    const tinygltf::Value& e = found->second;
+    if (const auto t = property(e, "KHR_materials_transmission", "transmissionFactor")) {
+      if (*t >= 0 && *t <= 1) material.transmission = static_cast<float>(*t);
+      else warnings.push_back(where + ": KHR_materials_transmission.transmissionFactor " + std::to_string(*t) + " is not in [0, 1]; ignored");
+    }
+    texture(e, "KHR_materials_transmission", "transmissionTexture");
+  }
+  if (const auto found = src.extensions.find("KHR_materials_ior"); found != src.extensions.end()) {
+    if (const auto n = property(found->second, "KHR_materials_ior", "ior")) {
+      if (std::isfinite(*n) && *n >= 1) material.ior = static_cast<float>(*n);
+      else warnings.push_back(where + ": KHR_materials_ior.ior " + std::to_string(*n) + " is below 1; ignored");
+    }
+  }
+  if (const auto found = src.extensions.find("KHR_materials_volume"); found != src.extensions.end()) {
+    const tinygltf::Value& e = found->second;
+    if (const auto d = property(e, "KHR_materials_volume", "attenuationDistance")) {
+      if (std::isfinite(*d) && *d > 0) material.attenuationDistance = static_cast<float>(*d);
+      else warnings.push_back(where + ": KHR_materials_volume.attenuationDistance " + std::to_string(*d) + " is not above 0; ignored");
+    }
+    if (e.Has("attenuationColor")) {
+      const tinygltf::Value& c = e.Get("attenuationColor");
+      if (!c.IsArray() || c.ArrayLen() != 3) throw Error(where + ": KHR_materials_volume.attenuationColor is not an array of three numbers");
+      for (int k = 0; k < 3; ++k) {
+        const tinygltf::Value& v = c.Get(k);
+        if (!v.IsNumber()) throw Error(where + ": KHR_materials_volume.attenuationColor[" + std::to_string(k) + "] is not a number");
+        material.attenuationColor[k] = clamp01(v.GetNumberAsDouble(), 1.0f);
+      }
+    }
+    texture(e, "KHR_materials_volume", "thicknessTexture");
+  }
+}
+
 void convertMaterials(const tinygltf::Model& model, Scene& scene, Warnings& warnings) {
   for (std::size_t m = 0; m < model.materials.size(); ++m) {
     const tinygltf::Material& src = model.materials[m];
@@ -327,6 +375,7 @@ void convertMaterials(const tinygltf::Model& model, Scene& scene, Warnings& warn
       const double s = strength->second.Get("emissiveStrength").GetNumberAsDouble();
       if (std::isfinite(s) && s >= 0) material.emissive *= static_cast<float>(s);
     }
+    readRefraction(src, at("materials", m), material, warnings);
     material.doubleSided = src.doubleSided;
     // alphaMode and alphaCutoff are checked by checkGltfDocument.
     if (src.alphaMode == "MASK") {
@@ -863,7 +912,8 @@ struct NodeWalker {
   }
 };
 
-const std::set<std::string> kSupportedExtensions = {"KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_texture_transform"};
+const std::set<std::string> kSupportedExtensions = {"KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_materials_ior",
+                                                    "KHR_materials_transmission", "KHR_materials_volume", "KHR_texture_transform"};
 
 // glTF's rule: a file whose extensionsRequired names an extension the reader
 // lacks is refused. Checked before tinygltf parses, which would otherwise

@@ -62,6 +62,7 @@ Mesh makeSphere(int level) {
   level = std::max(level, 2);
   Mesh mesh;
   mesh.name = "sphere";
+  mesh.sphere = true;
   addGrid(mesh, 2 * level, level, {true, false}, [](float u, float v) {
     const float theta = kTwoPi * u, phi = std::numbers::pi_v<float> * v;
     // Exactly on the axis at the poles (float sin(π) is not 0), so pole

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,9 @@ struct Mesh {
   // A mesh from a glTF primitive holds one kind: triangles, segments or points.
   std::vector<std::uint32_t> lines;   // two per segment
   std::vector<std::uint32_t> points;  // one per point
+  // The builtin unit sphere (scene/primitives.h): the ray tracer may trace it
+  // as the sphere it approximates (renderer/PIPELINE.md, section 10).
+  bool sphere = false;
   int material = -1;                  // index into Scene::materials, -1 = the default material
 
   // The texture coordinate set a texture reference names (Material::TexcoordSets): TEXCOORD_0 or TEXCOORD_1.
@@ -87,6 +91,12 @@ struct Material {
   bool doubleSided = false;
   AlphaMode alphaMode = AlphaMode::Opaque;
   float alphaCutoff = 0.5f;       // MASK: a fragment whose alpha is below it is discarded
+  // What the ray tracer refracts (renderer/PIPELINE.md, section 10):
+  // KHR_materials_transmission, KHR_materials_ior, KHR_materials_volume.
+  float transmission = 0.0f;      // the share of light transmitted, [0, 1]
+  float ior = 1.5f;               // index of refraction
+  glm::vec3 attenuationColor{1.0f};  // linear RGB a ray keeps after attenuationDistance inside
+  float attenuationDistance = std::numeric_limits<float>::infinity();  // world units; infinite: no attenuation
 };
 
 // A glTF sampler (5.26); its absence means REPEAT and filters of the

@@ -104,6 +104,11 @@ struct MaterialOverrides {
   // α's factor for every material in place of the base colour factor's alpha;
   // below 1 every material is blended (PIPELINE.md, section 7, "Transparency").
   std::optional<float> opacity;
+  // The ray tracer's k_r, k_t and index of refraction for every material
+  // (renderer/PIPELINE.md, section 10); unset: from glTF.
+  std::optional<float> reflectivity;  // k_r = reflectivity·O_s
+  std::optional<float> transmission;  // k_t
+  std::optional<float> ior;           // n
   Procedural procedural = Procedural::None;
   float proceduralScale = 4.0f;     // k: pattern cells per model unit
   // Displacement mapping (PIPELINE.md, section 8): P' = P + (scale·h)·N at the
@@ -187,6 +192,15 @@ struct AntialiasingSettings {
   int seed = 1;  // jittered: the generator's seed
 };
 
+// The ray-tracing backend (renderer/PIPELINE.md, section 10).
+inline constexpr int kMaxRayDepth = 16;  // levels of the ray tree; the tree doubles with each
+struct RaySettings {
+  int depth = 5;                  // levels of the ray tree: 1 casts primary rays only
+  float minContribution = 0.01f;  // a ray whose weight (largest channel) is below this is not traced
+  float epsilon = 1e-4f;          // a new ray starts ε·R off the surface, R the scene's bounding radius
+  bool spheres = true;            // the builtin sphere traced as a sphere, not its triangles
+};
+
 struct RenderSettings {
   int width = 800;   // image size in pixels
   int height = 600;
@@ -206,6 +220,7 @@ struct RenderSettings {
   TextureSettings textures;
   EnvironmentSettings environment;
   FogSettings fog;
+  RaySettings ray;
   glm::vec3 background{0.02f, 0.025f, 0.035f};  // linear RGB
   float backgroundAlpha = 1.0f;                  // the colour buffer's alpha where no surface is drawn
 };

@@ -68,6 +68,10 @@ void visitSettings(Visitor& v, RenderSettings& s) {
     v.field({"ks", "k_s for every material (null: derived from glTF)", 0, 1}, m.ks);
     v.field({"shininess", "n for every material (null: derived from glTF)", 1, 4096}, m.shininess);
     v.field({"opacity", "alpha factor for every material in place of glTF's; below 1 every material is blended (null: glTF's)", 0, 1}, m.opacity);
+    v.field({"reflectivity", "ray: k_r = reflectivity O_s of the reflected ray for every material (null: metallic (1 - roughness))", 0, 1},
+            m.reflectivity);
+    v.field({"transmission", "ray: k_t of the transmitted ray for every material (null: KHR_materials_transmission)", 0, 1}, m.transmission);
+    v.field({"ior", "ray: index of refraction n for every material (null: KHR_materials_ior, 1.5)", 0.1, 10}, m.ior);
     v.choice({"procedural", "none, or a checker or noise pattern of the model-space point in place of every base colour texture"}, m.procedural,
              kProceduralNames);
     v.field({"proceduralScale", "k: the pattern's cells per model unit", 0.01, 1000}, m.proceduralScale);
@@ -119,6 +123,17 @@ void visitSettings(Visitor& v, RenderSettings& s) {
     v.field({"start", "linear: the eye depth where fog begins", 0, 1e9}, f.start);
     v.field({"end", "linear: the eye depth where fog hides everything (> start)", 0, 1e9}, f.end);
     v.field({"density", "exponential and exponential2: density per world unit", 0, 1e3}, f.density);
+  });
+  v.group("ray", [&] {
+    RaySettings& r = s.ray;
+    v.field({"depth", "levels of the ray tree: 1 casts primary (and shadow) rays only; each more level reflects and refracts once more", 1,
+             kMaxRayDepth},
+            r.depth);
+    v.field({"minContribution", "a reflected or transmitted ray whose weight k_r or k_t (product along its path) is below this is not traced", 0, 1},
+            r.minContribution);
+    v.field({"epsilon", "a ray leaving a surface starts epsilon R off it (R: the scene's bounding radius), against surface acne", 0, 0.1},
+            r.epsilon);
+    v.field({"spheres", "trace the builtin sphere as a sphere (the course's quadratic), not as its triangles"}, r.spheres);
   });
   v.field({"background", "linear RGB of empty pixels, each in [0, 1]", 0, 1, FieldKind::Color}, s.background);
   v.field({"backgroundAlpha", "alpha of empty pixels in the PNG: 1 opaque, 0 transparent (as F3D's --no-background)", 0, 1}, s.backgroundAlpha);

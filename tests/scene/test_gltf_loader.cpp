@@ -15,6 +15,7 @@
 
 #include "common/error.h"
 #include "common/json_text.h"
+#include "pipeline/material_coefficients.h"
 #include "scene/gltf_loader.h"
 #include "scene/load_scene.h"
 #include "scene/memory_budget.h"
@@ -656,6 +657,50 @@ TEST_CASE("glTF KHR_materials_emissive_strength multiplies emissiveFactor (after
   CHECK(loadJson(j).materials[0].emissive == glm::vec3(1.0f, 0.5f, 0.25f));
   j["materials"][0]["extensions"].erase("KHR_materials_emissive_strength");
   CHECK(loadJson(j).materials[0].emissive == glm::vec3(1.0f, 0.5f, 0.25f));
+}
+
+TEST_CASE("glTF KHR_materials_transmission, _ior and _volume: what the ray tracer refracts, out-of-range values ignored, wrong types refused") {
+  nlohmann::json j = triangle();
+  j["materials"] = {{{"extensions",
+                      {{"KHR_materials_transmission", {{"transmissionFactor", 0.75}}},
+                       {"KHR_materials_ior", {{"ior", 1.33}}},
+                       {"KHR_materials_volume", {{"attenuationDistance", 2.0}, {"attenuationColor", {0.5, 0.25, 1.0}}}}}}}};
+  const Scene glass = loadJson(j);
+  CHECK(glass.materials[0].transmission == 0.75f);
+  CHECK(glass.materials[0].ior == 1.33f);
+  CHECK(glass.materials[0].attenuationDistance == 2.0f);
+  CHECK(glass.materials[0].attenuationColor == glm::vec3(0.5f, 0.25f, 1.0f));
+  // σ = -ln(c)/d per channel: half the light left after 2 units is ln 2 / 2.
+  const CourseMaterial course = courseMaterial(glass.materials[0], {});
+  CHECK(course.absorption.x == doctest::Approx(std::log(2.0) / 2.0));
+  CHECK(course.absorption.z == 0.0f);
+  CHECK(course.transmission == 0.75f);
+  MaterialOverrides overrides;
+  overrides.transmission = 0.2f, overrides.ior = 2.0f, overrides.reflectivity = 0.5f;
+  CHECK(courseMaterial(glass.materials[0], overrides).ior == 2.0f);
+  CHECK(courseMaterial(glass.materials[0], overrides).transmission == 0.2f);
+  CHECK(courseMaterial(glass.materials[0], overrides).reflectivity == 0.5f);
+
+  j["materials"][0]["extensions"]["KHR_materials_transmission"]["transmissionFactor"] = 1.5;
+  j["materials"][0]["extensions"]["KHR_materials_ior"]["ior"] = 0.5;
+  j["materials"][0]["extensions"]["KHR_materials_volume"]["attenuationDistance"] = -1.0;
+  const Scene odd = loadJson(j);
+  CHECK(odd.materials[0].transmission == 0.0f);
+  CHECK(odd.materials[0].ior == 1.5f);
+  CHECK(std::isinf(odd.materials[0].attenuationDistance));
+  CHECK(hasWarning(odd, "materials[0]: KHR_materials_transmission.transmissionFactor 1.500000 is not in [0, 1]; ignored"));
+  CHECK(hasWarning(odd, "materials[0]: KHR_materials_ior.ior 0.500000 is below 1; ignored"));
+
+  j["materials"][0]["extensions"]["KHR_materials_ior"]["ior"] = "glass";
+  CHECK_THROWS_WITH_AS(loadJson(j), doctest::Contains("materials[0]: KHR_materials_ior.ior is not a number"), Error);
+  j["materials"][0]["extensions"]["KHR_materials_ior"]["ior"] = 1.5;
+  j["materials"][0]["extensions"]["KHR_materials_volume"]["attenuationColor"] = {1, 1};
+  CHECK_THROWS_WITH_AS(loadJson(j), doctest::Contains("KHR_materials_volume.attenuationColor is not an array of three numbers"), Error);
+  // Files that require them load.
+  j["materials"][0]["extensions"]["KHR_materials_volume"]["attenuationColor"] = {1, 1, 1};
+  j["extensionsRequired"] = {"KHR_materials_transmission", "KHR_materials_ior", "KHR_materials_volume"};
+  j["extensionsUsed"] = j["extensionsRequired"];
+  CHECK_NOTHROW(loadJson(j));
 }
 
 TEST_CASE("glTF bad input: positions that cannot be framed are dropped, naming the accessor, and the rest is framed") {
