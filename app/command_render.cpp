@@ -1,5 +1,5 @@
 // facet render: one frame of a scene with the OpenGL backend, the CPU
-// backend or the CPU backend's readable reference, to a PNG.
+// backend, the CPU backend's readable reference or the ray tracer, to a PNG.
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -16,6 +16,7 @@
 #include "cpu/reference/reference_renderer.h"
 #include "image/png.h"
 #include "pipeline/frame_inputs.h"
+#include "ray/ray_renderer.h"
 #include "pipeline/bump_map.h"
 #include "pipeline/displacement.h"
 #include "scene/environment_map.h"
@@ -38,6 +39,7 @@ struct RenderOptions {
 std::unique_ptr<Renderer> makeRenderer(const RenderOptions& options) {
   if (options.backend == "cpu") return makeCpuRenderer(options.threads);
   if (options.backend == "reference") return makeReferenceRenderer();
+  if (options.backend == "ray") return makeRayRenderer(options.threads);
 #if FACET_HAVE_GL
   GlContextKind kind = GlContextKind::OsMesa;
   if (options.context == "egl") kind = GlContextKind::Egl;
@@ -52,15 +54,15 @@ std::unique_ptr<Renderer> makeRenderer(const RenderOptions& options) {
 
 Command addRenderCommand(CLI::App& app) {
   auto options = std::make_shared<RenderOptions>();
-  CLI::App* command = app.add_subcommand("render", "Render one frame of a scene to a PNG, headless, with the OpenGL or the CPU backend");
+  CLI::App* command = app.add_subcommand("render", "Render one frame of a scene to a PNG, headless, with the OpenGL or the CPU backend, or the ray tracer");
   addCommonOptions(*command, options->common, "the PNG to write (default: facet.png)");
   command->add_option("--backend", options->backend,
-                      "gl (OpenGL, headless on llvmpipe), cpu (the CPU rasterizer) or reference (the CPU rasterizer's one-triangle-at-a-time "
-                      "reference: the same image, slowly)")
-      ->check(CLI::IsMember({"gl", "cpu", "reference"}));
+                      "gl (OpenGL, headless on llvmpipe), cpu (the CPU rasterizer), reference (the CPU rasterizer's one-triangle-at-a-time "
+                      "reference: the same image, slowly) or ray (the ray tracer: shadow rays, reflection, refraction)")
+      ->check(CLI::IsMember({"gl", "cpu", "reference", "ray"}));
   command->add_option("--context", options->context, "headless OpenGL context for --backend gl: osmesa or egl")
       ->check(CLI::IsMember({"osmesa", "egl"}));
-  command->add_option("--threads", options->threads, "CPU backend threads (0: one per core)")->check(wholeNumberIn(0, 256));
+  command->add_option("--threads", options->threads, "CPU backend and ray tracer threads (0: one per core)")->check(wholeNumberIn(0, 256));
   command->add_option("--output-stage", options->stage,
                       "image (the frame), or overdraw: the depth complexity, how many triangle fragments each pixel received before the "
                       "depth test, as a heat map (black 0, pale yellow the busiest pixel)")

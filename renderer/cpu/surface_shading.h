@@ -81,6 +81,19 @@ inline glm::vec3 baseColorAt(const SurfaceDraw& d, const SurfacePoint& p) {
   return O;
 }
 
+// The unit normal Phong and pbr light the point with: the interpolated one
+// bent by the normal texture, then by the bump map, normalized as the
+// interpolated one is, and negated on a back face (two-sided lighting).
+inline glm::vec3 shadingNormal(const SurfaceDraw& d, const SurfacePoint& p) {
+  const CourseMaterial& material = *d.material;
+  glm::vec3 normal = p.normal;
+  const int normalSet = material.normalMap.set;
+  if (d.normalMap) normal = normalMapped(*d.normalMap, material, normalize3(normal), p.tangent, p.st[normalSet], p.derivatives[normalSet]);
+  if (d.bumpable) normal = bumped(*d.frame->bump.map, d.frame->bump.scale, normalize3(normal), p.tangent, p.st[0]);
+  const glm::vec3 unit = normalize3(normal);
+  return p.front ? unit : -unit;
+}
+
 // The linear colour of the point, before fog.
 template <class Shadows>
 glm::vec3 shadeSurface(const SurfaceDraw& d, const Shadows& shadows, const SurfacePoint& p) {
@@ -91,13 +104,7 @@ glm::vec3 shadeSurface(const SurfaceDraw& d, const Shadows& shadows, const Surfa
     return emissionAt(*d.emissiveMap, material, p.st[set], p.derivatives[set]);
   };
   if (interpolatesNormals(frame.shading)) {
-    glm::vec3 normal = p.normal;
-    // The normal texture, then the bump map, bend the unit normal; the result is normalized as the interpolated one is.
-    const int normalSet = material.normalMap.set;
-    if (d.normalMap) normal = normalMapped(*d.normalMap, material, normalize3(normal), p.tangent, p.st[normalSet], p.derivatives[normalSet]);
-    if (d.bumpable) normal = bumped(*frame.bump.map, frame.bump.scale, normalize3(normal), p.tangent, p.st[0]);
-    const glm::vec3 unit = normalize3(normal);
-    const glm::vec3 N = p.front ? unit : -unit;  // two-sided lighting
+    const glm::vec3 N = shadingNormal(d, p);
     if (frame.shading == ShadingMode::Pbr)
       return shadePhysicallyBased(frame, shadows, pbrSurfaceAt(*d.scene, material, *d.mesh, baseColorAt(d, p), p.st, p.derivatives), p.P, N,
                                   viewVector<float>(frame, p.P));

@@ -3,6 +3,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "common/error.h"
+#include "scene/cornell_box.h"
 #include "scene/default_scene.h"
 #include "scene/gltf_loader.h"
 #include "scene/primitives.h"
@@ -48,10 +49,11 @@ Scene primitive(std::string_view name, const std::string& path) {
 
 }  // namespace
 
-std::vector<std::string_view> builtinSceneNames() { return {"default", "sphere", "cube", "plane", "cylinder", "torus"}; }
+std::vector<std::string_view> builtinSceneNames() { return {"default", "cornell", "sphere", "cube", "plane", "cylinder", "torus"}; }
 
 Scene loadScene(const std::string& path) {
   if (path.empty() || path == "builtin:default") return makeDefaultScene();
+  if (path == "builtin:cornell") return makeCornellBox();
   if (path.rfind(kBuiltin, 0) != 0) return loadGltf(path);
   std::string_view name = std::string_view(path).substr(kBuiltin.size());
   constexpr std::string_view kGround = "+ground";

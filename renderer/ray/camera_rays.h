@@ -1,0 +1,20 @@
+#pragma once
+// The course's ray casting (renderer/PIPELINE.md, section 10, "Ray
+// casting"): the ray through a pixel, with a window at unit distance, so
+// that the ray parameter t is the eye depth z_eye of the point it reaches.
+#include <glm/vec2.hpp>
+
+#include "pipeline/frame_inputs.h"
+#include "ray/ray.h"
+
+namespace facet::ray {
+
+// The primary ray of pixel (px, py) (bottom row first) at `offset` pixels
+// from its centre: perspective, from the eye through
+//   P_x = -tanθ + 2(i + 0.5)·tanθ/X_res,  P_y = (tanθ - (j + 0.5)·2tanθ/Y_res)/A_R,  z = 1
+// with i = px + dx and j = (H - 1 - py) - dy, turned to world space by EM's
+// rotation transposed; parallel, from (x·W/2, y·H/2, 0) in eye space along
+// +z. t runs from N to F, the rasterizers' clipping planes.
+Ray primaryRay(const FrameInputs& frame, int px, int py, glm::vec2 offset = glm::vec2(0.0f));
+
+}  // namespace facet::ray

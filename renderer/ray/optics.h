@@ -1,0 +1,42 @@
+#pragma once
+// The laws the recursive rays follow (renderer/PIPELINE.md, section 10,
+// "Recursive ray tracing"): the law of reflection, Snell's law with total
+// internal reflection, and Schlick's approximation of Fresnel's reflectance.
+#include <cmath>
+#include <optional>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+namespace facet::ray {
+
+// R = D - 2(D·N)N: D the unit incoming direction, N the unit normal.
+inline glm::vec3 reflected(glm::vec3 D, glm::vec3 N) { return D - (2.0f * glm::dot(D, N)) * N; }
+
+// What crosses from index n1 into n2: the unit direction T and cos θ2.
+struct Refraction {
+  glm::vec3 T{0.0f};
+  float cosTransmitted = 1.0f;
+};
+
+// Snell's law, n1 sin θ1 = n2 sin θ2, for unit D and a unit N facing it
+// (D·N < 0): T = η·D + (η·c1 - c2)·N, η = n1/n2, c1 = -D·N,
+// c2 = sqrt(1 - η²(1 - c1²)). Nothing when 1 - η²(1 - c1²) < 0: total
+// internal reflection, past the critical angle sin θ_c = n2/n1.
+inline std::optional<Refraction> refracted(glm::vec3 D, glm::vec3 N, float n1, float n2) {
+  const float eta = n1 / n2, c1 = -glm::dot(D, N);
+  const float k = 1.0f - eta * eta * (1.0f - c1 * c1);
+  if (k < 0.0f) return std::nullopt;
+  const float c2 = std::sqrt(k);
+  return Refraction{eta * D + (eta * c1 - c2) * N, c2};
+}
+
+// Schlick: F = F0 + (1 - F0)(1 - c)^5, F0 = ((n1 - n2)/(n1 + n2))², c the
+// cosine on the side of the smaller index (c1 entering a denser medium, c2 leaving it).
+inline float fresnelSchlick(float n1, float n2, float cosIncident, float cosTransmitted) {
+  const float r0 = (n1 - n2) / (n1 + n2), F0 = r0 * r0;
+  const float c = n1 <= n2 ? cosIncident : cosTransmitted;
+  return F0 + (1.0f - F0) * std::pow(1.0f - c, 5.0f);
+}
+
+}  // namespace facet::ray

@@ -1,0 +1,135 @@
+#include "ray/ray_renderer.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <mutex>
+#include <string>
+#include <thread>
+
+#include "common/error.h"
+#include "common/quote.h"
+#include "cpu/blending.h"
+#include "cpu/resolve.h"
+#include "cpu/thread_pool.h"
+#include "image/color_buffer.h"
+#include "pipeline/frame_checks.h"
+#include "ray/ray_tracer.h"
+#include "ray/traced_scene.h"
+#include "scene/memory_budget.h"
+
+namespace facet {
+namespace {
+
+using ray::RayStatistics;
+using ray::RayTracer;
+using ray::TracedScene;
+
+constexpr int kTile = 16;  // pixels a side: a worker's unit of work
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+class RayRenderer final : public Renderer {
+ public:
+  explicit RayRenderer(int threads)
+      : pool_(threads > 0 ? threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()))) {}
+
+  std::string description() const override { return "ray tracer, " + countOf(static_cast<std::size_t>(pool_.size()), "thread"); }
+
+  RenderResult render(const Scene& scene, const FrameInputs& frame) override {
+    RenderResult result;
+    const TracedScene& traced = prepare(scene, frame, frame.ray.spheres, result);
+    if (frame.areaAveraged)
+      throw Error("settings key 'antialiasing.pattern': area is the CPU rasterizer's exact coverage; the ray tracer samples grid or jittered");
+    const RayTracer tracer(traced, frame);
+    const auto start = std::chrono::steady_clock::now();
+    // One sample at each pixel's centre, held straight; or the frame's sample offsets, summed premultiplied.
+    const std::vector<glm::vec2> offsets = frame.samples.empty() ? std::vector<glm::vec2>{glm::vec2(0.0f)} : frame.samples;
+    const bool summed = !frame.samples.empty();
+    color_.reset(frame.width, frame.height, glm::vec4(0.0f));
+    RayStatistics statistics;
+    std::mutex merging;
+    forEachPixel(frame, [&](int x, int y, RayStatistics& local) {
+      glm::vec4 sum(0.0f);
+      for (const glm::vec2 offset : offsets) {
+        const glm::vec4 held = tracer.pixel(x, y, offset, local);
+        sum = summed ? sum + cpu::premultipliedOf(held, Blending::Straight) : held;
+      }
+      color_.at(x, y) = sum;
+    }, [&](const RayStatistics& local) {
+      const std::lock_guard<std::mutex> lock(merging);
+      statistics.add(local);
+    });
+    result.timings.push_back({"ray tracing" + (summed ? " (" + std::to_string(offsets.size()) + " samples)" : std::string()), millisecondsSince(start)});
+    const auto resolveStart = std::chrono::steady_clock::now();
+    cpu::resolve(pool_, color_, summed ? Blending::Premultiplied : Blending::Straight, static_cast<int>(offsets.size()), result.image);
+    result.timings.push_back({"resolve", millisecondsSince(resolveStart)});
+    result.notes.push_back(statistics.summary());
+    return result;
+  }
+
+  std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) override {
+    RenderResult unused;
+    const RayTracer tracer(prepare(scene, frame, frame.ray.spheres, unused), frame);
+    std::vector<std::uint32_t> ids(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 0u);
+    forEachPixel(frame, [&](int x, int y, RayStatistics&) { ids[static_cast<std::size_t>(y) * static_cast<std::size_t>(frame.width) + static_cast<std::size_t>(x)] = tracer.visibleTriangle(x, y); },
+                 [](const RayStatistics&) {});
+    return ids;
+  }
+
+  std::vector<std::uint32_t> fragmentCounts(const Scene& scene, const FrameInputs& frame) override {
+    RenderResult unused;
+    const RayTracer tracer(prepare(scene, frame, frame.ray.spheres, unused), frame);
+    std::vector<std::uint32_t> counts(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 0u);
+    forEachPixel(frame, [&](int x, int y, RayStatistics&) { counts[static_cast<std::size_t>(y) * static_cast<std::size_t>(frame.width) + static_cast<std::size_t>(x)] = tracer.surfacesCrossed(x, y); },
+                 [](const RayStatistics&) {});
+    return counts;
+  }
+
+ private:
+  // The frame checked, and its primitives and BVH: kept when the scene and its instances are those of the last frame.
+  const TracedScene& prepare(const Scene& scene, const FrameInputs& frame, bool spheres, RenderResult& result) {
+    check_(scene, frame);
+    if (!traced_ || !traced_->builtFrom(scene, frame, spheres)) {
+      traced_.reset();
+      const auto start = std::chrono::steady_clock::now();
+      traced_ = std::make_unique<TracedScene>(scene, frame, spheres, pool_);
+      result.timings.push_back({"BVH build", millisecondsSince(start)});
+      const ray::BvhStats& s = traced_->bvh().stats();
+      result.notes.push_back("BVH: " + countOf(s.primitives, "primitive") + ", " + countOf(s.nodes, "node") + " (" + countOf(s.leaves, "leaf", "leaves") +
+                             "), depth " + std::to_string(s.maxDepth) + ", " + byteCount(traced_->bytes()));
+    } else {
+      traced_->bind(scene, frame);
+    }
+    return *traced_;
+  }
+
+  // shade(x, y, statistics) on every pixel, tile by tile on the pool; each worker's statistics handed to merge once.
+  template <class Shade, class Merge>
+  void forEachPixel(const FrameInputs& frame, Shade&& shade, Merge&& merge) {
+    const int columns = (frame.width + kTile - 1) / kTile, rows = (frame.height + kTile - 1) / kTile;
+    std::atomic<int> next{0};
+    pool_.run([&](int) {
+      RayStatistics local;
+      for (int tile = next++; tile < columns * rows; tile = next++) {
+        const int x0 = (tile % columns) * kTile, y0 = (tile / columns) * kTile;
+        for (int y = y0; y < std::min(y0 + kTile, frame.height); ++y)
+          for (int x = x0; x < std::min(x0 + kTile, frame.width); ++x) shade(x, y, local);
+      }
+      merge(local);
+    });
+  }
+
+  cpu::ThreadPool pool_;
+  FrameCheck check_;
+  std::unique_ptr<TracedScene> traced_;
+  ColorBuffer color_;
+};
+
+}  // namespace
+
+std::unique_ptr<Renderer> makeRayRenderer(int threads) { return std::make_unique<RayRenderer>(threads); }
+
+}  // namespace facet

@@ -1,0 +1,265 @@
+#include "ray/ray_tracer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <glm/geometric.hpp>
+
+#include "cpu/alpha_mask.h"
+#include "cpu/blending.h"
+#include "cpu/environment_mapping.h"
+#include "cpu/fog.h"
+#include "cpu/vertex_math.h"
+#include "ray/camera_rays.h"
+#include "ray/optics.h"
+
+namespace facet::ray {
+namespace {
+
+float largest(glm::vec3 v) { return std::max({v.x, v.y, v.z}); }
+
+}  // namespace
+
+void RayStatistics::add(const RayStatistics& o) {
+  primary += o.primary, shadow += o.shadow, reflected += o.reflected, transmitted += o.transmitted;
+  totalInternal += o.totalInternal, continued += o.continued;
+  stoppedByDepth += o.stoppedByDepth, stoppedByContribution += o.stoppedByContribution;
+  depthSum += o.depthSum;
+  maxDepth = std::max(maxDepth, o.maxDepth);
+}
+
+std::string RayStatistics::summary() const {
+  const std::uint64_t traced = primary + reflected + transmitted;
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "ray tree: %llu primary, %llu shadow, %llu reflected, %llu transmitted (%llu total internal reflections), %llu past blended "
+                "surfaces; depth mean %.3f, max %d; not traced: %llu at ray.depth, %llu below ray.minContribution",
+                static_cast<unsigned long long>(primary), static_cast<unsigned long long>(shadow), static_cast<unsigned long long>(reflected),
+                static_cast<unsigned long long>(transmitted), static_cast<unsigned long long>(totalInternal),
+                static_cast<unsigned long long>(continued), traced ? static_cast<double>(depthSum) / static_cast<double>(traced) : 0.0, maxDepth,
+                static_cast<unsigned long long>(stoppedByDepth), static_cast<unsigned long long>(stoppedByContribution));
+  return text;
+}
+
+float shadowFactorLanes(const TracedShadows& shadows, const FrameLight& light, const ShadowSettings&, glm::vec3 P, glm::vec3, glm::vec3,
+                        bool) {
+  return shadows.tracer->shadowFactor(light, P, shadows.geometricNormal, *shadows.statistics);
+}
+
+// Where a ray is in its tree.
+struct RayTracer::Path {
+  int depth = 1;                       // the primary ray's level is 1
+  glm::vec3 weight{1.0f};              // the product of k_r or k_t along the way
+  glm::vec3 medium{0.0f};              // σ of the medium the ray travels in (Beer's law); 0 outside
+  bool primary = true;                 // the eye's ray, or its continuation past blended surfaces: culled, fogged, the pixel's background
+  bool continuation = false;           // going on past a blended surface: the same level, not counted again
+  int px = 0, py = 0;                  // the pixel, for its background
+  glm::vec2 offset{0.0f};
+  const RayDifferentials* differentials = nullptr;  // primary hits: the neighbouring pixels' rays
+};
+
+RayTracer::RayTracer(const TracedScene& scene, const FrameInputs& frame)
+    : scene_(scene), frame_(frame), offset_(frame.ray.epsilon * frame.sceneRadius) {}
+
+Ray RayTracer::leaving(glm::vec3 P, glm::vec3 Ng, glm::vec3 direction) const {
+  Ray ray;
+  ray.origin = P + (glm::dot(Ng, direction) >= 0.0f ? offset_ : -offset_) * Ng;
+  ray.direction = direction;
+  return ray;
+}
+
+bool RayTracer::nearestHit(const Ray& ray, bool primary, Hit& hit) const {
+  return scene_.bvh().intersect(ray, hit, [&](const Hit& candidate) {
+    if (primary && scene_.instanceOf(frame_, candidate.primitive).cullBackFaces && !scene_.frontFacing(candidate, ray)) return false;
+    const CourseMaterial& material = *scene_.drawOf(candidate.primitive).material;
+    return !material.masked || cpu::alphaKept(material, scene_.alphaAt(candidate, ray));
+  });
+}
+
+float RayTracer::shadowFactor(const FrameLight& light, glm::vec3 P, glm::vec3 Ng, RayStatistics& statistics) const {
+  if (!light.hasShadowMap) return 1.0f;
+  ++statistics.shadow;
+  const bool directional = light.light.kind == LightKind::Directional;
+  Ray ray = leaving(P, Ng, directional ? -light.light.direction : light.light.position - P);
+  if (!directional) {
+    ray.direction = light.light.position - ray.origin;  // t = 1 at the light
+    ray.tMax = 1.0f;
+  }
+  float S = 1.0f;
+  scene_.bvh().forEachHit(ray, [&](const Hit& hit) {
+    const CourseMaterial& material = *scene_.drawOf(hit.primitive).material;
+    // The shadow pass's alpha test (blended: transparency.shadowCutoff): what it discards casts nothing.
+    if ((material.masked || material.blended) && !cpu::alphaKept(material, scene_.alphaAt(hit, ray))) return false;
+    S = material.transmission > 0.0f ? S * material.transmission : 0.0f;
+    return !(S > 0.0f);  // an opaque surface ends the search
+  });
+  return S;
+}
+
+glm::vec4 RayTracer::trace(const Ray& ray, const Path& path, RayStatistics& statistics) const {
+  if (!path.continuation) {
+    statistics.depthSum += static_cast<std::uint64_t>(path.depth);
+    statistics.maxDepth = std::max(statistics.maxDepth, path.depth);
+  }
+  Hit hit;
+  if (!nearestHit(ray, path.primary, hit)) {
+    if (path.primary) return cpu::stored(cpu::backgroundAt(frame_, path.px, path.py, path.offset), frame_.backgroundAlpha, Blending::Straight);
+    const glm::vec3 D = cpu::normalize3(ray.direction);
+    return glm::vec4(frame_.environment.map ? cpu::environmentAt(*frame_.environment.map, D, 0) : frame_.background, 1.0f);
+  }
+  const cpu::SurfaceDraw& base = scene_.drawOf(hit.primitive);
+  const CourseMaterial& material = *base.material;
+  const glm::vec3 P = scene_.pointOf(hit, ray);
+  const glm::vec3 Ng = scene_.geometricNormal(hit, P);
+  cpu::SurfacePoint p = scene_.surfaceAt(hit, ray, path.differentials);
+  // A transmissive surface keeps its highlights and loses the diffuse share it transmits: k_a, k_d times (1 - k_t).
+  const float kt = std::clamp(material.transmission, 0.0f, 1.0f);
+  cpu::SurfaceDraw draw = base;
+  CourseMaterial transmissive;
+  if (kt > 0.0f) {
+    transmissive = material;
+    transmissive.ka = transmissive.ka * (1.0f - kt);
+    transmissive.kd = transmissive.kd * (1.0f - kt);
+    draw.material = &transmissive;
+    draw.summed = cpu::laneMaterial(transmissive, draw.emissiveMap ? glm::vec3(0.0f) : transmissive.emissive);
+  }
+  TracedShadows shadows{this, Ng, &statistics};
+  const bool sphere = scene_.primitives().isSphere(hit.primitive);
+  const FrameInstance& instance = scene_.instanceOf(frame_, hit.primitive);
+  if (!interpolatesNormals(frame_.shading) && !sphere) {
+    // Gouraud lights the triangle's vertices and weights them by the barycentrics; flat lights its centroid.
+    const glm::vec3* corner = &scene_.primitives().triangleCorners[3 * static_cast<std::size_t>(hit.primitive)];
+    const float side = p.front ? 1.0f : -1.0f;
+    if (frame_.shading == ShadingMode::Flat) {
+      const glm::vec3 centroid = (corner[0] + corner[1] + corner[2]) / 3.0f;
+      p.lit = cpu::illuminate(frame_, shadows, draw.summed, centroid, side * Ng, cpu::viewVector<float>(frame_, centroid));
+    } else {
+      const Mesh& mesh = *scene_.drawOf(hit.primitive).mesh;
+      const std::uint32_t* index = &mesh.indices[scene_.primitive(hit.primitive).first];
+      const float w[3] = {1.0f - hit.u - hit.v, hit.u, hit.v};
+      cpu::Illumination sum;
+      for (int k = 0; k < 3; ++k) {
+        const glm::vec3 N = cpu::normalize3(cpu::transformDirection(instance.normalMatrix, mesh.normals[index[k]]));
+        const cpu::Illumination I = cpu::illuminate(frame_, shadows, draw.summed, corner[k], side * N, cpu::viewVector<float>(frame_, corner[k]));
+        sum.diffuse = sum.diffuse + w[k] * I.diffuse;
+        sum.specular = sum.specular + w[k] * I.specular;
+      }
+      p.lit = sum;
+    }
+  } else if (!interpolatesNormals(frame_.shading)) {
+    // A traced sphere has no vertices or facets: every mode lights it at the hit.
+    p.lit = cpu::illuminate(frame_, shadows, draw.summed, P, p.front ? p.normal : -p.normal, cpu::viewVector<float>(frame_, P));
+  }
+  glm::vec3 color = cpu::shadeSurface(draw, shadows, p);
+
+  // The recursive terms k_r·I_r + k_t·I_t.
+  if (material.reflectivity > 0.0f || kt > 0.0f) {
+    const glm::vec3 D = cpu::normalize3(ray.direction);
+    // The normal the rays turn about, facing the incoming ray (the geometric one where the interpolated one does not).
+    glm::vec3 N = interpolatesNormals(frame_.shading) ? cpu::shadingNormal(base, p) : (p.front ? Ng : -Ng);
+    if (sphere) N = p.front ? Ng : -Ng;
+    if (!(glm::dot(N, D) < 0.0f)) N = glm::dot(Ng, D) < 0.0f ? Ng : -Ng;
+    const float m = material.metallic;
+    const glm::vec3 Os = glm::vec3(1.0f - m) + m * cpu::baseColorAt(base, p);
+    glm::vec3 kr = material.reflectivity * Os;
+    float kTransmit = kt;
+    glm::vec3 T{0.0f};
+    if (kt > 0.0f) {
+      // Snell's law from n1 into n2: entering through a front face, leaving through a back one.
+      const float n1 = p.front ? 1.0f : material.ior, n2 = p.front ? material.ior : 1.0f;
+      const std::optional<Refraction> refraction = refracted(D, N, n1, n2);
+      if (!refraction) {  // total internal reflection: the transmitted share reflects
+        ++statistics.totalInternal;
+        kr = kr + glm::vec3(kt);
+        kTransmit = 0.0f;
+      } else {
+        T = refraction->T;
+        const float F = fresnelSchlick(n1, n2, -glm::dot(D, N), refraction->cosTransmitted);
+        kr = kr + glm::vec3(kt * F);
+        kTransmit = kt * (1.0f - F);
+      }
+    }
+    const bool reflects = largest(kr) > 0.0f, transmits = kTransmit > 0.0f;
+    if (path.depth >= frame_.ray.depth) {
+      statistics.stoppedByDepth += (reflects ? 1 : 0) + (transmits ? 1 : 0);
+    } else {
+      Path next;
+      next.depth = path.depth + 1;
+      next.primary = false;
+      if (reflects) {
+        next.weight = path.weight * kr;
+        next.medium = path.medium;
+        if (largest(next.weight) < frame_.ray.minContribution) {
+          ++statistics.stoppedByContribution;
+        } else {
+          ++statistics.reflected;
+          color = color + kr * glm::vec3(trace(leaving(P, Ng, reflected(D, N)), next, statistics));
+        }
+      }
+      if (transmits) {
+        next.weight = path.weight * kTransmit;
+        next.medium = p.front ? material.absorption : glm::vec3(0.0f);  // into the medium, or out of it
+        if (largest(next.weight) < frame_.ray.minContribution) {
+          ++statistics.stoppedByContribution;
+        } else {
+          ++statistics.transmitted;
+          color = color + kTransmit * glm::vec3(trace(leaving(P, Ng, T), next, statistics));
+        }
+      }
+    }
+  }
+  if (path.primary) color = cpu::fogged(frame_.fog, color, (frame_.eyeFromWorld * glm::vec4(P, 1.0f)).z);
+  glm::vec4 result(color, 1.0f);
+  if (material.blended) {
+    // Past a blended surface the same ray goes on; what lies behind is blended under it by the straight equation.
+    ++statistics.continued;
+    Ray behind = leaving(P, Ng, ray.direction);
+    behind.tMax = ray.tMax - hit.t;
+    Path next = path;
+    next.continuation = true;
+    next.weight = path.weight * (1.0f - clampUnit(scene_.alphaAt(hit, ray)));
+    result = cpu::blend(trace(behind, next, statistics), color, scene_.alphaAt(hit, ray), Blending::Straight);
+  }
+  // Beer's law over the distance travelled inside a medium.
+  if (largest(path.medium) > 0.0f) {
+    const float distance = hit.t * glm::length(ray.direction);
+    for (int c = 0; c < 3; ++c) result[c] = result[c] * std::exp(-path.medium[c] * distance);
+  }
+  return result;
+}
+
+glm::vec4 RayTracer::pixel(int px, int py, glm::vec2 offset, RayStatistics& statistics) const {
+  const Ray ray = primaryRay(frame_, px, py, offset);
+  const RayDifferentials differentials{primaryRay(frame_, px & ~1, py, offset), primaryRay(frame_, px | 1, py, offset),
+                                       primaryRay(frame_, px, py & ~1, offset), primaryRay(frame_, px, py | 1, offset)};
+  ++statistics.primary;
+  Path path;
+  path.px = px, path.py = py, path.offset = offset;
+  path.differentials = &differentials;
+  return trace(ray, path, statistics);
+}
+
+std::uint32_t RayTracer::visibleTriangle(int px, int py) const {
+  const Ray ray = primaryRay(frame_, px, py);
+  Hit hit;
+  const bool found = scene_.bvh().intersect(ray, hit, [&](const Hit& candidate) {
+    if (scene_.instanceOf(frame_, candidate.primitive).cullBackFaces && !scene_.frontFacing(candidate, ray)) return false;
+    const CourseMaterial& material = *scene_.drawOf(candidate.primitive).material;
+    if (material.blended) return false;  // blended surfaces keep no pixel (they write no depth)
+    return !material.masked || cpu::alphaKept(material, scene_.alphaAt(candidate, ray));
+  });
+  return found ? scene_.primitive(hit.primitive).frameTriangle + 1 : 0;
+}
+
+std::uint32_t RayTracer::surfacesCrossed(int px, int py) const {
+  const Ray ray = primaryRay(frame_, px, py);
+  std::uint32_t count = 0;
+  scene_.bvh().forEachHit(ray, [&](const Hit& hit) {
+    if (!(scene_.instanceOf(frame_, hit.primitive).cullBackFaces && !scene_.frontFacing(hit, ray))) ++count;
+    return false;
+  });
+  return count;
+}
+
+}  // namespace facet::ray

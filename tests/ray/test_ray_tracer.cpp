@@ -1,0 +1,298 @@
+// The ray-tracing backend (renderer/PIPELINE.md, section 10) held to the
+// rasterizer where the two must agree (ray casting: the same triangle at
+// every pixel but on triangle edges, the same colour where both see the
+// same triangle), to hand-computed optics (a mirror, a glass slab, total
+// internal reflection) and to the stopping conditions of the ray tree.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <string>
+
+#include <doctest/doctest.h>
+#include <glm/geometric.hpp>
+
+#include "common/error.h"
+#include "cpu/cpu_renderer.h"
+#include "math/transforms.h"
+#include "pipeline/frame_inputs.h"
+#include "ray/camera_rays.h"
+#include "ray/optics.h"
+#include "ray/ray_renderer.h"
+#include "scene/cornell_box.h"
+#include "scene/default_scene.h"
+#include "scene/load_scene.h"
+#include "scene/primitives.h"
+
+using namespace facet;
+
+namespace {
+
+// The largest difference of two pixels' colour levels.
+int levelDifference(Rgba8 a, Rgba8 b) { return std::max({std::abs(int{a.r} - b.r), std::abs(int{a.g} - b.g), std::abs(int{a.b} - b.b)}); }
+
+// Whether pixel (x, y) of an id buffer lies on a triangle's edge: a 4-neighbour keeps another triangle.
+bool onEdge(const std::vector<std::uint32_t>& ids, int width, int height, int x, int y) {
+  const std::uint32_t id = ids[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)];
+  const int dx[4] = {1, -1, 0, 0}, dy[4] = {0, 0, 1, -1};
+  for (int k = 0; k < 4; ++k) {
+    const int nx = x + dx[k], ny = y + dy[k];
+    if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+    if (ids[static_cast<std::size_t>(ny) * static_cast<std::size_t>(width) + static_cast<std::size_t>(nx)] != id) return true;
+  }
+  return false;
+}
+
+struct Agreement {
+  long covered = 0;          // pixels the rasterizer covers
+  long otherTriangle = 0;    // pixels where the two keep different triangles
+  long offEdge = 0;          // of those, pixels not on a triangle edge of the rasterizer's
+  long sameTriangle = 0;     // pixels where both keep the same triangle
+  long over = 0;             // of those, pixels whose colours differ by more than `bound` levels
+  int maxDifference = 0;     // over the same-triangle pixels
+};
+
+Agreement agreementOf(const Scene& scene, const RenderSettings& s, int bound) {
+  const FrameInputs frame = buildFrameInputs(scene, s);
+  const auto raster = makeCpuRenderer(2);
+  const auto traced = makeRayRenderer(2);
+  const std::vector<std::uint32_t> a = raster->visibleTriangles(scene, frame), b = traced->visibleTriangles(scene, frame);
+  const Image imageA = raster->render(scene, frame).image, imageB = traced->render(scene, frame).image;
+  Agreement g;
+  for (int y = 0; y < frame.height; ++y)
+    for (int x = 0; x < frame.width; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(frame.width) + static_cast<std::size_t>(x);
+      g.covered += a[i] != 0;
+      if (a[i] != b[i]) {
+        ++g.otherTriangle;
+        g.offEdge += onEdge(a, frame.width, frame.height, x, y) ? 0 : 1;
+        continue;
+      }
+      ++g.sameTriangle;
+      const int d = levelDifference(imageA.at(x, y), imageB.at(x, y));
+      g.maxDifference = std::max(g.maxDifference, d);
+      g.over += d > bound ? 1 : 0;
+    }
+  return g;
+}
+
+RenderSettings castingSettings() {
+  RenderSettings s;
+  s.width = 200, s.height = 150;
+  s.ray.depth = 1;         // ray casting: no reflected or transmitted rays
+  s.ray.spheres = false;   // the sphere's triangles, as the rasterizer draws them
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("ray casting: the course's window at unit distance puts t at the eye depth, and pixel centres where the rasterizer has them") {
+  const Scene scene = makeDefaultScene();
+  RenderSettings s;
+  s.width = 64, s.height = 48;
+  const FrameInputs frame = buildFrameInputs(scene, s);
+  for (const glm::ivec2 pixel : {glm::ivec2(0, 0), glm::ivec2(63, 47), glm::ivec2(20, 31)}) {
+    const ray::Ray r = ray::primaryRay(frame, pixel.x, pixel.y);
+    const glm::vec3 P = r.origin + 3.0f * r.direction;
+    const glm::vec4 eye = frame.eyeFromWorld * glm::vec4(P, 1.0f);
+    CHECK(eye.z == doctest::Approx(3.0f).epsilon(1e-5));
+    // Projected by PM and the viewport, the point lands on the pixel's centre.
+    const glm::vec4 clip = frame.clipFromWorld * glm::vec4(P, 1.0f);
+    const glm::vec4 window = frame.windowFromNdc * glm::vec4(glm::vec3(clip) / clip.w, 1.0f);
+    CHECK(window.x == doctest::Approx(pixel.x + 0.5).epsilon(1e-4));
+    CHECK(window.y == doctest::Approx(pixel.y + 0.5).epsilon(1e-4));
+  }
+}
+
+TEST_CASE("ray casting agrees with the rasterizer: triangles differ only on edges, colours within a bound, shadows off") {
+  RenderSettings s = castingSettings();
+  s.shadows.enabled = false;
+  for (const ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) {
+    s.shading = mode;
+    CAPTURE(mode);
+    const Agreement g = agreementOf(makeDefaultScene(), s, 1);
+    std::printf("ray casting vs rasterizer, default scene 200x150, %s, shadows off: %ld covered, %ld on another triangle (%ld off edges), "
+                "%ld on the same: %ld over 1 level, max %d\n",
+                kShadingModeNames[static_cast<std::size_t>(mode)].data(), g.covered, g.otherTriangle, g.offEdge, g.sameTriangle, g.over,
+                g.maxDifference);
+    CHECK(g.covered > 15000);
+    CHECK(g.offEdge == 0);
+    CHECK(g.otherTriangle < g.covered / 50);
+    CHECK(g.over == 0);
+  }
+}
+
+TEST_CASE("ray casting agrees with the rasterizer on culled and two-sided faces, textures and vertex colours") {
+  // Back faces culled or lit two-sided by the same rule; texture levels of detail from ray differentials against the quads' derivatives.
+  for (const char* name : {"double_sided.gltf", "vertex_colors.gltf", "textured_wraps.gltf", "mipmap_modes.gltf"})
+    for (const bool cull : {true, false}) {
+      CAPTURE(name);
+      CAPTURE(cull);
+      const Scene scene = loadScene(std::string(FACET_ASSETS) + "/scenes/" + name);
+      RenderSettings s = castingSettings();
+      s.shadows.enabled = false;
+      s.cullBackFaces = cull;
+      // 1 level: a hit's attributes are its vertices' weighted by barycentrics, the rasterizer's are planes of
+      // a·(1/w) divided by the plane of 1/w; the same values, rounded differently.
+      const Agreement g = agreementOf(scene, s, 1);
+      std::printf("ray casting vs rasterizer, %s 200x150, culling %s: %ld covered, %ld on another triangle (%ld off edges), %ld on the same: "
+                  "%ld over 1 level, max %d\n",
+                  name, cull ? "on" : "off", g.covered, g.otherTriangle, g.offEdge, g.sameTriangle, g.over, g.maxDifference);
+      CHECK(g.covered > 3000);
+      CHECK(g.offEdge == 0);
+      CHECK(g.over == 0);
+    }
+}
+
+TEST_CASE("ray casting with shadow rays: the same image but where a shadow map's shadow differs from the exact one") {
+  RenderSettings s = castingSettings();
+  s.shadows.pcfRadius = 0;  // hard shadows, as shadow rays cast
+  const Agreement g = agreementOf(makeDefaultScene(), s, 1);
+  std::printf("ray casting vs rasterizer, default scene 200x150, phong, hard shadows: %ld covered, %ld on the same triangle: %ld over 1 level, max %d\n",
+              g.covered, g.sameTriangle, g.over, g.maxDifference);
+  CHECK(g.offEdge == 0);
+  // The shadow maps' edges (aliasing, acne, the bias's peter-panning) are the only expected difference.
+  CHECK(g.over > 0);
+  CHECK(g.over < g.covered / 50);
+}
+
+TEST_CASE("optics: the law of reflection, Snell's law, the critical angle and Fresnel's reflectance at normal incidence") {
+  const glm::vec3 N{0.0f, 0.0f, 1.0f};
+  const float a = 40.0f * std::numbers::pi_v<float> / 180.0f, b = 45.0f * std::numbers::pi_v<float> / 180.0f;
+  const glm::vec3 D40{std::sin(a), 0.0f, -std::cos(a)}, D45{std::sin(b), 0.0f, -std::cos(b)};
+  CHECK(ray::reflected(D40, N).x == doctest::Approx(D40.x));
+  CHECK(ray::reflected(D40, N).z == doctest::Approx(-D40.z));
+  // Into glass: n1 sin θ1 = n2 sin θ2, and the ray stays a unit vector in the plane of incidence.
+  const auto into = ray::refracted(D40, N, 1.0f, 1.5f);
+  REQUIRE(into);
+  CHECK(1.0f * std::sin(a) == doctest::Approx(1.5f * into->T.x));
+  CHECK(glm::length(into->T) == doctest::Approx(1.0f));
+  CHECK(into->T.y == 0.0f);
+  // Out of glass, the critical angle is asin(1/1.5) = 41.8°: 40° leaves, 45° is totally reflected.
+  const auto out = ray::refracted(D40, N, 1.5f, 1.0f);
+  REQUIRE(out);
+  CHECK(1.5f * std::sin(a) == doctest::Approx(out->T.x));
+  CHECK_FALSE(ray::refracted(D45, N, 1.5f, 1.0f));
+  CHECK(ray::fresnelSchlick(1.0f, 1.5f, 1.0f, 1.0f) == doctest::Approx(0.04f));
+  CHECK(ray::fresnelSchlick(1.0f, 1.5f, 0.0f, 1.0f) == doctest::Approx(1.0f));
+}
+
+namespace {
+
+// A scene lit by nothing (ambient 0, no light): what shows is emission, reflected and transmitted.
+RenderSettings unlitParallel(int width, int height, float parallelWidth) {
+  RenderSettings s;
+  s.width = width, s.height = height;
+  s.ambient = 0.0f;
+  s.lightSource = Source::Manual;
+  s.lights.clear();
+  s.camera.source = Source::Manual;
+  s.camera.projection = ProjectionKind::Parallel;
+  s.camera.parallelWidth = parallelWidth;
+  s.camera.eye = {0.0f, 0.0f, 5.0f};
+  s.camera.reference = {0.0f, 0.0f, 0.0f};
+  s.camera.up = {0.0f, 1.0f, 0.0f};
+  s.camera.near = 0.1f;
+  s.camera.far = 20.0f;
+  s.background = glm::vec3(0.0f);
+  return s;
+}
+
+int emissiveMaterial(Scene& scene, glm::vec3 color) {
+  const int m = scene.addMaterial("emitter", glm::vec3(0.0f), 0.0f, 1.0f);
+  scene.materials[static_cast<std::size_t>(m)].emissive = color;
+  scene.materials[static_cast<std::size_t>(m)].doubleSided = true;
+  return m;
+}
+
+// Linear value of an 8-bit sRGB level.
+double linear(int level) {
+  const double c = level / 255.0;
+  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+}  // namespace
+
+TEST_CASE("recursive ray tracing: a tilted mirror shows what lies behind the camera where the law of reflection puts it") {
+  constexpr float kDeg = std::numbers::pi_v<float> / 180.0f;
+  Scene scene;
+  const int mirror = scene.addMaterial("mirror", glm::vec3(1.0f), 1.0f, 0.0f);  // k_r = m·(1 - r)·O_s = 1
+  // The plane z = 0 turned 22.5° about y: its normal (sin α, 0, cos α) sends the rays of the -z view to (sin 2α, 0, cos 2α).
+  scene.addObject(makePlane(1), mirror, rotationY(22.5f * kDeg) * rotationX(std::numbers::pi_v<float> / 2.0f) * scaling(glm::vec3(3.0f)));
+  // A red strip on the plane x = 3 between z = 1 and 2, facing the mirror, edge-on to the camera.
+  scene.addObject(makePlane(1), emissiveMaterial(scene, {1.0f, 0.0f, 0.0f}),
+                  translation({3.0f, 0.0f, 1.5f}) * rotationZ(std::numbers::pi_v<float> / 2.0f) * scaling({3.0f, 1.0f, 0.5f}));
+  const RenderSettings s = unlitParallel(80, 8, 4.0f);
+  const Image image = makeRayRenderer(2)->render(scene, buildFrameInputs(scene, s)).image;
+  // A ray at x0 meets the mirror at z0 = -x0·tan α and x = 3 at z0 + (3 - x0): the strip for x0 in [1/(1 + tan α), 2/(1 + tan α)] = [0.707, 1.414],
+  // pixel columns 54 to 67 (centres x = -2 + (px + 0.5)·4/80).
+  for (int px = 0; px < 80; ++px) {
+    CAPTURE(px);
+    const bool red = px >= 54 && px <= 67;
+    CHECK(image.at(px, 4).r == (red ? 255 : 0));
+  }
+}
+
+TEST_CASE("recursive ray tracing: a glass slab displaces what is behind it by the slab formula, and Beer's law dims it") {
+  constexpr float kDeg = std::numbers::pi_v<float> / 180.0f;
+  constexpr float theta = 30.0f * kDeg, n = 1.5f;
+  Scene scene;
+  const int glass = scene.addMaterial("glass", glm::vec3(1.0f), 0.0f, 0.0f);
+  scene.materials[static_cast<std::size_t>(glass)].transmission = 1.0f;
+  scene.materials[static_cast<std::size_t>(glass)].ior = n;
+  // A slab 1 thick, its faces' normals turned 30° about y from ±z; behind it, the half plane x < 0 glowing white.
+  scene.addObject(makeCube(), glass, rotationY(theta) * scaling({6.0f, 6.0f, 0.5f}));
+  scene.addObject(makePlane(1), emissiveMaterial(scene, glm::vec3(1.0f)),
+                  translation({-5.0f, 0.0f, -3.0f}) * rotationX(std::numbers::pi_v<float> / 2.0f) * scaling({5.0f, 1.0f, 5.0f}));
+  const RenderSettings s = unlitParallel(400, 4, 4.0f);  // 0.01 world units a pixel
+  const Image image = makeRayRenderer(2)->render(scene, buildFrameInputs(scene, s)).image;
+  // d = h·sin(θ1 - θ2)/cos θ2 across the ray, here along x, toward -x inside the slab: the edge at x = 0 shows at x = +d.
+  const double theta2 = std::asin(std::sin(theta) / n);
+  const double d = std::sin(theta - theta2) / std::cos(theta2);
+  const double bright = linear(image.at(0, 2).r);
+  REQUIRE(bright > 0.5);
+  double edge = -1;  // where the level falls through half the bright one, between pixel centres
+  for (int px = 1; px < 400 && edge < 0; ++px) {
+    const double a = linear(image.at(px - 1, 2).r), b = linear(image.at(px, 2).r);
+    if (a >= 0.5 * bright && b < 0.5 * bright) edge = -2.0 + (px - 0.5 + (a - 0.5 * bright) / (a - b)) * 0.01;
+  }
+  std::printf("glass slab, 30 degrees, n = 1.5, 1 thick: the edge moves %.4f, the slab formula says %.4f\n", edge, d);
+  CHECK(std::abs(edge - d) < 0.01);  // within a pixel
+
+  // Straight on, a slab that keeps half the light per unit of distance: (1 - F0)² through two faces, times e^(-σ·1) = 0.5.
+  scene.materials[static_cast<std::size_t>(glass)].attenuationColor = glm::vec3(0.5f);
+  scene.materials[static_cast<std::size_t>(glass)].attenuationDistance = 1.0f;
+  scene.instances[0].worldFromModel = scaling({6.0f, 6.0f, 0.5f});
+  scene.identity.renew();
+  const Image dimmed = makeRayRenderer(2)->render(scene, buildFrameInputs(scene, s)).image;
+  const double F0 = 0.04;
+  CHECK(linear(dimmed.at(50, 2).r) == doctest::Approx((1 - F0) * (1 - F0) * 0.5).epsilon(0.01));
+}
+
+TEST_CASE("recursive ray tracing: ray.depth and ray.minContribution stop the tree between two facing mirrors") {
+  Scene scene;
+  const int mirror = scene.addMaterial("half mirror", glm::vec3(1.0f), 1.0f, 0.0f);
+  // Two mirrors facing each other across the view: z = -1 facing +z and z = 4 facing -z, the camera between them.
+  scene.addObject(makePlane(1), mirror, translation({0.0f, 0.0f, -1.0f}) * rotationX(std::numbers::pi_v<float> / 2.0f) * scaling(glm::vec3(5.0f)));
+  scene.addObject(makePlane(1), mirror, translation({0.0f, 0.0f, 4.0f}) * rotationX(-std::numbers::pi_v<float> / 2.0f) * scaling(glm::vec3(5.0f)));
+  RenderSettings s = unlitParallel(4, 4, 2.0f);
+  s.camera.eye = {0.0f, 0.0f, 2.0f};
+  s.camera.near = 0.01f;
+  const auto reflectedRays = [&](int depth, float minContribution, float reflectivity) {
+    s.ray.depth = depth;
+    s.ray.minContribution = minContribution;
+    s.material.reflectivity = reflectivity;
+    const RenderResult result = makeRayRenderer(1)->render(scene, buildFrameInputs(scene, s));
+    const std::string& tree = result.notes.back();
+    CAPTURE(tree);
+    const std::size_t at = tree.find(" reflected");
+    REQUIRE(at != std::string::npos);
+    return std::stol(tree.substr(tree.rfind(' ', at - 1) + 1, at));
+  };
+  // Every primary ray hits a mirror; each level below it reflects once more.
+  CHECK(reflectedRays(1, 0.0f, 1.0f) == 0);
+  CHECK(reflectedRays(3, 0.0f, 1.0f) == 16 * 2);
+  CHECK(reflectedRays(6, 0.0f, 1.0f) == 16 * 5);
+  // k_r = 0.5: weights 0.5, 0.25, 0.125 pass 0.1; 0.0625 does not.
+  CHECK(reflectedRays(16, 0.1f, 0.5f) == 16 * 3);
+}
