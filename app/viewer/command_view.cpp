@@ -17,6 +17,7 @@ struct ViewCommandOptions {
   int frames = 3;
   bool withPanel = false;
   bool reference = false;
+  bool rayReference = false;
 };
 
 }  // namespace
@@ -32,6 +33,8 @@ Command addViewCommand(CLI::App& app) {
   command->add_flag("--with-panel", options->withPanel, "--screenshot writes the whole window, panel included")->needs(screenshot);
   command->add_flag("--reference", options->reference,
                     "render the CPU reference after every change; --screenshot waits for it and prints its figures");
+  command->add_flag("--ray-reference", options->rayReference,
+                    "the reference is the ray tracer (shadow rays, reflections, refraction), not the CPU rasterizer");
   return [options]() {
     viewer::ViewerOptions view;
     view.scene = std::make_shared<const Scene>(loadScene(options->common.scenePath));
@@ -44,6 +47,7 @@ Command addViewCommand(CLI::App& app) {
     view.frames = options->frames;
     view.screenshotWithPanel = options->withPanel;
     view.followReference = options->reference;
+    view.rayReference = options->rayReference;
     return viewer::runViewer(view);
   };
 }

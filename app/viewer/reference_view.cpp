@@ -43,8 +43,8 @@ void drawComparedImage(const char* title, const ImageTexture& texture, ImVec2 si
 
 }  // namespace
 
-ReferenceView::ReferenceView(const gl::GlFunctions& gl, int threads, bool follow)
-    : worker_(threads), follow_(follow), glTexture_(gl), cpuTexture_(gl), heatTexture_(gl) {}
+ReferenceView::ReferenceView(const gl::GlFunctions& gl, int threads, bool follow, bool rayTraced)
+    : worker_(threads), follow_(follow), glTexture_(gl), cpuTexture_(gl), heatTexture_(gl), rayTraced_(rayTraced) {}
 
 void ReferenceView::update(std::uint64_t version, const std::function<ReferenceRequest()>& makeRequest) {
   if (std::optional<ReferenceResult> finished = worker_.take()) {
@@ -61,21 +61,38 @@ void ReferenceView::update(std::uint64_t version, const std::function<ReferenceR
   const bool wanted = requested_ || (follow_ && !isCurrent(version));
   if (!wanted) return;
   if (submittedVersion_ != version) {
-    worker_.submit(makeRequest());
+    ReferenceRequest request = makeRequest();
+    request.rayTraced = rayTraced_;
+    worker_.submit(std::move(request));
     submittedVersion_ = version;
   }
   requested_ = false;
 }
 
 void ReferenceView::drawControls(std::uint64_t version) {
-  ImGui::TextWrapped("The CPU reference rasterizer renders the frame on screen on a thread of its own; the figures compare it with the GL image.");
+  ImGui::TextWrapped("The CPU reference rasterizer, or the ray tracer, renders the frame on screen on a thread of its own; the figures compare it "
+                     "with the GL image.");
   if (ImGui::Button("Render the reference")) requested_ = true;
   ImGui::Checkbox("render it after every change", &follow_);
+  // The ray tracer as the reference: its exact shadow rays against the shadow maps (renderer/PIPELINE.md, section 10).
+  int reference = rayTraced_ ? 1 : 0;
+  const int before = reference;
+  ImGui::RadioButton("the CPU rasterizer", &reference, 0);
+  ImGui::SameLine();
+  ImGui::RadioButton("the ray tracer", &reference, 1);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("shadow rays, reflections and refraction: the difference shows where shadow maps are wrong (acne, peter-panning, aliasing)");
+  if (reference != before) {
+    rayTraced_ = reference == 1;
+    result_.reset();  // the image shown was the other renderer's
+    submittedVersion_ = 0;
+    requested_ = true;
+  }
 
-  if (worker_.busy()) ImGui::TextUnformatted("rendering on the CPU...");
+  if (worker_.busy()) ImGui::TextUnformatted(rayTraced_ ? "ray tracing..." : "rendering on the CPU...");
   if (result_ && !result_->error.empty()) ImGui::TextColored(kErrorColor, "%s", result_->error.c_str());
   if (isCurrent(version) && result_->error.empty()) {
-    ImGui::Text("current: %.0f ms on the CPU", result_->milliseconds);
+    ImGui::Text("current: %.0f ms %s", result_->milliseconds, result_->rayTraced ? "ray tracing" : "on the CPU");
   } else if (result_ && result_->error.empty()) {
     ImGui::TextDisabled("out of date: the frame changed since");
   }
@@ -119,7 +136,8 @@ void ReferenceView::drawImages(std::uint64_t version) {
     const ImVec2 size(width, width * static_cast<float>(glTexture_.height()) / static_cast<float>(glTexture_.width()));
     drawComparedImage("OpenGL", glTexture_, size, *result_);
     ImGui::SameLine();
-    drawComparedImage(imagesShowHeatMap_ ? "difference (black: equal)" : "CPU reference", imagesShowHeatMap_ ? heatTexture_ : cpuTexture_, size,
+    drawComparedImage(imagesShowHeatMap_ ? "difference (black: equal)" : (result_->rayTraced ? "ray tracer" : "CPU reference"),
+                      imagesShowHeatMap_ ? heatTexture_ : cpuTexture_, size,
                       *result_);
   }
   ImGui::End();
@@ -145,9 +163,10 @@ std::string ReferenceView::summary() const {
   if (!result_->error.empty()) return "reference: " + result_->error;
   const DiffResult& d = result_->diff;
   char text[200];
-  std::snprintf(text, sizeof text, "reference: max difference %d, %" PRId64 " pixels differ (%.3f%%), PSNR %s, %s, CPU %.0f ms",
+  std::snprintf(text, sizeof text, "reference: max difference %d, %" PRId64 " pixels differ (%.3f%%), PSNR %s, %s, %s %.0f ms",
                 d.maxDifference, d.failingPixels, d.failingPercent, psnrText(d.psnr).c_str(),
-                std::string(kDiffStatusNames[static_cast<std::size_t>(d.status)]).c_str(), result_->milliseconds);
+                std::string(kDiffStatusNames[static_cast<std::size_t>(d.status)]).c_str(), result_->rayTraced ? "ray tracer" : "CPU",
+                result_->milliseconds);
   return text;
 }
 

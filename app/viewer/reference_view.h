@@ -23,7 +23,7 @@ inline constexpr std::array<std::string_view, static_cast<std::size_t>(MainView:
 class ReferenceView {
  public:
   // gl must outlive the view. threads: the CPU renderer's (0: one per core).
-  ReferenceView(const gl::GlFunctions& gl, int threads, bool follow);
+  ReferenceView(const gl::GlFunctions& gl, int threads, bool follow, bool rayTraced = false);
 
   // Once a frame. version: the frame on screen (what GlFrameRenderer's
   // framebuffer holds). Takes a finished result, dropping it when the frame
@@ -57,6 +57,7 @@ class ReferenceView {
   MainView mainView_ = MainView::OpenGl;
   bool showImages_ = true;
   bool imagesShowHeatMap_ = false;         // the images window's right image
+  bool rayTraced_ = false;                 // compare with the ray tracer, not the CPU rasterizer
 };
 
 }  // namespace facet::viewer

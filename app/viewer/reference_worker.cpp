@@ -8,10 +8,17 @@
 #include "compare/heat_map.h"
 #include "compare/image_diff.h"
 #include "cpu/cpu_renderer.h"
+#include "ray/ray_renderer.h"
 
 namespace facet::viewer {
 
-ReferenceWorker::ReferenceWorker(int threads) : renderer_(makeCpuRenderer(threads)), thread_([this] { run(); }) {}
+ReferenceWorker::ReferenceWorker(int threads) : renderer_(makeCpuRenderer(threads)), threads_(threads), thread_([this] { run(); }) {}
+
+Renderer& ReferenceWorker::rendererFor(const ReferenceRequest& request) {
+  if (!request.rayTraced) return *renderer_;
+  if (!rayRenderer_) rayRenderer_ = makeRayRenderer(threads_);
+  return *rayRenderer_;
+}
 
 ReferenceWorker::~ReferenceWorker() {
   {
@@ -48,7 +55,12 @@ void ReferenceWorker::run() {
     const ReferenceRequest request = std::move(*std::exchange(waiting_, std::nullopt));
     rendering_ = true;
     lock.unlock();
-    ReferenceResult result = render(*renderer_, request);
+    ReferenceResult result;
+    try {
+      result = render(rendererFor(request), request);
+    } catch (const std::exception& e) {  // the ray tracer's pool could not start
+      result = ReferenceResult{request.version, {}, {}, {}, {}, 0, std::string("ray tracer: ") + e.what(), true};
+    }
     lock.lock();
     rendering_ = false;
     finished_ = std::move(result);
@@ -58,6 +70,8 @@ void ReferenceWorker::run() {
 ReferenceResult ReferenceWorker::render(Renderer& renderer, const ReferenceRequest& request) {
   ReferenceResult result;
   result.version = request.version;
+  result.rayTraced = request.rayTraced;
+  const std::string who = request.rayTraced ? "ray tracer: " : "CPU reference: ";
   try {
     const auto start = std::chrono::steady_clock::now();
     Image cpuImage = renderer.render(*request.scene, request.frame).image;
@@ -67,9 +81,9 @@ ReferenceResult ReferenceWorker::render(Renderer& renderer, const ReferenceReque
     result.cpuImage = std::move(cpuImage);
     result.glImage = request.glImage;
   } catch (const std::bad_alloc&) {
-    result = ReferenceResult{request.version, {}, {}, {}, {}, 0, "CPU reference: out of memory"};
+    result = ReferenceResult{request.version, {}, {}, {}, {}, 0, who + "out of memory", request.rayTraced};
   } catch (const std::exception& e) {  // facet::Error and anything else: shown in the panel, never past the thread
-    result = ReferenceResult{request.version, {}, {}, {}, {}, 0, std::string("CPU reference: ") + e.what()};
+    result = ReferenceResult{request.version, {}, {}, {}, {}, 0, who + e.what(), request.rayTraced};
   }
   return result;
 }

@@ -1,5 +1,5 @@
 #pragma once
-// The CPU reference rasterizer on a thread of its own, so that the window
+// The CPU reference rasterizer (or the ray tracer) on a thread of its own, so that the window
 // never waits for it. The viewer submits a frame (its FrameInputs and the
 // image GlFrameRenderer drew from them) and keeps drawing; later it takes the
 // result: the CPU image, the difference heat map and compareImages' figures.
@@ -30,6 +30,7 @@ struct ReferenceRequest {
   std::shared_ptr<const Scene> scene;  // shared: the viewer may load another scene meanwhile
   FrameInputs frame;
   Image glImage;                       // what GlFrameRenderer drew from frame
+  bool rayTraced = false;              // compare with the ray tracer (renderer/ray) instead of the CPU rasterizer
 };
 
 struct ReferenceResult {
@@ -38,6 +39,7 @@ struct ReferenceResult {
   DiffResult diff;                     // expected: the CPU image; actual: the GL image
   double milliseconds = 0;             // the CPU render alone
   std::string error;                   // non-empty: why the render failed
+  bool rayTraced = false;              // cpuImage is the ray tracer's
 };
 
 class ReferenceWorker {
@@ -56,6 +58,7 @@ class ReferenceWorker {
  private:
   void run();
   static ReferenceResult render(Renderer& renderer, const ReferenceRequest& request);
+  Renderer& rendererFor(const ReferenceRequest& request);
 
   mutable std::mutex mutex_;
   std::condition_variable wake_;
@@ -64,6 +67,8 @@ class ReferenceWorker {
   bool rendering_ = false;
   bool stop_ = false;
   std::unique_ptr<Renderer> renderer_;  // used on the worker thread only
+  std::unique_ptr<Renderer> rayRenderer_;  // made there on the first ray-traced request
+  int threads_;
   std::thread thread_;                  // last: it starts once the members above exist
 };
 

@@ -171,7 +171,7 @@ int runViewer(const ViewerOptions& options) {
   const std::unique_ptr<WindowGlRenderer> rendererOwner = makeWindowGlRenderer(glfwGetProcAddress);
   WindowGlRenderer& renderer = *rendererOwner;
   ImGuiSession imgui(window.handle());
-  ReferenceView reference(gl.gl, referenceThreads(), options.followReference);
+  ReferenceView reference(gl.gl, referenceThreads(), options.followReference, options.rayReference);
   ViewInput input;
 
   DrawnFrame drawn;

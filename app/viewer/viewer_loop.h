@@ -18,6 +18,7 @@ struct ViewerOptions {
   int frames = 3;
   bool screenshotWithPanel = false;    // --with-panel: the batch screenshot is the whole window
   bool followReference = false;        // --reference: the CPU reference follows every change
+  bool rayReference = false;           // --ray-reference: the ray tracer is the reference
 };
 
 // Opens the window and runs until it closes (or, with batchScreenshot, until
