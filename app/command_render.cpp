@@ -4,14 +4,18 @@
 #include <cstdio>
 #include <memory>
 #include <new>
+#include <optional>
 #include <string>
 
 #include "command_line.h"
+#include "progress_bar.h"
 #include "commands.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
 #include "common/quote.h"
 #include "compare/depth_complexity.h"
+#include "compare/heat_map.h"
+#include "compare/image_diff.h"
 #include "cpu/cpu_renderer.h"
 #include "cpu/reference/reference_renderer.h"
 #include "image/png.h"
@@ -34,12 +38,24 @@ struct RenderOptions {
   std::string context = "osmesa";
   int threads = 0;
   std::string stage = "image";  // image, or overdraw (the depth complexity)
+  std::string shadowReport;     // a heat map of the frame against ray casting (renderer/PIPELINE.md, section 10)
 };
 
-std::unique_ptr<Renderer> makeRenderer(const RenderOptions& options) {
+// The frame's settings as ray casting draws them to compare a rasterized frame with: primary and
+// shadow rays only (ray.depth 1), one path through each pixel's centre, the builtin sphere as its triangles.
+RenderSettings rayCastingOf(RenderSettings settings) {
+  settings.ray.depth = 1;
+  settings.ray.samples = 1;
+  settings.ray.spheres = false;
+  settings.camera.aperture = 0.0f;
+  settings.antialiasing = AntialiasingSettings{};
+  return settings;
+}
+
+std::unique_ptr<Renderer> makeRenderer(const RenderOptions& options, ProgressBar& progress) {
   if (options.backend == "cpu") return makeCpuRenderer(options.threads);
   if (options.backend == "reference") return makeReferenceRenderer();
-  if (options.backend == "ray") return makeRayRenderer(options.threads);
+  if (options.backend == "ray") return makeRayRenderer(options.threads, [&progress](double done) { progress.update(done); });
 #if FACET_HAVE_GL
   GlContextKind kind = GlContextKind::OsMesa;
   if (options.context == "egl") kind = GlContextKind::Egl;
@@ -67,11 +83,20 @@ Command addRenderCommand(CLI::App& app) {
                       "image (the frame), or overdraw: the depth complexity, how many triangle fragments each pixel received before the "
                       "depth test, as a heat map (black 0, pale yellow the busiest pixel)")
       ->check(CLI::IsMember({"image", "overdraw"}));
+  command->add_option("--shadow-report", options->shadowReport,
+                      "also ray cast the frame (ray.depth 1, the same settings) and write a heat map of where the image differs from it to "
+                      "this PNG: where shadow maps are wrong (acne, peter-panning, aliasing), since rays cast exact shadows")
+      ->check([](const std::string& path) { return path.empty() ? std::string("--shadow-report: an empty file name") : std::string(); });
   return [options]() {
     const auto start = std::chrono::steady_clock::now();
     const std::string output = options->common.output.empty() ? "facet.png" : options->common.output;  // -o "" never parses
     // Before loading and rendering (minutes at large sizes): a frame nobody can write is not drawn.
     checkOutputFile(output, {options->common.scenePath, options->common.settingsPath});
+    if (!options->shadowReport.empty()) {
+      if (options->backend == "ray") throw UsageError("--shadow-report compares a rasterizer with ray casting: use it with --backend gl, cpu or reference");
+      if (options->stage != "image") throw UsageError("--shadow-report compares images: use it with --output-stage image");
+      checkOutputFile(options->shadowReport, {options->common.scenePath, options->common.settingsPath, output});
+    }
     Scene scene = loadScene(options->common.scenePath);
     const RenderSettings settings = settingsFor(options->common, scene);
     useDisplacement(scene, settings.material);
@@ -80,7 +105,8 @@ Command addRenderCommand(CLI::App& app) {
     for (const std::string& warning : scene.warnings) std::fprintf(stderr, "warning: %s: %s\n", scene.source.c_str(), warning.c_str());
     const FrameInputs frame = buildFrameInputs(scene, settings);
     for (const std::string& warning : frame.warnings) std::fprintf(stderr, "warning: %s: %s\n", scene.source.c_str(), warning.c_str());
-    std::unique_ptr<Renderer> renderer = makeRenderer(*options);
+    ProgressBar progress("ray tracing");  // drawn on a terminal only
+    std::unique_ptr<Renderer> renderer = makeRenderer(*options, progress);
     RenderResult result;
     DepthComplexity complexity;
     try {
@@ -96,6 +122,14 @@ Command addRenderCommand(CLI::App& app) {
     } catch (const std::bad_alloc&) {
       throw OutOfMemory("rendering " + scene.source + " (" + std::to_string(frame.width) + "x" + std::to_string(frame.height) + ")");
     }
+    progress.finish();  // the bar's line cleared before the report
+    std::optional<DiffResult> shadowDiff;
+    if (!options->shadowReport.empty()) {
+      const FrameInputs cast = buildFrameInputs(scene, rayCastingOf(settings));
+      const Image rays = makeRayRenderer(options->threads)->render(scene, cast).image;
+      shadowDiff = compareImages(rays, result.image, DiffThresholds{});
+      writePng(options->shadowReport, heatMap(rays, result.image, DiffThresholds{}));
+    }
     writePng(output, result.image);
     const double total = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
@@ -109,6 +143,10 @@ Command addRenderCommand(CLI::App& app) {
                   static_cast<unsigned long long>(complexity.fragments), static_cast<unsigned long long>(complexity.covered),
                   static_cast<long long>(frame.width) * frame.height, complexity.meanPerCovered(), complexity.max);
     for (const std::string& note : result.notes) std::printf("%s\n", note.c_str());
+    if (shadowDiff)
+      std::printf("shadow report: %lld pixels differ from ray casting, %lld by more than 1 level, at most %d; heat map written to %s\n",
+                  static_cast<long long>(shadowDiff->differingPixels), static_cast<long long>(shadowDiff->failingPixels), shadowDiff->maxDifference,
+                  options->shadowReport.c_str());
     std::printf("  %-28s %9.2f ms\n", "total (process)", total);
     std::printf("image written to %s\n", output.c_str());
     return 0;

@@ -489,7 +489,7 @@ class Gltf:
 
     def add_material(self, name, color, metallic=None, roughness=None, texture=None, double_sided=None, emissive=None,
                      alpha_mode=None, alpha_cutoff=None, metallic_roughness=None, occlusion=None, emissive_texture=None,
-                     normal=None):
+                     normal=None, extensions=None):
         """A material; metallic, roughness, doubleSided, alphaMode and
         alphaCutoff left out when None (glTF's defaults: 1, 1, false, OPAQUE, 0.5).
         occlusion: (texture, strength); normal: (texture, scale)."""
@@ -517,6 +517,10 @@ class Gltf:
             material["alphaMode"] = alpha_mode
         if alpha_cutoff is not None:
             material["alphaCutoff"] = num(alpha_cutoff)
+        if extensions is not None:  # e.g. KHR_materials_transmission, also listed in extensionsUsed
+            material["extensions"] = extensions
+            used = self.doc.setdefault("extensionsUsed", [])
+            used += [name for name in sorted(extensions) if name not in used]
         return self.append("materials", material)
 
     def read_at(self, material, set_index, *keys):
@@ -577,7 +581,9 @@ class Gltf:
         if kind == "spot":
             light["spot"] = {"innerConeAngle": num(math.radians(inner_deg)), "outerConeAngle": num(math.radians(outer_deg))}
         extension["lights"].append(light)
-        self.doc["extensionsUsed"] = ["KHR_lights_punctual"]
+        used = self.doc.setdefault("extensionsUsed", [])
+        if "KHR_lights_punctual" not in used:
+            used.append("KHR_lights_punctual")
         rotation = look_at(position, target) if target is not None else None
         return self.add_node(name, translation=position, rotation=rotation,
                              extensions={"KHR_lights_punctual": {"light": len(extension["lights"]) - 1}})
@@ -1421,6 +1427,97 @@ def texture():
     return g
 
 
+def glass(ior=1.5, transmission=1.0, attenuation=None):
+    """The extensions of a transmissive material: KHR_materials_transmission,
+    KHR_materials_ior and, given (colour, distance), KHR_materials_volume."""
+    extensions = {"KHR_materials_transmission": {"transmissionFactor": num(transmission)},
+                  "KHR_materials_ior": {"ior": num(ior)}}
+    if attenuation is not None:
+        extensions["KHR_materials_volume"] = {"attenuationColor": nums(attenuation[0]), "attenuationDistance": num(attenuation[1]),
+                                              "thicknessFactor": num(1.0)}
+    return extensions
+
+
+def checker_floor(g, name="checker floor", size=8.0, repeat=8.0):
+    image = g.add_image("checker 64x64", png(64, 64, checker(64, 8, (40, 40, 46), (225, 222, 210))))
+    texture = g.add_texture(image, g.add_sampler(LINEAR, LINEAR_MIPMAP_LINEAR, REPEAT, REPEAT))
+    material = g.add_material(name, (1, 1, 1, 1), 0.0, 0.9, texture=texture)
+    return g.add_node(name, g.add_mesh(name, g.primitive(plane(size, size, repeat), material)))
+
+
+def reflection():
+    g = Gltf("Recursive ray tracing, reflection (with --backend ray): two parallel mirrors, one ahead of the camera "
+             "and one behind it, face each other across a checker floor with a red ball, a blue post and a gold "
+             "sphere between them. Each mirror shows the other's image of the room again and again, smaller each "
+             "time, once more for each level of ray.depth (1: no reflected rays, the mirrors lit as plain "
+             "metal; 5, the default: four images deep, then the deepest mirror as plain metal). The polished gold "
+             "sphere (metallic, roughness 0.15, so k_r = 0.85 O_d) mirrors the room tinted gold; with --set "
+             "ray.gloss=true and ray.samples=64 its reflection spreads over its Phong lobe. The rasterizers draw "
+             "the mirrors as plain metal.")
+    mirror = g.add_material("mirror", (0.92, 0.94, 0.95, 1), 1.0, 0.0)
+    g.add_node("back mirror", g.add_mesh("back mirror", g.primitive(quad(5.0, 2.6), mirror)), translation=(0, 1.3, -2.0))
+    g.add_node("front mirror", g.add_mesh("front mirror", g.primitive(quad(5.0, 2.6), mirror)), translation=(0, 1.3, 5.0),
+               rotation=axis_angle((0, 1, 0), 180))
+    red = g.add_material("red ball", (0.85, 0.1, 0.08, 1), 0.0, 0.4)
+    g.add_node("red ball", g.add_mesh("red ball", g.primitive(uv_sphere(0.35, 32, 16), red)), translation=(-0.9, 0.35, 0.2))
+    blue = g.add_material("blue post", (0.1, 0.25, 0.8, 1), 0.0, 0.6)
+    g.add_node("blue post", g.add_mesh("blue post", g.primitive(cylinder(0.15, 1.4, 24), blue)), translation=(1.0, 0.0, -0.9))
+    gold = g.add_material("polished gold", (1.0, 0.76, 0.33, 1), 1.0, 0.15)
+    g.add_node("gold sphere", g.add_mesh("gold sphere", g.primitive(uv_sphere(0.45, 48, 24), gold)), translation=(0.1, 0.45, 1.0))
+    floor = checker_floor(g, size=5.0, repeat=5.0)
+    g.doc["nodes"][floor]["scale"] = nums((1.0, 1.0, 1.4))
+    g.doc["nodes"][floor]["translation"] = nums((0.0, 0.0, 1.5))
+    g.add_camera("camera", (0.7, 1.35, 4.0), (0.0, 0.8, -2.0), yfov_deg=50)
+    g.add_light("key", "point", (0.5, 2.6, 1.8), intensity=9)
+    return g
+
+
+def refraction():
+    g = Gltf("Recursive ray tracing, refraction (with --backend ray): light bends by Snell's law at each glass "
+             "surface (KHR_materials_transmission 1, KHR_materials_ior). Left: a clear slab (n = 1.5) turned 35 "
+             "degrees in front of a striped wall; the stripes seen through it are displaced sideways by "
+             "d = h sin(theta1 - theta2)/cos(theta2) and continue parallel, as the slab formula says. Middle: a ball "
+             "of tinted glass (KHR_materials_volume: attenuationColor (0.4, 0.8, 0.5) after 0.5 m), darker where the "
+             "rays inside it run longer (Beer's law), the floor upside down in it. Right: a diamond-like ball "
+             "(n = 2.4) whose rays reflect totally inside it where they meet its surface past the critical angle "
+             "(render prints the count of total internal reflections). The rasterizers draw the glass opaque.")
+    stripes = g.add_image("stripes 64x8", png(64, 8, lambda x, y: (30, 30, 34) if (x // 8) % 2 else (235, 228, 205)))
+    striped = g.add_material("striped wall", (1, 1, 1, 1), 0.0, 0.9,
+                             texture=g.add_texture(stripes, g.add_sampler(LINEAR, LINEAR_MIPMAP_LINEAR, REPEAT, REPEAT)))
+    wall = quad(6.0, 2.5)
+    wall = Mesh(wall.positions, wall.normals, wall.indices, [(0, 1), (6, 1), (6, 0), (0, 0)])
+    g.add_node("striped wall", g.add_mesh("striped wall", g.primitive(wall, striped)), translation=(0, 1.25, -1.6))
+    clear = g.add_material("clear glass slab", (1, 1, 1, 1), 0.0, 0.0, extensions=glass(1.5))
+    g.add_node("glass slab", g.add_mesh("glass slab", g.primitive(cube(1.0), clear)), translation=(-1.5, 0.7, -0.3),
+               rotation=axis_angle((0, 1, 0), 35), scale=(1.1, 1.4, 0.25))
+    tinted = g.add_material("tinted glass", (1, 1, 1, 1), 0.0, 0.0, extensions=glass(1.5, attenuation=((0.4, 0.8, 0.5), 0.5)))
+    g.add_node("tinted ball", g.add_mesh("tinted ball", g.primitive(uv_sphere(0.5, 48, 24), tinted)), translation=(0.1, 0.5, 0.1))
+    diamond = g.add_material("diamond", (1, 1, 1, 1), 0.0, 0.0, extensions=glass(2.4))
+    g.add_node("diamond ball", g.add_mesh("diamond ball", g.primitive(uv_sphere(0.4, 48, 24), diamond)), translation=(1.5, 0.4, 0.0))
+    checker_floor(g, size=6.0, repeat=6.0)
+    g.add_camera("camera", (0.0, 1.6, 4.0), (0.0, 0.6, -0.4), yfov_deg=45)
+    g.add_light("key", "point", (-1.0, 3.2, 2.5), intensity=14)
+    return g
+
+
+def depth_of_field():
+    g = Gltf("Stochastic ray tracing, depth of field (with --backend ray --set camera.aperture=0.08 --set "
+             "ray.samples=64): a row of seven coloured posts receding from 2 m to 8 m, on a checker floor. The "
+             "thin lens keeps the eye depth camera.focusDistance sharp (0, the default: autofocus on what the image's centre "
+             "shows, the fourth post) "
+             "and spreads a point at depth z over a circle of radius aperture |z - f| / f; with aperture 0 (the "
+             "default) every post is sharp, as the rasterizers draw it.")
+    colors = ((0.85, 0.15, 0.1), (0.9, 0.5, 0.1), (0.85, 0.8, 0.15), (0.2, 0.7, 0.25), (0.15, 0.6, 0.8), (0.2, 0.3, 0.85), (0.6, 0.25, 0.8))
+    for k, color in enumerate(colors):
+        material = g.add_material("post %d" % k, color + (1,), 0.0, 0.5)
+        g.add_node("post %d" % k, g.add_mesh("post %d" % k, g.primitive(cylinder(0.12, 1.0, 24), material)),
+                   translation=(-0.9 + 0.3 * k, 0.0, 2.0 - 1.0 * k))
+    checker_floor(g, size=12.0, repeat=12.0)
+    g.add_camera("camera", (0.0, 0.9, 4.0), (0.0, 0.5, -1.0), yfov_deg=40)
+    g.add_light("key", "point", (2.0, 4.0, 3.0), intensity=30)
+    return g
+
+
 SCENES = [
     (MATERIALS_DIR, "sparse.gltf", sparse),
     (MATERIALS_DIR, "textured_wraps.gltf", textured_wraps),
@@ -1448,6 +1545,9 @@ SCENES = [
     (ASSETS_DIR, "painter.gltf", painter),
     (ASSETS_DIR, "transparency.gltf", transparency),
     (ASSETS_DIR, "antialiasing.gltf", antialiasing),
+    (ASSETS_DIR, "reflection.gltf", reflection),
+    (ASSETS_DIR, "refraction.gltf", refraction),
+    (ASSETS_DIR, "depth_of_field.gltf", depth_of_field),
 ]
 
 

@@ -93,6 +93,7 @@ void ReferenceView::drawControls(std::uint64_t version) {
   if (result_ && !result_->error.empty()) ImGui::TextColored(kErrorColor, "%s", result_->error.c_str());
   if (isCurrent(version) && result_->error.empty()) {
     ImGui::Text("current: %.0f ms %s", result_->milliseconds, result_->rayTraced ? "ray tracing" : "on the CPU");
+    if (result_->preview) ImGui::TextDisabled("one path a pixel so far; refining to ray.samples...");
   } else if (result_ && result_->error.empty()) {
     ImGui::TextDisabled("out of date: the frame changed since");
   }

@@ -40,6 +40,8 @@ class ReferenceView {
 
   // A result (or an error) for this version is in: what --screenshot waits for.
   bool isCurrent(std::uint64_t version) const { return result_ && result_->version == version; }
+  // And not the ray tracer's one-path preview: the figures are the frame's.
+  bool isFinal(std::uint64_t version) const { return isCurrent(version) && !result_->preview; }
   bool busy() const { return worker_.busy(); }
   // One line of figures ("max difference 1, ..."), or the error.
   std::string summary() const;

@@ -57,7 +57,24 @@ void ReferenceWorker::run() {
     lock.unlock();
     ReferenceResult result;
     try {
-      result = render(rendererFor(request), request);
+      Renderer& renderer = rendererFor(request);
+      // The ray tracer refines: one path a pixel first, shown while the frame's ray.samples trace.
+      if (request.rayTraced && request.frame.ray.samples > 1) {
+        ReferenceRequest preview = request;
+        preview.frame.ray.samples = 1;
+        ReferenceResult first = render(renderer, preview);
+        first.preview = true;
+        lock.lock();
+        finished_ = std::move(first);
+        const bool newer = waiting_.has_value();
+        lock.unlock();
+        if (newer) {  // the frame changed meanwhile: the full render would be dropped
+          lock.lock();
+          rendering_ = false;
+          continue;
+        }
+      }
+      result = render(renderer, request);
     } catch (const std::exception& e) {  // the ray tracer's pool could not start
       result = ReferenceResult{request.version, {}, {}, {}, {}, 0, std::string("ray tracer: ") + e.what(), true};
     }

@@ -40,6 +40,7 @@ struct ReferenceResult {
   double milliseconds = 0;             // the CPU render alone
   std::string error;                   // non-empty: why the render failed
   bool rayTraced = false;              // cpuImage is the ray tracer's
+  bool preview = false;                // one path a pixel, while the frame's ray.samples trace
 };
 
 class ReferenceWorker {

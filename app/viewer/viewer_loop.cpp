@@ -227,7 +227,7 @@ int runViewer(const ViewerOptions& options) {
     imgui.render();
 
     // --screenshot: after `frames` frames (and the reference, when asked for), before the swap
-    if (batch && --framesLeft <= 0 && (!options.followReference || reference.isCurrent(drawn.version))) {
+    if (batch && --framesLeft <= 0 && (!options.followReference || reference.isFinal(drawn.version))) {
       const Image image = options.screenshotWithPanel ? readWindow(gl, width, height) : drawn.image;
       writePng(options.batchScreenshot, image);
       std::printf("screenshot written to %s: %dx%d, %d frames, GL frame %.1f ms (median)\n", options.batchScreenshot.c_str(), image.width(),

@@ -33,4 +33,19 @@ Ray primaryRay(const FrameInputs& frame, int px, int py, glm::vec2 offset) {
   return ray;
 }
 
+Ray centreRay(const FrameInputs& frame) {
+  return primaryRay(frame, frame.width / 2, frame.height / 2,
+                    glm::vec2(frame.width % 2 == 0 ? -0.5f : 0.0f, frame.height % 2 == 0 ? -0.5f : 0.0f));
+}
+
+Ray throughLens(const FrameInputs& frame, const Ray& pinhole, glm::vec2 disk, float f) {
+  if (!(frame.camera.aperture > 0.0f) || !(f > 0.0f)) return pinhole;
+  const glm::mat3 worldFromEye = glm::transpose(glm::mat3(frame.eyeFromWorld));
+  const glm::vec3 focus = pinhole.origin + f * pinhole.direction;
+  Ray ray = pinhole;
+  ray.origin = pinhole.origin + frame.camera.aperture * (disk.x * worldFromEye[0] + disk.y * worldFromEye[1]);
+  ray.direction = (focus - ray.origin) / f;
+  return ray;
+}
+
 }  // namespace facet::ray

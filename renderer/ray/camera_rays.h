@@ -17,4 +17,16 @@ namespace facet::ray {
 // +z. t runs from N to F, the rasterizers' clipping planes.
 Ray primaryRay(const FrameInputs& frame, int px, int py, glm::vec2 offset = glm::vec2(0.0f));
 
+// The thin lens (depth of field, `camera.aperture`): the pinhole ray moved
+// to the point `disk` (of the unit disk) of a lens of that radius around its
+// origin, in the image plane's directions, and turned through the point it
+// reached at the eye depth in focus f. Its direction still has eye-space
+// z = 1, so t stays the eye depth. The pinhole ray itself where the aperture
+// or f is 0.
+Ray throughLens(const FrameInputs& frame, const Ray& pinhole, glm::vec2 disk, float focus);
+
+// The ray through the image's centre (between pixels where a side is even),
+// which autofocus follows.
+Ray centreRay(const FrameInputs& frame);
+
 }  // namespace facet::ray

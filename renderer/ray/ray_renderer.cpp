@@ -6,6 +6,7 @@
 #include <mutex>
 #include <string>
 #include <thread>
+#include <utility>
 
 #include "common/error.h"
 #include "common/quote.h"
@@ -33,8 +34,8 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 
 class RayRenderer final : public Renderer {
  public:
-  explicit RayRenderer(int threads)
-      : pool_(threads > 0 ? threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()))) {}
+  RayRenderer(int threads, RenderProgress progress)
+      : pool_(threads > 0 ? threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()))), progress_(std::move(progress)) {}
 
   std::string description() const override { return "ray tracer, " + countOf(static_cast<std::size_t>(pool_.size()), "thread"); }
 
@@ -45,16 +46,23 @@ class RayRenderer final : public Renderer {
       throw Error("settings key 'antialiasing.pattern': area is the CPU rasterizer's exact coverage; the ray tracer samples grid or jittered");
     const RayTracer tracer(traced, frame);
     const auto start = std::chrono::steady_clock::now();
-    // One sample at each pixel's centre, held straight; or the frame's sample offsets, summed premultiplied.
-    const std::vector<glm::vec2> offsets = frame.samples.empty() ? std::vector<glm::vec2>{glm::vec2(0.0f)} : frame.samples;
-    const bool summed = !frame.samples.empty();
+    // Paths per pixel: ray.samples, each jittered over the pixel; with one, the antialiasing
+    // offsets (the pixel's centre, or the rasterizers' grid or jittered samples). One is held
+    // straight, several are summed premultiplied.
+    const int paths = frame.ray.samples > 1 ? frame.ray.samples : std::max<int>(1, static_cast<int>(frame.samples.size()));
+    const bool summed = paths > 1;
+    const auto seed = static_cast<std::uint32_t>(frame.ray.seed);
     color_.reset(frame.width, frame.height, glm::vec4(0.0f));
     RayStatistics statistics;
     std::mutex merging;
     forEachPixel(frame, [&](int x, int y, RayStatistics& local) {
+      const auto pixel = static_cast<std::uint32_t>(y) * static_cast<std::uint32_t>(frame.width) + static_cast<std::uint32_t>(x);
       glm::vec4 sum(0.0f);
-      for (const glm::vec2 offset : offsets) {
-        const glm::vec4 held = tracer.pixel(x, y, offset, local);
+      for (int k = 0; k < paths; ++k) {
+        ray::PathSampler sampler(seed, pixel, static_cast<std::uint32_t>(k));
+        const glm::vec2 offset = frame.ray.samples > 1 ? ray::pixelJitter(k, paths, sampler.uniform2())
+                                                       : (frame.samples.empty() ? glm::vec2(0.0f) : frame.samples[static_cast<std::size_t>(k)]);
+        const glm::vec4 held = tracer.pixel(x, y, offset, sampler, local);
         sum = summed ? sum + cpu::premultipliedOf(held, Blending::Straight) : held;
       }
       color_.at(x, y) = sum;
@@ -62,9 +70,9 @@ class RayRenderer final : public Renderer {
       const std::lock_guard<std::mutex> lock(merging);
       statistics.add(local);
     });
-    result.timings.push_back({"ray tracing" + (summed ? " (" + std::to_string(offsets.size()) + " samples)" : std::string()), millisecondsSince(start)});
+    result.timings.push_back({"ray tracing" + (summed ? " (" + std::to_string(paths) + " paths a pixel)" : std::string()), millisecondsSince(start)});
     const auto resolveStart = std::chrono::steady_clock::now();
-    cpu::resolve(pool_, color_, summed ? Blending::Premultiplied : Blending::Straight, static_cast<int>(offsets.size()), result.image);
+    cpu::resolve(pool_, color_, summed ? Blending::Premultiplied : Blending::Straight, paths, result.image);
     result.timings.push_back({"resolve", millisecondsSince(resolveStart)});
     result.notes.push_back(statistics.summary());
     return result;
@@ -110,19 +118,24 @@ class RayRenderer final : public Renderer {
   template <class Shade, class Merge>
   void forEachPixel(const FrameInputs& frame, Shade&& shade, Merge&& merge) {
     const int columns = (frame.width + kTile - 1) / kTile, rows = (frame.height + kTile - 1) / kTile;
-    std::atomic<int> next{0};
-    pool_.run([&](int) {
+    const int tiles = columns * rows;
+    std::atomic<int> next{0}, done{0};
+    pool_.run([&](int worker) {
       RayStatistics local;
-      for (int tile = next++; tile < columns * rows; tile = next++) {
+      for (int tile = next++; tile < tiles; tile = next++) {
         const int x0 = (tile % columns) * kTile, y0 = (tile / columns) * kTile;
         for (int y = y0; y < std::min(y0 + kTile, frame.height); ++y)
           for (int x = x0; x < std::min(x0 + kTile, frame.width); ++x) shade(x, y, local);
+        const int finished = ++done;
+        if (worker == 0 && progress_) progress_(static_cast<double>(finished) / static_cast<double>(tiles));  // the calling thread reports
       }
       merge(local);
     });
+    if (progress_) progress_(1.0);  // the last tile may have been another worker's
   }
 
   cpu::ThreadPool pool_;
+  RenderProgress progress_;
   FrameCheck check_;
   std::unique_ptr<TracedScene> traced_;
   ColorBuffer color_;
@@ -130,6 +143,6 @@ class RayRenderer final : public Renderer {
 
 }  // namespace
 
-std::unique_ptr<Renderer> makeRayRenderer(int threads) { return std::make_unique<RayRenderer>(threads); }
+std::unique_ptr<Renderer> makeRayRenderer(int threads, RenderProgress progress) { return std::make_unique<RayRenderer>(threads, std::move(progress)); }
 
 }  // namespace facet

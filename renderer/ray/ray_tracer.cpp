@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
 #include <glm/geometric.hpp>
 
@@ -44,7 +45,7 @@ std::string RayStatistics::summary() const {
 
 float shadowFactorLanes(const TracedShadows& shadows, const FrameLight& light, const ShadowSettings&, glm::vec3 P, glm::vec3, glm::vec3,
                         bool) {
-  return shadows.tracer->shadowFactor(light, P, shadows.geometricNormal, *shadows.statistics);
+  return shadows.tracer->shadowFactor(light, P, shadows.geometricNormal, *shadows.sampler, *shadows.statistics);
 }
 
 // Where a ray is in its tree.
@@ -57,10 +58,16 @@ struct RayTracer::Path {
   int px = 0, py = 0;                  // the pixel, for its background
   glm::vec2 offset{0.0f};
   const RayDifferentials* differentials = nullptr;  // primary hits: the neighbouring pixels' rays
+  PathSampler* sampler = nullptr;      // the path's random numbers
 };
 
 RayTracer::RayTracer(const TracedScene& scene, const FrameInputs& frame)
-    : scene_(scene), frame_(frame), offset_(frame.ray.epsilon * frame.sceneRadius) {}
+    : scene_(scene), frame_(frame), offset_(frame.ray.epsilon * frame.sceneRadius), focus_(frame.camera.focusDistance) {
+  if (focus_ > 0.0f || !(frame.camera.aperture > 0.0f)) return;
+  Hit hit;
+  const Ray centre = centreRay(frame);
+  focus_ = nearestHit(centre, true, hit) ? hit.t : (frame.eyeFromWorld * glm::vec4(frame.camera.reference, 1.0f)).z;
+}
 
 Ray RayTracer::leaving(glm::vec3 P, glm::vec3 Ng, glm::vec3 direction) const {
   Ray ray;
@@ -77,13 +84,27 @@ bool RayTracer::nearestHit(const Ray& ray, bool primary, Hit& hit) const {
   });
 }
 
-float RayTracer::shadowFactor(const FrameLight& light, glm::vec3 P, glm::vec3 Ng, RayStatistics& statistics) const {
+float RayTracer::shadowFactor(const FrameLight& light, glm::vec3 P, glm::vec3 Ng, PathSampler& sampler, RayStatistics& statistics) const {
   if (!light.hasShadowMap) return 1.0f;
   ++statistics.shadow;
-  const bool directional = light.light.kind == LightKind::Directional;
-  Ray ray = leaving(P, Ng, directional ? -light.light.direction : light.light.position - P);
+  const Light& l = light.light;
+  const bool directional = l.kind == LightKind::Directional;
+  // The point aimed at: the light's centre, or for an area light a point of its disk facing P
+  // (a sphere's silhouette), or a direction in a directional light's cone.
+  glm::vec3 target = l.position, direction = -l.direction;
+  if (l.radius > 0.0f) {
+    if (directional) {
+      direction = uniformCone(-l.direction, std::cos(l.radius * std::numbers::pi_v<float> / 180.0f), sampler.uniform2());
+    } else {
+      glm::vec3 a, b;
+      frameAround(cpu::normalize3(P - l.position), a, b);
+      const glm::vec2 d = diskPoint(sampler.uniform2());
+      target = l.position + l.radius * (d.x * a + d.y * b);
+    }
+  }
+  Ray ray = leaving(P, Ng, directional ? direction : target - P);
   if (!directional) {
-    ray.direction = light.light.position - ray.origin;  // t = 1 at the light
+    ray.direction = target - ray.origin;  // t = 1 at the light
     ray.tMax = 1.0f;
   }
   float S = 1.0f;
@@ -113,20 +134,77 @@ glm::vec4 RayTracer::trace(const Ray& ray, const Path& path, RayStatistics& stat
   const glm::vec3 P = scene_.pointOf(hit, ray);
   const glm::vec3 Ng = scene_.geometricNormal(hit, P);
   cpu::SurfacePoint p = scene_.surfaceAt(hit, ray, path.differentials);
-  // A transmissive surface keeps its highlights and loses the diffuse share it transmits: k_a, k_d times (1 - k_t).
-  const float kt = std::clamp(material.transmission, 0.0f, 1.0f);
-  cpu::SurfaceDraw draw = base;
-  CourseMaterial transmissive;
-  if (kt > 0.0f) {
-    transmissive = material;
-    transmissive.ka = transmissive.ka * (1.0f - kt);
-    transmissive.kd = transmissive.kd * (1.0f - kt);
-    draw.material = &transmissive;
-    draw.summed = cpu::laneMaterial(transmissive, draw.emissiveMap ? glm::vec3(0.0f) : transmissive.emissive);
-  }
-  TracedShadows shadows{this, Ng, &statistics};
   const bool sphere = scene_.primitives().isSphere(hit.primitive);
   const FrameInstance& instance = scene_.instanceOf(frame_, hit.primitive);
+
+  // The recursive terms' coefficients and directions first: k_r = reflectivity·O_s, k_t, and
+  // Snell's law with Fresnel's share or total internal reflection; then which rays are traced.
+  const float kt = std::clamp(material.transmission, 0.0f, 1.0f);
+  glm::vec3 kr{0.0f}, R{0.0f}, T{0.0f};
+  float kTransmit = 0.0f;
+  if (material.reflectivity > 0.0f || kt > 0.0f) {
+    const glm::vec3 D = cpu::normalize3(ray.direction);
+    // The normal the rays turn about, facing the incoming ray (the geometric one where the interpolated one does not).
+    glm::vec3 N = interpolatesNormals(frame_.shading) && !sphere ? cpu::shadingNormal(base, p) : (p.front ? Ng : -Ng);
+    if (!(glm::dot(N, D) < 0.0f)) N = glm::dot(Ng, D) < 0.0f ? Ng : -Ng;
+    const float m = material.metallic;
+    kr = material.reflectivity * (glm::vec3(1.0f - m) + m * cpu::baseColorAt(base, p));
+    kTransmit = kt;
+    if (kt > 0.0f) {
+      // Snell's law from n1 into n2: entering through a front face, leaving through a back one.
+      const float n1 = p.front ? 1.0f : material.ior, n2 = p.front ? material.ior : 1.0f;
+      const std::optional<Refraction> refraction = refracted(D, N, n1, n2);
+      if (!refraction) {  // total internal reflection: the transmitted share reflects
+        ++statistics.totalInternal;
+        kr = kr + glm::vec3(kt);
+        kTransmit = 0.0f;
+      } else {
+        T = refraction->T;
+        const float F = fresnelSchlick(n1, n2, -glm::dot(D, N), refraction->cosTransmitted);
+        kr = kr + glm::vec3(kt * F);
+        kTransmit = kt * (1.0f - F);
+        // Translucency: the transmitted ray spread over the Phong lobe of the surface's n about T (below the surface only).
+        if (frame_.ray.translucency) {
+          const glm::vec3 spread = phongLobe(T, material.shininess, path.sampler->uniform2());
+          if (glm::dot(spread, N) < 0.0f) T = spread;
+        }
+      }
+    }
+    R = reflected(D, N);
+    // Gloss: the reflected ray spread likewise about R (above the surface only).
+    if (frame_.ray.gloss && largest(kr) > 0.0f) {
+      const glm::vec3 spread = phongLobe(R, material.shininess, path.sampler->uniform2());
+      if (glm::dot(spread, N) > 0.0f) R = spread;
+    }
+  }
+  // A ray is traced below ray.depth and at a weight of at least ray.minContribution.
+  const auto traced = [&](bool wanted, glm::vec3 weight) {
+    if (!wanted) return false;
+    if (path.depth >= frame_.ray.depth) {
+      ++statistics.stoppedByDepth;
+      return false;
+    }
+    if (largest(path.weight * weight) < frame_.ray.minContribution) {
+      ++statistics.stoppedByContribution;
+      return false;
+    }
+    return true;
+  };
+  const bool reflects = traced(largest(kr) > 0.0f, kr), transmits = traced(kTransmit > 0.0f, glm::vec3(kTransmit));
+
+  // The local term: a surface loses the diffuse share it reflects or transmits as a traced ray, k_a and
+  // k_d times (1 - reflectivity) and (1 - k_t); its highlights stay. Where no ray is traced it keeps all of it.
+  cpu::SurfaceDraw draw = base;
+  CourseMaterial shared;
+  const float keep = (reflects ? 1.0f - material.reflectivity : 1.0f) * (transmits ? 1.0f - kt : 1.0f);
+  if (keep < 1.0f) {
+    shared = material;
+    shared.ka = shared.ka * keep;
+    shared.kd = shared.kd * keep;
+    draw.material = &shared;
+    draw.summed = cpu::laneMaterial(shared, draw.emissiveMap ? glm::vec3(0.0f) : shared.emissive);
+  }
+  TracedShadows shadows{this, Ng, &statistics, path.sampler};
   if (!interpolatesNormals(frame_.shading) && !sphere) {
     // Gouraud lights the triangle's vertices and weights them by the barycentrics; flat lights its centroid.
     const glm::vec3* corner = &scene_.primitives().triangleCorners[3 * static_cast<std::size_t>(hit.primitive)];
@@ -135,7 +213,7 @@ glm::vec4 RayTracer::trace(const Ray& ray, const Path& path, RayStatistics& stat
       const glm::vec3 centroid = (corner[0] + corner[1] + corner[2]) / 3.0f;
       p.lit = cpu::illuminate(frame_, shadows, draw.summed, centroid, side * Ng, cpu::viewVector<float>(frame_, centroid));
     } else {
-      const Mesh& mesh = *scene_.drawOf(hit.primitive).mesh;
+      const Mesh& mesh = *base.mesh;
       const std::uint32_t* index = &mesh.indices[scene_.primitive(hit.primitive).first];
       const float w[3] = {1.0f - hit.u - hit.v, hit.u, hit.v};
       cpu::Illumination sum;
@@ -154,60 +232,21 @@ glm::vec4 RayTracer::trace(const Ray& ray, const Path& path, RayStatistics& stat
   glm::vec3 color = cpu::shadeSurface(draw, shadows, p);
 
   // The recursive terms k_r·I_r + k_t·I_t.
-  if (material.reflectivity > 0.0f || kt > 0.0f) {
-    const glm::vec3 D = cpu::normalize3(ray.direction);
-    // The normal the rays turn about, facing the incoming ray (the geometric one where the interpolated one does not).
-    glm::vec3 N = interpolatesNormals(frame_.shading) ? cpu::shadingNormal(base, p) : (p.front ? Ng : -Ng);
-    if (sphere) N = p.front ? Ng : -Ng;
-    if (!(glm::dot(N, D) < 0.0f)) N = glm::dot(Ng, D) < 0.0f ? Ng : -Ng;
-    const float m = material.metallic;
-    const glm::vec3 Os = glm::vec3(1.0f - m) + m * cpu::baseColorAt(base, p);
-    glm::vec3 kr = material.reflectivity * Os;
-    float kTransmit = kt;
-    glm::vec3 T{0.0f};
-    if (kt > 0.0f) {
-      // Snell's law from n1 into n2: entering through a front face, leaving through a back one.
-      const float n1 = p.front ? 1.0f : material.ior, n2 = p.front ? material.ior : 1.0f;
-      const std::optional<Refraction> refraction = refracted(D, N, n1, n2);
-      if (!refraction) {  // total internal reflection: the transmitted share reflects
-        ++statistics.totalInternal;
-        kr = kr + glm::vec3(kt);
-        kTransmit = 0.0f;
-      } else {
-        T = refraction->T;
-        const float F = fresnelSchlick(n1, n2, -glm::dot(D, N), refraction->cosTransmitted);
-        kr = kr + glm::vec3(kt * F);
-        kTransmit = kt * (1.0f - F);
-      }
-    }
-    const bool reflects = largest(kr) > 0.0f, transmits = kTransmit > 0.0f;
-    if (path.depth >= frame_.ray.depth) {
-      statistics.stoppedByDepth += (reflects ? 1 : 0) + (transmits ? 1 : 0);
-    } else {
-      Path next;
-      next.depth = path.depth + 1;
-      next.primary = false;
-      if (reflects) {
-        next.weight = path.weight * kr;
-        next.medium = path.medium;
-        if (largest(next.weight) < frame_.ray.minContribution) {
-          ++statistics.stoppedByContribution;
-        } else {
-          ++statistics.reflected;
-          color = color + kr * glm::vec3(trace(leaving(P, Ng, reflected(D, N)), next, statistics));
-        }
-      }
-      if (transmits) {
-        next.weight = path.weight * kTransmit;
-        next.medium = p.front ? material.absorption : glm::vec3(0.0f);  // into the medium, or out of it
-        if (largest(next.weight) < frame_.ray.minContribution) {
-          ++statistics.stoppedByContribution;
-        } else {
-          ++statistics.transmitted;
-          color = color + kTransmit * glm::vec3(trace(leaving(P, Ng, T), next, statistics));
-        }
-      }
-    }
+  Path next;
+  next.depth = path.depth + 1;
+  next.primary = false;
+  next.sampler = path.sampler;
+  if (reflects) {
+    ++statistics.reflected;
+    next.weight = path.weight * kr;
+    next.medium = path.medium;
+    color = color + kr * glm::vec3(trace(leaving(P, Ng, R), next, statistics));
+  }
+  if (transmits) {
+    ++statistics.transmitted;
+    next.weight = path.weight * kTransmit;
+    next.medium = p.front ? material.absorption : glm::vec3(0.0f);  // into the medium, or out of it
+    color = color + kTransmit * glm::vec3(trace(leaving(P, Ng, T), next, statistics));
   }
   if (path.primary) color = cpu::fogged(frame_.fog, color, (frame_.eyeFromWorld * glm::vec4(P, 1.0f)).z);
   glm::vec4 result(color, 1.0f);
@@ -216,10 +255,10 @@ glm::vec4 RayTracer::trace(const Ray& ray, const Path& path, RayStatistics& stat
     ++statistics.continued;
     Ray behind = leaving(P, Ng, ray.direction);
     behind.tMax = ray.tMax - hit.t;
-    Path next = path;
-    next.continuation = true;
-    next.weight = path.weight * (1.0f - clampUnit(scene_.alphaAt(hit, ray)));
-    result = cpu::blend(trace(behind, next, statistics), color, scene_.alphaAt(hit, ray), Blending::Straight);
+    Path onward = path;
+    onward.continuation = true;
+    onward.weight = path.weight * (1.0f - clampUnit(scene_.alphaAt(hit, ray)));
+    result = cpu::blend(trace(behind, onward, statistics), color, scene_.alphaAt(hit, ray), Blending::Straight);
   }
   // Beer's law over the distance travelled inside a medium.
   if (largest(path.medium) > 0.0f) {
@@ -229,14 +268,16 @@ glm::vec4 RayTracer::trace(const Ray& ray, const Path& path, RayStatistics& stat
   return result;
 }
 
-glm::vec4 RayTracer::pixel(int px, int py, glm::vec2 offset, RayStatistics& statistics) const {
-  const Ray ray = primaryRay(frame_, px, py, offset);
+glm::vec4 RayTracer::pixel(int px, int py, glm::vec2 offset, PathSampler& sampler, RayStatistics& statistics) const {
+  const Ray ray = frame_.camera.aperture > 0.0f ? throughLens(frame_, primaryRay(frame_, px, py, offset), diskPoint(sampler.uniform2()), focus_)
+                                                : primaryRay(frame_, px, py, offset);
   const RayDifferentials differentials{primaryRay(frame_, px & ~1, py, offset), primaryRay(frame_, px | 1, py, offset),
                                        primaryRay(frame_, px, py & ~1, offset), primaryRay(frame_, px, py | 1, offset)};
   ++statistics.primary;
   Path path;
   path.px = px, path.py = py, path.offset = offset;
   path.differentials = &differentials;
+  path.sampler = &sampler;
   return trace(ray, path, statistics);
 }
 

@@ -13,6 +13,7 @@
 #include <glm/vec4.hpp>
 
 #include "pipeline/frame_inputs.h"
+#include "ray/sampling.h"
 #include "ray/traced_scene.h"
 
 namespace facet::ray {
@@ -38,6 +39,7 @@ struct TracedShadows {
   const class RayTracer* tracer = nullptr;
   glm::vec3 geometricNormal{0.0f};  // of the surface the shadow rays leave (the offset's direction)
   RayStatistics* statistics = nullptr;
+  PathSampler* sampler = nullptr;   // the path's numbers: a point of an area light
 };
 
 // S of a light at P: 0 behind an opaque surface, the product of the
@@ -50,9 +52,10 @@ class RayTracer {
  public:
   RayTracer(const TracedScene& scene, const FrameInputs& frame);
 
-  // Pixel (px, py) seen at `offset` from its centre: its linear colour and α,
-  // as the colour buffer holds them (straight).
-  glm::vec4 pixel(int px, int py, glm::vec2 offset, RayStatistics& statistics) const;
+  // Pixel (px, py) seen at `offset` from its centre by one path: its linear
+  // colour and α, as the colour buffer holds them (straight). The path's
+  // sampler places it on the lens and the lights and spreads its gloss.
+  glm::vec4 pixel(int px, int py, glm::vec2 offset, PathSampler& sampler, RayStatistics& statistics) const;
 
   // The triangle the pixel's primary ray keeps: 0 for none, else 1 + its
   // index in the frame (Renderer::visibleTriangles); a blended surface keeps none.
@@ -60,8 +63,13 @@ class RayTracer {
   // How many surfaces the pixel's primary ray crosses between N and F, the culled ones left out (depth complexity).
   std::uint32_t surfacesCrossed(int px, int py) const;
 
-  // S of `light` at P for shadow rays leaving a surface of geometric normal Ng.
-  float shadowFactor(const FrameLight& light, glm::vec3 P, glm::vec3 Ng, RayStatistics& statistics) const;
+  // The eye depth in focus: camera.focusDistance, or where it is 0 (autofocus)
+  // the depth the image's centre ray meets a surface at, else the reference point's.
+  float focus() const { return focus_; }
+
+  // S of `light` at P for a shadow ray leaving a surface of geometric normal
+  // Ng: toward the light's centre, or a point of its area drawn by `sampler`.
+  float shadowFactor(const FrameLight& light, glm::vec3 P, glm::vec3 Ng, PathSampler& sampler, RayStatistics& statistics) const;
 
  private:
   struct Path;
@@ -74,6 +82,7 @@ class RayTracer {
   const TracedScene& scene_;
   const FrameInputs& frame_;
   float offset_;  // ε·R
+  float focus_;
 };
 
 }  // namespace facet::ray

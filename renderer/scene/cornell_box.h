@@ -7,7 +7,8 @@ namespace facet {
 // (renderer/PIPELINE.md, section 10): white floor, ceiling and back wall, a
 // red wall on the left and a green one on the right, a mirror sphere
 // (metallic, smooth: k_r = O_d) and a glass sphere (transmission 1, index of
-// refraction 1.5), a point light under a glowing ceiling panel, and a camera
+// refraction 1.5), a spherical light (radius 0.08: the ray tracer's soft
+// shadows) under a glowing ceiling panel, and a camera
 // looking in through the open side. Built in code; the builtin spheres are
 // traced as spheres.
 Scene makeCornellBox();

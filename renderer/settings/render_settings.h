@@ -87,6 +87,9 @@ struct CameraSettings {
   float parallelWidth = 10.0f;            // W of the parallel box, world units; H = W / aspect
   float near = 0.1f;                      // N, eye-space distance
   float far = 100.0f;                     // F, eye-space distance
+  // The ray tracer's thin lens (renderer/PIPELINE.md, section 10): depth of field.
+  float aperture = 0.0f;                  // lens radius, world units; 0: a pinhole, everything sharp
+  float focusDistance = 0.0f;             // eye depth in focus, world units; 0: autofocus on the image's centre
 };
 
 // The course's procedural mapping (renderer/PIPELINE.md, section 8): a
@@ -199,7 +202,14 @@ struct RaySettings {
   float minContribution = 0.01f;  // a ray whose weight (largest channel) is below this is not traced
   float epsilon = 1e-4f;          // a new ray starts ε·R off the surface, R the scene's bounding radius
   bool spheres = true;            // the builtin sphere traced as a sphere, not its triangles
+  // Stochastic ray tracing: paths per pixel, each sampling the pixel, the
+  // lens, the lights' areas, the gloss and translucency lobes once, from a seed.
+  int samples = 1;
+  int seed = 1;
+  bool gloss = false;             // reflected rays spread by the surface's roughness
+  bool translucency = false;      // transmitted rays spread likewise
 };
+inline constexpr int kMaxRaySamples = 4096;
 
 struct RenderSettings {
   int width = 800;   // image size in pixels

@@ -33,6 +33,9 @@ void visitLight(Visitor& v, Light& l) {
   v.field({"attenuation", "c1, c2, c3 of f_att = min(1, 1/(c1 + c2 d + c3 d^2)), each >= 0", 0, 1e6}, l.attenuation);
   v.field({"spotCutoff", "spot cut-off angle beta in degrees", 0.1, 89.9}, l.spotCutoffDeg);
   v.field({"castsShadow", "render a shadow map for this light"}, l.castsShadow);
+  v.field({"radius", "ray: soft shadows from a sphere of this radius (point, spot; world units) or a cone of this half-angle (directional; degrees)",
+           0, 1e6},
+          l.radius);
 }
 
 template <class Visitor>
@@ -50,6 +53,9 @@ void visitSettings(Visitor& v, RenderSettings& s) {
     v.field({"parallelWidth", "width W of the parallel view box in world units", 1e-6, 1e9}, c.parallelWidth);
     v.field({"near", "N, near plane distance (> 0)", 1e-6, 1e9}, c.near);
     v.field({"far", "F, far plane distance (> near)", 1e-6, 1e9}, c.far);
+    v.field({"aperture", "ray: thin-lens radius in world units (depth of field); 0: a pinhole", 0, 1e6}, c.aperture);
+    v.field({"focusDistance", "ray: the eye depth in focus, world units; 0: autofocus on what the image's centre shows", 0, 1e9},
+            c.focusDistance);
   });
   v.choice({"lightSource", "auto: the scene's lights or one fitted to the scene; manual: the list in lights"}, s.lightSource, kSourceNames);
   v.lights("lights", s.lights);
@@ -134,6 +140,12 @@ void visitSettings(Visitor& v, RenderSettings& s) {
     v.field({"epsilon", "a ray leaving a surface starts epsilon R off it (R: the scene's bounding radius), against surface acne", 0, 0.1},
             r.epsilon);
     v.field({"spheres", "trace the builtin sphere as a sphere (the course's quadratic), not as its triangles"}, r.spheres);
+    v.field({"samples", "paths per pixel: each samples the pixel, the lens, the lights' areas and the gloss and translucency lobes once", 1,
+             kMaxRaySamples},
+            r.samples);
+    v.field({"seed", "the paths' generator seed (the same seed, the same image, whatever the threads)", 0, 16777216}, r.seed);
+    v.field({"gloss", "reflected rays spread over the Phong lobe of the surface's exponent n (glossy reflection)"}, r.gloss);
+    v.field({"translucency", "transmitted rays spread over the same lobe (translucency)"}, r.translucency);
   });
   v.field({"background", "linear RGB of empty pixels, each in [0, 1]", 0, 1, FieldKind::Color}, s.background);
   v.field({"backgroundAlpha", "alpha of empty pixels in the PNG: 1 opaque, 0 transparent (as F3D's --no-background)", 0, 1}, s.backgroundAlpha);

@@ -13,12 +13,15 @@
 #include <glm/geometric.hpp>
 
 #include "common/error.h"
+#include "cpu/thread_pool.h"
 #include "cpu/cpu_renderer.h"
 #include "math/transforms.h"
 #include "pipeline/frame_inputs.h"
 #include "ray/camera_rays.h"
 #include "ray/optics.h"
 #include "ray/ray_renderer.h"
+#include "ray/ray_tracer.h"
+#include "ray/traced_scene.h"
 #include "scene/cornell_box.h"
 #include "scene/default_scene.h"
 #include "scene/load_scene.h"
@@ -102,6 +105,23 @@ TEST_CASE("ray casting: the course's window at unit distance puts t at the eye d
     CHECK(window.x == doctest::Approx(pixel.x + 0.5).epsilon(1e-4));
     CHECK(window.y == doctest::Approx(pixel.y + 0.5).epsilon(1e-4));
   }
+}
+
+TEST_CASE("the thin lens: every lens ray of a pixel passes where its pinhole ray reaches the eye depth in focus, and t stays the eye depth") {
+  const Scene scene = makeDefaultScene();
+  RenderSettings s;
+  s.width = 64, s.height = 48;
+  s.camera.aperture = 0.3f;
+  s.camera.focusDistance = 4.0f;
+  const FrameInputs frame = buildFrameInputs(scene, s);
+  for (const glm::ivec2 pixel : {glm::ivec2(0, 0), glm::ivec2(63, 47), glm::ivec2(5, 40)})
+    for (const glm::vec2 disk : {glm::vec2(1.0f, 0.0f), glm::vec2(-0.6f, 0.7f), glm::vec2(0.0f, -1.0f)}) {
+      const ray::Ray pinhole = ray::primaryRay(frame, pixel.x, pixel.y), lens = ray::throughLens(frame, pinhole, disk, 4.0f);
+      const glm::vec3 focus = pinhole.origin + 4.0f * pinhole.direction, through = lens.origin + 4.0f * lens.direction;
+      CHECK(glm::length(through - focus) < 1e-5f * glm::length(focus));
+      CHECK(glm::length(lens.origin - pinhole.origin) == doctest::Approx(0.3f * glm::length(disk)));
+      CHECK((frame.eyeFromWorld * glm::vec4(lens.origin + 2.5f * lens.direction, 1.0f)).z == doctest::Approx(2.5f));
+    }
 }
 
 TEST_CASE("ray casting agrees with the rasterizer: triangles differ only on edges, colours within a bound, shadows off") {
@@ -295,4 +315,83 @@ TEST_CASE("recursive ray tracing: ray.depth and ray.minContribution stop the tre
   CHECK(reflectedRays(6, 0.0f, 1.0f) == 16 * 5);
   // k_r = 0.5: weights 0.5, 0.25, 0.125 pass 0.1; 0.0625 does not.
   CHECK(reflectedRays(16, 0.1f, 0.5f) == 16 * 3);
+}
+
+TEST_CASE("stochastic ray tracing: the same seed gives the same image whatever the threads, another seed another image") {
+  const Scene scene = makeCornellBox();
+  RenderSettings s;
+  s.width = 64, s.height = 48;
+  s.ray.samples = 4;
+  s.camera.aperture = 0.05f;
+  s.ray.gloss = true;
+  const FrameInputs frame = buildFrameInputs(scene, s);
+  const Image one = makeRayRenderer(1)->render(scene, frame).image, two = makeRayRenderer(2)->render(scene, frame).image;
+  CHECK(one == two);
+  s.ray.seed = 2;
+  CHECK(makeRayRenderer(2)->render(scene, buildFrameInputs(scene, s)).image != one);
+}
+
+TEST_CASE("stochastic ray tracing: an area light's penumbra spans what similar triangles say") {
+  // A light of radius r at height H over the floor; an opaque half plane x < 0 at height h between them.
+  constexpr float H = 4.0f, h = 2.0f, r = 0.5f;
+  Scene scene;
+  const int grey = scene.addMaterial("grey", glm::vec3(0.5f), 0.0f, 1.0f);
+  scene.addObject(makePlane(1), grey, scaling(glm::vec3(10.0f)));                                              // the floor
+  scene.addObject(makePlane(1), grey, translation({-5.0f, h, 0.0f}) * scaling({5.0f, 1.0f, 5.0f}));          // the occluder
+  RenderSettings s;
+  s.width = 8, s.height = 8;
+  s.lightSource = Source::Manual;
+  Light light;
+  light.position = {0.0f, H, 0.0f};
+  light.radius = r;
+  s.lights = {light};
+  const FrameInputs frame = buildFrameInputs(scene, s);
+  cpu::ThreadPool pool(1);
+  const ray::TracedScene traced(scene, frame, true, pool);
+  const ray::RayTracer tracer(traced, frame);
+  // The fraction of the light's disk a floor point at x sees, over 4096 paths.
+  const auto lit = [&](float x) {
+    ray::RayStatistics statistics;
+    double sum = 0;
+    for (std::uint32_t k = 0; k < 4096; ++k) {
+      ray::PathSampler sampler(1, 0, k);
+      sum += tracer.shadowFactor(frame.lights[0], {x, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, sampler, statistics);
+    }
+    return sum / 4096;
+  };
+  // The penumbra on the floor: |x| < r·h/(H - h) = 0.5; half the disk seen under the edge.
+  const float half = r * h / (H - h);
+  CHECK(lit(0.0f) == doctest::Approx(0.5).epsilon(0.05));
+  CHECK(lit(-1.05f * half) == 0.0);
+  CHECK(lit(1.05f * half) == 1.0);
+  CHECK(lit(-0.5f * half) < lit(0.0f));
+  CHECK(lit(0.5f * half) > lit(0.0f));
+}
+
+TEST_CASE("stochastic ray tracing: the thin lens keeps the plane in focus as the pinhole sees it, and blurs what is not") {
+  Scene scene;
+  const int white = emissiveMaterial(scene, glm::vec3(1.0f));
+  // Two glowing half planes facing the camera: x < 0 at the eye depth in focus (5), x > 0.5 at twice it.
+  scene.addObject(makePlane(1), white, translation({-2.0f, 0.0f, 0.0f}) * rotationX(std::numbers::pi_v<float> / 2.0f) * scaling({2.0f, 1.0f, 2.0f}));
+  scene.addObject(makePlane(1), white, translation({4.0f, 0.0f, -5.0f}) * rotationX(std::numbers::pi_v<float> / 2.0f) * scaling({3.5f, 1.0f, 4.0f}));
+  RenderSettings s = unlitParallel(200, 4, 4.0f);
+  s.camera.projection = ProjectionKind::Perspective;
+  s.camera.halfAngleDeg = 30.0f;
+  s.ray.samples = 1;
+  const Image pinhole = makeRayRenderer(2)->render(scene, buildFrameInputs(scene, s)).image;
+  s.camera.aperture = 0.2f;
+  s.camera.focusDistance = 5.0f;
+  s.ray.samples = 64;
+  const Image lens = makeRayRenderer(2)->render(scene, buildFrameInputs(scene, s)).image;
+  // In focus, every path of a pixel meets the plane where its pinhole ray does: the left edge is the pinhole's.
+  for (int px = 60; px < 100; ++px) CHECK(lens.at(px, 2).r == pinhole.at(px, 2).r);
+  // Out of focus, at depth 10: the far plane's edge at x = 0.5 spreads over a circle of confusion of radius
+  // A·(z - f)/f = 0.2 world units there, 0.2/(10·tan 30°)·100 = 3.5 pixels: graded pixels, not a step.
+  int graded = 0;
+  for (int px = 100; px < 200; ++px) graded += lens.at(px, 2).r > 10 && lens.at(px, 2).r < 245 ? 1 : 0;
+  int gradedPinhole = 0;
+  for (int px = 100; px < 200; ++px) gradedPinhole += pinhole.at(px, 2).r > 10 && pinhole.at(px, 2).r < 245 ? 1 : 0;
+  CHECK(gradedPinhole == 0);
+  CHECK(graded >= 4);
+  CHECK(graded <= 9);
 }
