@@ -41,9 +41,11 @@
 #endif
 
 #include "command_line.h"
+#include "bench_rays.h"
 #include "commands.h"
 #include "common/error.h"
 #include "cpu/cpu_renderer.h"
+#include "ray/ray_renderer.h"
 #include "image/png.h"
 #include "math/transforms.h"
 #include "pipeline/frame_inputs.h"
@@ -79,6 +81,7 @@ RenderSettings manualSettings(int width, int height) {
   s.lightSource = Source::Manual;
   s.shading = ShadingMode::Phong;
   s.shadows.enabled = false;
+  s.ray.spheres = false;  // every column draws the same triangles
   return s;
 }
 
@@ -256,6 +259,7 @@ struct BenchOptions {
 
 std::unique_ptr<Renderer> makeBackend(const std::string& backend, int threads) {
   if (backend == "cpu") return makeCpuRenderer(threads);
+  if (backend == "ray") return makeRayRenderer(threads);
 #if FACET_HAVE_GL
   if (backend == "gl") return makeGlRenderer(GlContextKind::OsMesa);
 #endif
@@ -294,7 +298,10 @@ Command addBenchCommand(CLI::App& app) {
   command->add_option("--scenes", o->scenes, "scenes (default: all): sphere-100k sphere-1m sphere-100k-shadow sphere-1m-shadow fill-10x fill-10x-blended default default-aa4")
       ->delimiter(',')
       ->check(CLI::IsMember(allSceneNames()));
-  command->add_option("--backends", o->backends, "cpu,gl (default both)")->delimiter(',')->check(CLI::IsMember({"cpu", "gl"}));
+  command->add_option("--backends", o->backends,
+                      "cpu,gl (default both), and ray: the ray tracer's frame, its rays by kind and its BVH, against Embree where built with it")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"cpu", "gl", "ray"}));
   command->add_option("--frames", o->frames, "timed frames per backend and scene")->check(wholeNumberIn(1, 1000));
   command->add_option("--warmup", o->warmup, "untimed frames first")->check(wholeNumberIn(0, 100));
   command->add_option("--threads", o->threads, "threads of both backends (LP_NUM_THREADS for llvmpipe)")->check(wholeNumberIn(1, 256));
@@ -369,6 +376,7 @@ Command addBenchCommand(CLI::App& app) {
                     peakMb, summarize(net).median, ratio);
         if (!o->outDir.empty()) writePng(o->outDir + "/" + name + "-" + o->backends[r] + ".png", last[r].image);
       }
+      if (std::find(o->backends.begin(), o->backends.end(), "ray") != o->backends.end()) printRayRates(b.scene, frame, o->threads, o->frames);
       std::fflush(stdout);
     }
 
@@ -380,7 +388,7 @@ Command addBenchCommand(CLI::App& app) {
         for (int i = 0; i < o->startupRuns; ++i) {
           const auto start = Clock::now();
           std::vector<std::string> args{self, "render", "--backend", backend, "-o", png};
-          if (backend == "cpu") args.insert(args.end(), {"--threads", std::to_string(o->threads)});
+          if (backend == "cpu" || backend == "ray") args.insert(args.end(), {"--threads", std::to_string(o->threads)});
           if (runChild(args, nullptr) != 0) throw Error("bench: `facet render --backend " + backend + "` failed");
           runs.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
         }

@@ -16,6 +16,7 @@ packages=(
   libglfw3-dev libimgui-dev                          # the interactive viewer
   xvfb xauth             # the viewer's tests run in a virtual X server
   assimp-testmodels      # real glTF 2.0 files (well-formed and broken) for the tests
+  libembree-dev          # Intel Embree 3: the peer facet bench measures the ray tracer's BVH against
   clang libclang-rt-14-dev  # libFuzzer and its sanitizer runtimes (scripts/fuzz.sh)
 )
 

@@ -2,6 +2,7 @@
 // The course's ray casting (renderer/PIPELINE.md, section 10, "Ray
 // casting"): the ray through a pixel, with a window at unit distance, so
 // that the ray parameter t is the eye depth z_eye of the point it reaches.
+#include <glm/mat3x3.hpp>
 #include <glm/vec2.hpp>
 
 #include "pipeline/frame_inputs.h"
@@ -16,6 +17,22 @@ namespace facet::ray {
 // rotation transposed; parallel, from (x·W/2, y·H/2, 0) in eye space along
 // +z. t runs from N to F, the rasterizers' clipping planes.
 Ray primaryRay(const FrameInputs& frame, int px, int py, glm::vec2 offset = glm::vec2(0.0f));
+
+// primaryRay with what every ray of the frame shares worked out once: tan θ,
+// A_R, EM's rotation transposed (a frame traces millions of rays).
+class CameraRays {
+ public:
+  explicit CameraRays(const FrameInputs& frame);
+  Ray at(int px, int py, glm::vec2 offset = glm::vec2(0.0f)) const;
+
+ private:
+  glm::dmat3 worldFromEye_;
+  glm::dvec3 eye_;
+  double width_, height_, tanTheta_, aspect_, boxWidth_, boxHeight_;
+  int rows_;
+  float near_, far_;
+  bool perspective_;
+};
 
 // The thin lens (depth of field, `camera.aperture`): the pinhole ray moved
 // to the point `disk` (of the unit disk) of a lens of that radius around its

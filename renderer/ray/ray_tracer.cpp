@@ -62,7 +62,7 @@ struct RayTracer::Path {
 };
 
 RayTracer::RayTracer(const TracedScene& scene, const FrameInputs& frame)
-    : scene_(scene), frame_(frame), offset_(frame.ray.epsilon * frame.sceneRadius), focus_(frame.camera.focusDistance) {
+    : scene_(scene), frame_(frame), camera_(frame), offset_(frame.ray.epsilon * frame.sceneRadius), focus_(frame.camera.focusDistance) {
   if (focus_ > 0.0f || !(frame.camera.aperture > 0.0f)) return;
   Hit hit;
   const Ray centre = centreRay(frame);
@@ -269,10 +269,10 @@ glm::vec4 RayTracer::trace(const Ray& ray, const Path& path, RayStatistics& stat
 }
 
 glm::vec4 RayTracer::pixel(int px, int py, glm::vec2 offset, PathSampler& sampler, RayStatistics& statistics) const {
-  const Ray ray = frame_.camera.aperture > 0.0f ? throughLens(frame_, primaryRay(frame_, px, py, offset), diskPoint(sampler.uniform2()), focus_)
-                                                : primaryRay(frame_, px, py, offset);
-  const RayDifferentials differentials{primaryRay(frame_, px & ~1, py, offset), primaryRay(frame_, px | 1, py, offset),
-                                       primaryRay(frame_, px, py & ~1, offset), primaryRay(frame_, px, py | 1, offset)};
+  const Ray ray = frame_.camera.aperture > 0.0f ? throughLens(frame_, camera_.at(px, py, offset), diskPoint(sampler.uniform2()), focus_)
+                                                : camera_.at(px, py, offset);
+  const RayDifferentials differentials{camera_.at(px & ~1, py, offset), camera_.at(px | 1, py, offset),
+                                       camera_.at(px, py & ~1, offset), camera_.at(px, py | 1, offset)};
   ++statistics.primary;
   Path path;
   path.px = px, path.py = py, path.offset = offset;
@@ -282,7 +282,7 @@ glm::vec4 RayTracer::pixel(int px, int py, glm::vec2 offset, PathSampler& sample
 }
 
 std::uint32_t RayTracer::visibleTriangle(int px, int py) const {
-  const Ray ray = primaryRay(frame_, px, py);
+  const Ray ray = camera_.at(px, py);
   Hit hit;
   const bool found = scene_.bvh().intersect(ray, hit, [&](const Hit& candidate) {
     if (scene_.instanceOf(frame_, candidate.primitive).cullBackFaces && !scene_.frontFacing(candidate, ray)) return false;
@@ -294,7 +294,7 @@ std::uint32_t RayTracer::visibleTriangle(int px, int py) const {
 }
 
 std::uint32_t RayTracer::surfacesCrossed(int px, int py) const {
-  const Ray ray = primaryRay(frame_, px, py);
+  const Ray ray = camera_.at(px, py);
   std::uint32_t count = 0;
   scene_.bvh().forEachHit(ray, [&](const Hit& hit) {
     if (!(scene_.instanceOf(frame_, hit.primitive).cullBackFaces && !scene_.frontFacing(hit, ray))) ++count;

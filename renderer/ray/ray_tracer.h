@@ -13,6 +13,7 @@
 #include <glm/vec4.hpp>
 
 #include "pipeline/frame_inputs.h"
+#include "ray/camera_rays.h"
 #include "ray/sampling.h"
 #include "ray/traced_scene.h"
 
@@ -81,6 +82,7 @@ class RayTracer {
 
   const TracedScene& scene_;
   const FrameInputs& frame_;
+  CameraRays camera_;
   float offset_;  // ε·R
   float focus_;
 };

@@ -34,7 +34,9 @@
 // entry is +inf or the exit -inf (a miss), inside the slab ±inf the right
 // way round; on the plane itself 0·inf is NaN, and the comparisons are
 // written so a NaN constrains nothing (the ray runs in the box's face).
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include <glm/vec3.hpp>
@@ -60,17 +62,30 @@ struct SlabRay {
 };
 
 // `scene` is the box around everything the ray may be tested against.
+// std::nextafter(x, ±inf) for a finite x, inline (the library's is a call,
+// six of them per ray): the float one step further from x in that direction.
+inline float stepUp(float x) {
+  if (x == 0.0f) return std::numeric_limits<float>::denorm_min();
+  std::uint32_t bits = std::bit_cast<std::uint32_t>(x);
+  bits = x > 0.0f ? bits + 1 : bits - 1;
+  return std::bit_cast<float>(bits);
+}
+inline float stepDown(float x) { return -stepUp(-x); }
+
 inline SlabRay makeSlabRay(const Ray& ray, const Bounds& scene) {
   SlabRay r;
-  float reach = 0.0f;  // M
-  for (int a = 0; a < 3; ++a)
-    reach = std::fmax(reach, std::fmax(std::fabs(scene.lower[a] - ray.origin[a]), std::fabs(scene.upper[a] - ray.origin[a])));
-  const float slack = std::fmax(kSlack * reach, kSlackFloor);
-  constexpr float kInfinity = std::numeric_limits<float>::infinity();
+  float reach = 0.0f;  // M; NaN-free: canHit turned away non-finite origins and the scene box is finite
+  for (int a = 0; a < 3; ++a) {
+    const float low = std::fabs(scene.lower[a] - ray.origin[a]), high = std::fabs(scene.upper[a] - ray.origin[a]);
+    reach = low > reach ? low : reach;
+    reach = high > reach ? high : reach;
+  }
+  const float scaled = kSlack * reach;
+  const float slack = scaled > kSlackFloor ? scaled : kSlackFloor;
   for (int a = 0; a < 3; ++a) {
     r.inverseDirection[a] = 1.0f / ray.direction[a];
-    r.originForLower[a] = std::nextafter(ray.origin[a] + slack, kInfinity);
-    r.originForUpper[a] = std::nextafter(ray.origin[a] - slack, -kInfinity);
+    r.originForLower[a] = stepUp(ray.origin[a] + slack);
+    r.originForUpper[a] = stepDown(ray.origin[a] - slack);
     r.negative[a] = std::signbit(ray.direction[a]);
   }
   return r;
@@ -87,6 +102,22 @@ inline bool slabTest(const glm::vec3& lower, const glm::vec3& upper, const SlabR
     tNear = entry > tNear ? entry : tNear;  // a NaN leaves tNear as it is
     tFar = exit < tFar ? exit : tFar;
   }
+  return tNear <= tFar;
+}
+
+// slabTest, and where the ray may meet the box: its entry t (at least tLow),
+// by which the traversal orders two children and skips one that starts
+// beyond the nearest hit found meanwhile.
+inline bool slabEntry(const glm::vec3& lower, const glm::vec3& upper, const SlabRay& r, float tLow, float tHigh, float& entry) {
+  float tNear = tLow, tFar = tHigh;
+  for (int a = 0; a < 3; ++a) {
+    const float tLower = (lower[a] - r.originForLower[a]) * r.inverseDirection[a];
+    const float tUpper = (upper[a] - r.originForUpper[a]) * r.inverseDirection[a];
+    const float enter = r.negative[a] ? tUpper : tLower, exit = r.negative[a] ? tLower : tUpper;
+    tNear = enter > tNear ? enter : tNear;  // a NaN leaves tNear as it is
+    tFar = exit < tFar ? exit : tFar;
+  }
+  entry = tNear;
   return tNear <= tFar;
 }
 

@@ -24,8 +24,11 @@
 // (slab_test.h) to never miss what this test hits.
 //
 // Both faces are hit (U, V, W all >= 0 or all <= 0); culling is the caller's.
+#include <cmath>
+
 #include <glm/vec3.hpp>
 
+#include "ray/narrowing.h"
 #include "ray/ray.h"
 
 namespace facet::ray {
@@ -50,6 +53,47 @@ struct TriangleHit {
 // tMin < t < tMax. Never hits a triangle of zero area as the ray sees it
 // (det = 0), nor one with an infinite or NaN corner, nor for a ray with a
 // zero, infinite or NaN direction.
-bool intersectTriangle(const WatertightRay& ray, const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, TriangleHit& hit);
+inline bool intersectTriangle(const WatertightRay& ray, const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, TriangleHit& hit) {
+  const glm::vec3 A = p0 - ray.origin, B = p1 - ray.origin, C = p2 - ray.origin;
+  const int kx = ray.kx, ky = ray.ky, kz = ray.kz;
+  const float Ax = A[kx] - ray.sx * A[kz], Ay = A[ky] - ray.sy * A[kz];
+  const float Bx = B[kx] - ray.sx * B[kz], By = B[ky] - ray.sy * B[kz];
+  const float Cx = C[kx] - ray.sx * C[kz], Cy = C[ky] - ray.sy * C[kz];
+
+  float U = Cx * By - Cy * Bx;
+  float V = Ax * Cy - Ay * Cx;
+  float W = Bx * Ay - By * Ax;
+  // A float 0 may hide either sign; a product of two floats is exact in
+  // double, and the difference of two doubles has the exact sign.
+  if (U == 0.0f || V == 0.0f || W == 0.0f) {
+    U = toFloat(static_cast<double>(Cx) * By - static_cast<double>(Cy) * Bx);
+    V = toFloat(static_cast<double>(Ax) * Cy - static_cast<double>(Ay) * Cx);
+    W = toFloat(static_cast<double>(Bx) * Ay - static_cast<double>(By) * Ax);
+  }
+  if ((U < 0.0f || V < 0.0f || W < 0.0f) && (U > 0.0f || V > 0.0f || W > 0.0f)) return false;
+
+  const float det = U + V + W;
+  // det = 0: the ray sees the triangle edge-on or it has no area. A corner
+  // that is infinite or NaN makes det infinite or NaN (every product with it
+  // is), and the test refuses it.
+  if (det == 0.0f || !std::isfinite(det)) return false;
+
+  const float Az = ray.sz * A[kz], Bz = ray.sz * B[kz], Cz = ray.sz * C[kz];
+  const float T = U * Az + V * Bz + W * Cz;
+  // tMin·det < T < tMax·det without dividing first: flip both signs when
+  // det < 0 (the paper's xor with det's sign bit). NaN compares false.
+  const float Tp = det < 0.0f ? -T : T, detp = det < 0.0f ? -det : det;
+  if (!(Tp > ray.tMin * detp && Tp < ray.tMax * detp)) return false;
+
+  const float inverseDet = 1.0f / det;
+  const float t = T * inverseDet;
+  // The division rounds: keep the promise tMin < t < tMax for the value
+  // returned (and never return an overflowed t).
+  if (!(t > ray.tMin && t < ray.tMax)) return false;
+  hit.t = t;
+  hit.u = V * inverseDet;
+  hit.v = W * inverseDet;
+  return true;
+}
 
 }  // namespace facet::ray
