@@ -34,6 +34,18 @@ std::size_t instanceOfTriangle(const std::vector<std::size_t>& first, std::size_
   return static_cast<std::size_t>(std::upper_bound(first.begin(), first.end(), triangle) - first.begin()) - 1;
 }
 
+void placeInstances(const Scene& scene, float time, FrameInputs& f) {
+  std::vector<glm::mat4> transforms(scene.instances.size());
+  for (std::size_t i = 0; i < transforms.size(); ++i) transforms[i] = scene.instances[i].worldFromModel;
+  if (!scene.animation.empty()) transforms = instanceTransformsAt(scene.animation, transforms, time);
+  for (std::size_t i = 0; i < f.instances.size() && i < transforms.size(); ++i) {
+    FrameInstance& fi = f.instances[i];
+    fi.worldFromModel = transforms[i];
+    fi.normalMatrix = normalMatrix(transforms[i]);
+    fi.clipFromModel = f.clipFromWorld * transforms[i];
+  }
+}
+
 FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings) {
   for (std::size_t i = 0; i < scene.instances.size(); ++i)  // read below, before checkFrame
     if (scene.instances[i].mesh < 0 || static_cast<std::size_t>(scene.instances[i].mesh) >= scene.meshes.size())
@@ -111,14 +123,13 @@ FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings)
   for (const MeshInstance& instance : scene.instances) {
     FrameInstance fi;
     fi.mesh = instance.mesh;
-    fi.worldFromModel = instance.worldFromModel;
-    fi.normalMatrix = normalMatrix(instance.worldFromModel);
-    fi.clipFromModel = f.clipFromWorld * instance.worldFromModel;
     const int material = scene.meshes[static_cast<std::size_t>(instance.mesh)].material;
     fi.material = material >= 0 && material < defaultMaterial ? material : defaultMaterial;
     fi.cullBackFaces = settings.cullBackFaces && !f.materials[static_cast<std::size_t>(fi.material)].doubleSided;
     f.instances.push_back(fi);
   }
+  f.time = settings.time;
+  placeInstances(scene, f.time, f);
 
   // Shadow-map window coordinates: [-1,1]² of the light's NDC onto [0,1]².
   const glm::mat4 shadowWindowFromNdc = windowToViewport({-1, 1, -1, 1}, {0, 1, 0, 1});

@@ -83,6 +83,7 @@ struct FrameInputs {
   bool areaAveraged = false;
   ShadowSettings shadows;
   int shadowLayerCount = 0;       // S×S depth maps over all lights: one per face
+  float time = 0.0f;              // seconds: where the scene's animation places the instances
   // The ray tracer's knobs (PIPELINE.md, section 10), and the radius R of the
   // scene's bounding sphere that ray.epsilon scales.
   RaySettings ray;
@@ -122,6 +123,12 @@ std::vector<std::size_t> firstTriangles(const Scene& scene, const FrameInputs& f
 
 // The instance whose triangles hold list index `triangle` (below first.back()).
 std::size_t instanceOfTriangle(const std::vector<std::size_t>& first, std::size_t triangle);
+
+// Each instance's TM, normal matrix and PM·EM·TM at `time`: the scene's
+// animation there (scene/animation.h), or the instances' own transforms in
+// a scene without one. buildFrameInputs places them at settings.time; the
+// ray tracer places its motion blur's slices at the shutter's times.
+void placeInstances(const Scene& scene, float time, FrameInputs& frame);
 
 // Throws facet::Error (naming the settings key) when the camera cannot be
 // built (eye on the reference point, up along the line of sight), when the

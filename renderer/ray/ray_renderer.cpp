@@ -18,6 +18,7 @@
 #include "ray/ray_tracer.h"
 #include "ray/traced_scene.h"
 #include "scene/memory_budget.h"
+#include "settings/render_settings.h"
 
 namespace facet {
 namespace {
@@ -27,6 +28,8 @@ using ray::RayTracer;
 using ray::TracedScene;
 
 constexpr int kTile = 16;  // pixels a side: a worker's unit of work
+// Motion blur places the scene at most this many times across the shutter (a BVH each).
+constexpr int kMaxShutterSlices = 16;
 
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -44,12 +47,33 @@ class RayRenderer final : public Renderer {
     const TracedScene& traced = prepare(scene, frame, frame.ray.spheres, result);
     if (frame.areaAveraged)
       throw Error("settings key 'antialiasing.pattern': area is the CPU rasterizer's exact coverage; the ray tracer samples grid or jittered");
-    const RayTracer tracer(traced, frame);
-    const auto start = std::chrono::steady_clock::now();
     // Paths per pixel: ray.samples, each jittered over the pixel; with one, the antialiasing
     // offsets (the pixel's centre, or the rasterizers' grid or jittered samples). One is held
     // straight, several are summed premultiplied.
     const int paths = frame.ray.samples > 1 ? frame.ray.samples : std::max<int>(1, static_cast<int>(frame.samples.size()));
+    // Motion blur: the scene placed at K times across the shutter, path k at slice k mod K.
+    std::vector<RayTracer> tracers;
+    if (frame.camera.shutter > 0.0f && !scene.animation.empty()) {
+      // The slices' BVHs together within the frame budget: fewer of them where one is large.
+      const auto fit = static_cast<int>(std::min<std::uint64_t>(kMaxShutterSlices, kFrameMemoryBudget / std::max<std::size_t>(1, traced.bytes())));
+      const int slices = std::max(1, std::min(paths, fit));
+      const auto buildStart = std::chrono::steady_clock::now();
+      sliceFrames_.assign(static_cast<std::size_t>(slices), frame);
+      slices_.clear();
+      tracers.reserve(static_cast<std::size_t>(slices));
+      for (int k = 0; k < slices; ++k) {
+        FrameInputs& at = sliceFrames_[static_cast<std::size_t>(k)];
+        placeInstances(scene, frame.time + frame.camera.shutter * (static_cast<float>(k) + 0.5f) / static_cast<float>(slices), at);
+        slices_.push_back(std::make_unique<TracedScene>(scene, at, frame.ray.spheres, pool_));
+        tracers.emplace_back(*slices_.back(), at);
+      }
+      result.timings.push_back({"BVH build (" + countOf(static_cast<std::size_t>(slices), "shutter slice") + ")", millisecondsSince(buildStart)});
+      result.notes.push_back("motion blur: the scene at " + countOf(static_cast<std::size_t>(slices), "time") + " across the shutter [" +
+                             std::to_string(frame.time) + ", " + std::to_string(frame.time + frame.camera.shutter) + "] s");
+    } else {
+      tracers.emplace_back(traced, frame);
+    }
+    const auto start = std::chrono::steady_clock::now();
     const bool summed = paths > 1;
     const auto seed = static_cast<std::uint32_t>(frame.ray.seed);
     color_.reset(frame.width, frame.height, glm::vec4(0.0f));
@@ -62,7 +86,7 @@ class RayRenderer final : public Renderer {
         ray::PathSampler sampler(seed, pixel, static_cast<std::uint32_t>(k));
         const glm::vec2 offset = frame.ray.samples > 1 ? ray::pixelJitter(k, paths, sampler.uniform2())
                                                        : (frame.samples.empty() ? glm::vec2(0.0f) : frame.samples[static_cast<std::size_t>(k)]);
-        const glm::vec4 held = tracer.pixel(x, y, offset, sampler, local);
+        const glm::vec4 held = tracers[static_cast<std::size_t>(k) % tracers.size()].pixel(x, y, offset, sampler, local);
         sum = summed ? sum + cpu::premultipliedOf(held, Blending::Straight) : held;
       }
       color_.at(x, y) = sum;
@@ -136,6 +160,8 @@ class RayRenderer final : public Renderer {
 
   cpu::ThreadPool pool_;
   RenderProgress progress_;
+  std::vector<FrameInputs> sliceFrames_;            // motion blur: the frame at each shutter time
+  std::vector<std::unique_ptr<TracedScene>> slices_;  // and its primitives
   FrameCheck check_;
   std::unique_ptr<TracedScene> traced_;
   ColorBuffer color_;

@@ -235,6 +235,13 @@ std::vector<glm::vec4> readVec4(const tinygltf::Model& model, int accessor) {
   });
 }
 
+std::vector<float> readScalars(const tinygltf::Model& model, int accessor) {
+  const ElementSpan s = locate(model, accessor, 1);
+  if (s.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
+    throw AccessorError{name(accessor) + ": componentType " + std::to_string(s.componentType) + " is not FLOAT (ANIMATION_SAMPLER_INPUT_ACCESSOR_INVALID_FORMAT)"};
+  return readAll<float>(model, accessor, s, [](const ElementSpan& span, std::uint64_t e) { return component(span, e, 0); });
+}
+
 std::vector<glm::vec2> readVec2(const tinygltf::Model& model, int accessor) {
   const ElementSpan s = locate(model, accessor, 2);
   const bool floatOrUnorm = s.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ||

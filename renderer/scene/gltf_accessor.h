@@ -39,6 +39,8 @@ std::vector<glm::vec2> readVec2(const tinygltf::Model& model, int accessor);
 // VEC3 or VEC4 of float, or normalized unsigned byte/short (COLOR_n), as
 // linear RGBA: VEC3 gets alpha 1.
 std::vector<glm::vec4> readColors(const tinygltf::Model& model, int accessor);
+// SCALAR float (an animation sampler's key times).
+std::vector<float> readScalars(const tinygltf::Model& model, int accessor);
 // SCALAR unsigned byte/short/int (indices).
 std::vector<std::uint32_t> readIndices(const tinygltf::Model& model, int accessor);
 

@@ -774,6 +774,69 @@ Bounds placedBounds(const Bounds& model, const glm::mat4& world) {
   return placed;
 }
 
+// glTF's node animations (3.11) of the nodes the walk placed: translation,
+// rotation and scale channels with float keys, LINEAR, STEP or CUBICSPLINE.
+// A channel that cannot be read (an accessor out of its buffer, times not
+// increasing or not finite, counts that do not match, normalized integer
+// rotations, morph weights) is skipped with a warning naming it; the rest
+// of the file loads.
+void readAnimations(const tinygltf::Model& model, const std::vector<int>& animatedIndex, MemoryBudget& budget, SceneAnimation& animation,
+                    Warnings& warnings) {
+  for (std::size_t a = 0; a < model.animations.size(); ++a) {
+    const tinygltf::Animation& source = model.animations[a];
+    for (std::size_t c = 0; c < source.channels.size(); ++c) {
+      const tinygltf::AnimationChannel& channel = source.channels[c];
+      const std::string where = at("animations", a) + ".channels[" + std::to_string(c) + "]";
+      const auto skip = [&](const std::string& why) { warnings.push_back(where + ": " + why + "; not animated"); };
+      AnimationChannel out;
+      if (channel.target_path == "translation") out.path = AnimatedPath::Translation;
+      else if (channel.target_path == "rotation") out.path = AnimatedPath::Rotation;
+      else if (channel.target_path == "scale") out.path = AnimatedPath::Scale;
+      else {
+        skip("target path " + quoteInput(channel.target_path) + " (morph weights) moves nothing facet draws");
+        continue;
+      }
+      if (channel.target_node < 0 || static_cast<std::size_t>(channel.target_node) >= animatedIndex.size() ||
+          animatedIndex[static_cast<std::size_t>(channel.target_node)] < 0)
+        continue;  // a node the scene does not place (a skin's joint, another scene's)
+      out.node = animatedIndex[static_cast<std::size_t>(channel.target_node)];
+      if (channel.sampler < 0 || static_cast<std::size_t>(channel.sampler) >= source.samplers.size()) {
+        skip("sampler " + std::to_string(channel.sampler) + " does not exist");
+        continue;
+      }
+      const tinygltf::AnimationSampler& sampler = source.samplers[static_cast<std::size_t>(channel.sampler)];
+      if (sampler.interpolation == "STEP") out.interpolation = KeyInterpolation::Step;
+      else if (sampler.interpolation == "CUBICSPLINE") out.interpolation = KeyInterpolation::CubicSpline;
+      else if (sampler.interpolation.empty() || sampler.interpolation == "LINEAR") out.interpolation = KeyInterpolation::Linear;
+      else {
+        skip("interpolation " + quoteInput(sampler.interpolation) + " is not LINEAR, STEP or CUBICSPLINE");
+        continue;
+      }
+      // Priced first: a key's time, and a value of 16 bytes per output element.
+      const std::uint64_t bytes = accessorCount(model, sampler.input) * sizeof(float) + accessorCount(model, sampler.output) * sizeof(glm::vec4);
+      budget.charge(bytes, where + ": " + std::to_string(accessorCount(model, sampler.input)) + " keys");
+      try {
+        out.times = readScalars(model, sampler.input);
+        if (out.path == AnimatedPath::Rotation) out.values = readVec4(model, sampler.output);
+        else for (const glm::vec3 v : readVec3(model, sampler.output)) out.values.emplace_back(v, 0.0f);
+      } catch (const AccessorError& e) {
+        skip(e.message);
+        continue;
+      }
+      const std::size_t perKey = out.interpolation == KeyInterpolation::CubicSpline ? 3 : 1;
+      bool increasing = !out.times.empty();
+      for (std::size_t k = 0; k < out.times.size(); ++k)
+        increasing = increasing && std::isfinite(out.times[k]) && (k == 0 || out.times[k] > out.times[k - 1]);
+      const bool finiteValues = std::all_of(out.values.begin(), out.values.end(), [](const glm::vec4& v) { return finite(glm::vec3(v)) && std::isfinite(v.w); });
+      if (!increasing) skip("key times are not finite and strictly increasing");
+      else if (out.values.size() != perKey * out.times.size())
+        skip(std::to_string(out.values.size()) + " values for " + std::to_string(out.times.size()) + " keys (" + std::to_string(perKey) + " a key)");
+      else if (!finiteValues) skip("a value is not finite");
+      else animation.channels.push_back(std::move(out));
+    }
+  }
+}
+
 // Walks the node trees from the scene's roots. The document checks
 // (gltf_document_checks.h) refused a node with two parents and a loop, so
 // each node is met at most once and the walk is linear in the file.
@@ -787,8 +850,11 @@ struct NodeWalker {
   // What the instances will need of a frame (memory_budget.h), priced as
   // each is placed, so that many nodes naming one big mesh are refused here.
   MemoryBudget frameBudget{kFrameMemoryBudget, "frame budget"};
+  // The node tree as the animation needs it (scene/animation.h): each visited
+  // file node's index there, -1 for one not visited.
+  std::vector<int> animatedIndex = std::vector<int>(model.nodes.size(), -1);
 
-  void visit(int index, const glm::mat4& parent, int depth) {
+  void visit(int index, const glm::mat4& parent, int depth, int parentNode = -1) {
     const auto n = static_cast<std::size_t>(index);
     if (index < 0 || n >= model.nodes.size()) {
       warnings.push_back("node " + std::to_string(index) + " does not exist (UNRESOLVED_REFERENCE); ignored");
@@ -801,11 +867,24 @@ struct NodeWalker {
       return;
     }
     const tinygltf::Node& node = model.nodes[n];
-    const glm::mat4 world = parent * localMatrix(node);
+    const glm::mat4 local = localMatrix(node);
+    const glm::mat4 world = parent * local;
     if (!finiteMatrix(world)) {
       warnings.push_back(at("nodes", n) + ": transform is not finite; its subtree is skipped");
       return;
     }
+    AnimatedNode animated;
+    animated.parent = parentNode;
+    animated.translation = vec3Of(node.translation, glm::vec3(0.0f));
+    animated.scale = vec3Of(node.scale, glm::vec3(1.0f));
+    if (node.rotation.size() == 4)
+      animated.rotation = glm::quat(static_cast<float>(node.rotation[3]), static_cast<float>(node.rotation[0]), static_cast<float>(node.rotation[1]),
+                                    static_cast<float>(node.rotation[2]));
+    animated.hasMatrix = node.matrix.size() == 16;
+    animated.local = local;
+    const int self = static_cast<int>(scene.animation.nodes.size());
+    scene.animation.nodes.push_back(animated);
+    animatedIndex[n] = self;
     if (node.mesh >= 0) {
       if (static_cast<std::size_t>(node.mesh) >= meshTable.size()) {
         warnings.push_back(at("nodes", n) + ": mesh " + std::to_string(node.mesh) + " does not exist (UNRESOLVED_REFERENCE); ignored");
@@ -830,13 +909,14 @@ struct NodeWalker {
                                                                   std::to_string(mesh.triangleCount()) + " triangles of its instance of " +
                                                                   at("meshes", static_cast<std::size_t>(node.mesh)));
           scene.instances.push_back({sceneMesh, world});
+          scene.animation.instanceNodes.push_back(self);
         }
       }
       if (node.skin >= 0) warnings.push_back(at("nodes", n) + ": skinning is not supported; drawn in bind pose");
     }
     if (node.camera >= 0) addCamera(node, n, world);
     addLight(node, n, world);
-    for (int child : node.children) visit(child, world, depth + 1);
+    for (int child : node.children) visit(child, world, depth + 1, self);
   }
 
   void addCamera(const tinygltf::Node& node, std::size_t n, const glm::mat4& world) {
@@ -930,7 +1010,7 @@ void checkRequiredExtensions(const std::string& path, const nlohmann::json& docu
 // does not, and how facet reads such a file:
 // - animations[].channels[].target.node: optional ("when undefined, the
 //   animated object MAY be defined by an extension", e.g.
-//   KHR_animation_pointer). facet does not animate; such a channel is taken
+//   KHR_animation_pointer). facet animates nodes only; such a channel is taken
 //   out of the document before tinygltf parses it, with a warning.
 // - skins[].inverseBindMatrices: optional (identity matrices). tinygltf
 //   parses the skin and then reports the property missing; that report is
@@ -1097,6 +1177,7 @@ Scene loadGltfFromMemory(const std::string& bytes, const std::string& path, cons
   } catch (const Error& e) {
     throw Error(path + ": " + e.what());
   }
+  readAnimations(model, walker.animatedIndex, sceneBudget, scene.animation, warnings);
   if (scene.instances.empty()) warnings.push_back("no triangles to draw");
   scene.warnings = std::move(warnings);
   return scene;

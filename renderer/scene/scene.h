@@ -15,6 +15,7 @@
 
 #include "image/image.h"
 #include "image/mipmap.h"
+#include "scene/animation.h"
 #include "scene/light.h"
 
 namespace facet {
@@ -208,6 +209,10 @@ struct Scene {
   std::string displacement;          // the settings its meshes were displaced with (pipeline/displacement.h); empty: none
   std::string bumpMapPath;           // the settings' material.bumpMap, once loaded (pipeline/bump_map.h); empty: none
   Texture bumpMap;                   // its heights as a data texture (grey / 255), level 0 read
+  // The node tree and its animations (glTF, scene/animation.h): a frame
+  // places the instances at settings.time with them; empty: the
+  // instances' transforms are all there is.
+  SceneAnimation animation;
   std::vector<std::string> warnings; // what a loader skipped or repaired
 
   std::size_t triangleCount() const;  // over all instances

@@ -90,6 +90,7 @@ struct CameraSettings {
   // The ray tracer's thin lens (renderer/PIPELINE.md, section 10): depth of field.
   float aperture = 0.0f;                  // lens radius, world units; 0: a pinhole, everything sharp
   float focusDistance = 0.0f;             // eye depth in focus, world units; 0: autofocus on the image's centre
+  float shutter = 0.0f;                   // seconds the shutter stays open from `time` (motion blur); 0: an instant
 };
 
 // The course's procedural mapping (renderer/PIPELINE.md, section 8): a
@@ -231,6 +232,7 @@ struct RenderSettings {
   EnvironmentSettings environment;
   FogSettings fog;
   RaySettings ray;
+  float time = 0.0f;                      // seconds into the scene's animation (glTF node animations)
   glm::vec3 background{0.02f, 0.025f, 0.035f};  // linear RGB
   float backgroundAlpha = 1.0f;                  // the colour buffer's alpha where no surface is drawn
 };

@@ -56,6 +56,7 @@ void visitSettings(Visitor& v, RenderSettings& s) {
     v.field({"aperture", "ray: thin-lens radius in world units (depth of field); 0: a pinhole", 0, 1e6}, c.aperture);
     v.field({"focusDistance", "ray: the eye depth in focus, world units; 0: autofocus on what the image's centre shows", 0, 1e9},
             c.focusDistance);
+    v.field({"shutter", "ray: seconds the shutter stays open from `time`: motion blur of what the scene's animation moves", 0, 1e6}, c.shutter);
   });
   v.choice({"lightSource", "auto: the scene's lights or one fitted to the scene; manual: the list in lights"}, s.lightSource, kSourceNames);
   v.lights("lights", s.lights);
@@ -147,6 +148,7 @@ void visitSettings(Visitor& v, RenderSettings& s) {
     v.field({"gloss", "reflected rays spread over the Phong lobe of the surface's exponent n (glossy reflection)"}, r.gloss);
     v.field({"translucency", "transmitted rays spread over the same lobe (translucency)"}, r.translucency);
   });
+  v.field({"time", "seconds into the scene's glTF animations: where they place its meshes", 0, 1e6}, s.time);
   v.field({"background", "linear RGB of empty pixels, each in [0, 1]", 0, 1, FieldKind::Color}, s.background);
   v.field({"backgroundAlpha", "alpha of empty pixels in the PNG: 1 opaque, 0 transparent (as F3D's --no-background)", 0, 1}, s.backgroundAlpha);
 }

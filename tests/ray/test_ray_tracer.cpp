@@ -11,6 +11,7 @@
 
 #include <doctest/doctest.h>
 #include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 #include "common/error.h"
 #include "cpu/thread_pool.h"
@@ -394,4 +395,37 @@ TEST_CASE("stochastic ray tracing: the thin lens keeps the plane in focus as the
   CHECK(gradedPinhole == 0);
   CHECK(graded >= 4);
   CHECK(graded <= 9);
+}
+
+TEST_CASE("stochastic ray tracing: motion blur spreads a moving edge over the distance it travels while the shutter is open") {
+  // A glowing half plane x < 0 moving along +x at 1 unit a second (a glTF translation channel).
+  Scene scene;
+  scene.addObject(makePlane(1), emissiveMaterial(scene, glm::vec3(1.0f)),
+                  translation({-3.0f, 0.0f, 0.0f}) * rotationX(std::numbers::pi_v<float> / 2.0f) * scaling({3.0f, 1.0f, 3.0f}));
+  AnimatedNode node;
+  node.translation = {-3.0f, 0.0f, 0.0f};
+  node.rotation = glm::angleAxis(std::numbers::pi_v<float> / 2.0f, glm::vec3(1.0f, 0.0f, 0.0f));
+  node.scale = {3.0f, 1.0f, 3.0f};
+  node.local = scene.instances[0].worldFromModel;
+  scene.animation.nodes = {node};
+  scene.animation.instanceNodes = {0};
+  AnimationChannel moving;
+  moving.path = AnimatedPath::Translation;
+  moving.times = {0.0f, 10.0f};
+  moving.values = {glm::vec4(-3.0f, 0.0f, 0.0f, 0.0f), glm::vec4(7.0f, 0.0f, 0.0f, 0.0f)};
+  scene.animation.channels = {moving};
+  RenderSettings s = unlitParallel(200, 4, 4.0f);  // 0.02 world units a pixel, x = -2 + (px + 0.5)·0.02
+  s.ray.samples = 64;
+  const auto level = [](const Image& image, float x) { return linear(image.at(static_cast<int>((x + 2.0f) / 0.02f), 2).r); };
+  const Image still = makeRayRenderer(2)->render(scene, buildFrameInputs(scene, s)).image;
+  CHECK(level(still, -0.05f) == 1.0);
+  CHECK(level(still, 0.05f) == 0.0);
+  s.camera.shutter = 0.5f;
+  const Image blurred = makeRayRenderer(2)->render(scene, buildFrameInputs(scene, s)).image;
+  // Open from 0 to 0.5 s, the edge sweeps x from 0 to 0.5: a point there is lit the time the edge is past it.
+  CHECK(level(blurred, -0.05f) == doctest::Approx(1.0).epsilon(0.01));
+  CHECK(level(blurred, 0.125f) == doctest::Approx(0.75).epsilon(0.1));
+  CHECK(level(blurred, 0.25f) == doctest::Approx(0.5).epsilon(0.1));
+  CHECK(level(blurred, 0.375f) == doctest::Approx(0.25).epsilon(0.15));
+  CHECK(level(blurred, 0.55f) == 0.0);
 }

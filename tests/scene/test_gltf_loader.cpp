@@ -15,6 +15,7 @@
 
 #include "common/error.h"
 #include "common/json_text.h"
+#include "pipeline/frame_inputs.h"
 #include "pipeline/material_coefficients.h"
 #include "scene/gltf_loader.h"
 #include "scene/load_scene.h"
@@ -185,6 +186,32 @@ TEST_CASE("valid files that tinygltf alone refuses are loaded: an animation chan
     CHECK(hasWarning(scene, "animations[0].channels[0]: no target node"));
     CHECK_FALSE(hasWarning(scene, "channels[1]"));
   }
+}
+
+TEST_CASE("glTF animations: a translation channel moves its node's instance at settings.time, and what cannot be read is skipped, naming it") {
+  const auto animated = [](const char* sampler) {
+    return asset(
+        [&](nlohmann::json& j) {
+          j["animations"] = nlohmann::json::parse(std::string(R"([{"channels": [{"sampler": 0, "target": {"node": 0, "path": "translation"}}],
+                                                                     "samplers": [)") + sampler + "]}]");
+        },
+        false);
+  };
+  // Key times 0 and 1, translations (0, 0, 0) and (0, 1, 0): half way the triangle is half a unit up.
+  const Scene scene = loadGltfFromMemory(animated(R"({"input": 1, "output": 2})"), "animated.gltf", "");
+  REQUIRE(scene.animation.channels.size() == 1);
+  RenderSettings s;
+  s.time = 0.5f;
+  CHECK(buildFrameInputs(scene, s).instances[0].worldFromModel[3].y == doctest::Approx(0.5f));
+  s.time = 0.0f;
+  CHECK(buildFrameInputs(scene, s).instances[0].worldFromModel == scene.instances[0].worldFromModel);
+  // Times from a VEC3 accessor; an interpolation glTF does not have.
+  const Scene wrong = loadGltfFromMemory(animated(R"({"input": 2, "output": 2})"), "animated.gltf", "");
+  CHECK(wrong.animation.channels.empty());
+  CHECK(hasWarning(wrong, "animations[0].channels[0]: accessors[2]: has 3 components per element, expected 1 (ACCESSOR_INVALID_TYPE); not animated"));
+  const Scene smooth = loadGltfFromMemory(animated(R"({"input": 1, "output": 2, "interpolation": "SMOOTH"})"), "animated.gltf", "");
+  CHECK(smooth.animation.channels.empty());
+  CHECK(smooth.triangleCount() == 1);
 }
 
 TEST_CASE("valid files that tinygltf alone refuses are loaded: a skin without inverseBindMatrices") {
