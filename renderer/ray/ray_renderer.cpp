@@ -99,6 +99,9 @@ class RayRenderer final : public Renderer {
     cpu::resolve(pool_, color_, summed ? Blending::Premultiplied : Blending::Straight, paths, result.image);
     result.timings.push_back({"resolve", millisecondsSince(resolveStart)});
     result.notes.push_back(statistics.summary());
+    if (frame.hsr != HiddenSurface::ZBuffer)
+      result.notes.push_back("hsr " + std::string(kHiddenSurfaceNames[static_cast<std::size_t>(frame.hsr)]) +
+                             " is the rasterizers'; a ray sees the nearest surface (ray casting is its own hidden-surface removal)");
     return result;
   }
 

@@ -1,4 +1,5 @@
-// libFuzzer target: the CPU rasterizer on arbitrary triangles and settings.
+// libFuzzer target: the CPU rasterizer, its area-weighted averaging and the
+// ray tracer on arbitrary triangles and settings.
 // The bytes become a few vertices (any float: NaN, infinities, huge), index
 // triples, a camera, a light and the shading knobs; the frame is rendered
 // small. It must end in an image or a facet::Error, never a crash, an
@@ -10,6 +11,7 @@
 
 #include "common/error.h"
 #include "cpu/cpu_renderer.h"
+#include "ray/ray_renderer.h"
 #include "pipeline/frame_inputs.h"
 
 namespace {
@@ -77,12 +79,29 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   facet::Material material;
   material.metallic = static_cast<float>(in.byte()) / 255.0f;
   material.roughness = static_cast<float>(in.byte()) / 255.0f;
+  // The ray tracer's knobs from what follows (0, the defaults, past the end).
+  const std::uint8_t rays = in.byte();
+  material.transmission = static_cast<float>(rays & 3) / 3.0f;
+  material.ior = 0.5f + static_cast<float>(in.byte()) / 64.0f;
   scene.materials.push_back(material);
   scene.meshes[0].material = 0;
+  s.ray.depth = 1 + (rays >> 2) % 6;
+  s.ray.samples = 1 + ((rays >> 5) & 3);
+  s.ray.gloss = s.ray.translucency = (rays >> 7) & 1;
+  s.camera.aperture = static_cast<float>(in.byte()) / 64.0f;
+  s.lights[0].radius = static_cast<float>(in.byte()) / 32.0f;
 
   try {
     const facet::FrameInputs frame = facet::buildFrameInputs(scene, s);
     (void)facet::makeCpuRenderer(1)->render(scene, frame);
+    facet::FrameInputs area = frame;
+    area.areaAveraged = true;
+    (void)facet::makeCpuRenderer(1)->render(scene, area);
+  } catch (const facet::Error&) {
+  }
+  try {
+    const facet::FrameInputs frame = facet::buildFrameInputs(scene, s);
+    (void)facet::makeRayRenderer(1)->render(scene, frame);
   } catch (const facet::Error&) {
   }
   return 0;
