@@ -106,21 +106,11 @@ class RayRenderer final : public Renderer {
   }
 
   std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) override {
-    RenderResult unused;
-    const RayTracer tracer(prepare(scene, frame, frame.ray.spheres, unused), frame);
-    std::vector<std::uint32_t> ids(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 0u);
-    forEachPixel(frame, [&](int x, int y, RayStatistics&) { ids[static_cast<std::size_t>(y) * static_cast<std::size_t>(frame.width) + static_cast<std::size_t>(x)] = tracer.visibleTriangle(x, y); },
-                 [](const RayStatistics&) {});
-    return ids;
+    return perPixel(scene, frame, [](const RayTracer& tracer, int x, int y) { return tracer.visibleTriangle(x, y); });
   }
 
   std::vector<std::uint32_t> fragmentCounts(const Scene& scene, const FrameInputs& frame) override {
-    RenderResult unused;
-    const RayTracer tracer(prepare(scene, frame, frame.ray.spheres, unused), frame);
-    std::vector<std::uint32_t> counts(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 0u);
-    forEachPixel(frame, [&](int x, int y, RayStatistics&) { counts[static_cast<std::size_t>(y) * static_cast<std::size_t>(frame.width) + static_cast<std::size_t>(x)] = tracer.surfacesCrossed(x, y); },
-                 [](const RayStatistics&) {});
-    return counts;
+    return perPixel(scene, frame, [](const RayTracer& tracer, int x, int y) { return tracer.surfacesCrossed(x, y); });
   }
 
  private:
@@ -139,6 +129,18 @@ class RayRenderer final : public Renderer {
       traced_->bind(scene, frame);
     }
     return *traced_;
+  }
+
+  // value(tracer, x, y) of every pixel, bottom row first: the stages a rasterizer also reports.
+  template <class Value>
+  std::vector<std::uint32_t> perPixel(const Scene& scene, const FrameInputs& frame, Value&& value) {
+    RenderResult unused;
+    const RayTracer tracer(prepare(scene, frame, frame.ray.spheres, unused), frame);
+    std::vector<std::uint32_t> out(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 0u);
+    forEachPixel(frame, [&](int x, int y, RayStatistics&) {
+      out[static_cast<std::size_t>(y) * static_cast<std::size_t>(frame.width) + static_cast<std::size_t>(x)] = value(tracer, x, y);
+    }, [](const RayStatistics&) {});
+    return out;
   }
 
   // shade(x, y, statistics) on every pixel, tile by tile on the pool; each worker's statistics handed to merge once.

@@ -92,22 +92,9 @@ inline SlabRay makeSlabRay(const Ray& ray, const Bounds& scene) {
 }
 
 // Whether the ray may meet the box, grown by the allowance, for some t in
-// [tLow, tHigh] (closed: a hit at exactly tHigh must still be looked for).
-inline bool slabTest(const glm::vec3& lower, const glm::vec3& upper, const SlabRay& r, float tLow, float tHigh) {
-  float tNear = tLow, tFar = tHigh;
-  for (int a = 0; a < 3; ++a) {
-    const float tLower = (lower[a] - r.originForLower[a]) * r.inverseDirection[a];
-    const float tUpper = (upper[a] - r.originForUpper[a]) * r.inverseDirection[a];
-    const float entry = r.negative[a] ? tUpper : tLower, exit = r.negative[a] ? tLower : tUpper;
-    tNear = entry > tNear ? entry : tNear;  // a NaN leaves tNear as it is
-    tFar = exit < tFar ? exit : tFar;
-  }
-  return tNear <= tFar;
-}
-
-// slabTest, and where the ray may meet the box: its entry t (at least tLow),
-// by which the traversal orders two children and skips one that starts
-// beyond the nearest hit found meanwhile.
+// [tLow, tHigh] (closed: a hit at exactly tHigh must still be looked for),
+// and where: its entry t (at least tLow), by which the traversal orders two
+// children and skips one that starts beyond the nearest hit found meanwhile.
 inline bool slabEntry(const glm::vec3& lower, const glm::vec3& upper, const SlabRay& r, float tLow, float tHigh, float& entry) {
   float tNear = tLow, tFar = tHigh;
   for (int a = 0; a < 3; ++a) {
@@ -119,6 +106,12 @@ inline bool slabEntry(const glm::vec3& lower, const glm::vec3& upper, const Slab
   }
   entry = tNear;
   return tNear <= tFar;
+}
+
+// slabEntry without the entry: the any-hit traversal's test.
+inline bool slabTest(const glm::vec3& lower, const glm::vec3& upper, const SlabRay& r, float tLow, float tHigh) {
+  float entry = 0.0f;
+  return slabEntry(lower, upper, r, tLow, tHigh, entry);
 }
 
 }  // namespace facet::ray
