@@ -105,6 +105,9 @@ Command addRenderCommand(CLI::App& app) {
     for (const std::string& warning : scene.warnings) std::fprintf(stderr, "warning: %s: %s\n", scene.source.c_str(), warning.c_str());
     const FrameInputs frame = buildFrameInputs(scene, settings);
     for (const std::string& warning : frame.warnings) std::fprintf(stderr, "warning: %s: %s\n", scene.source.c_str(), warning.c_str());
+#if FACET_HAVE_GL
+    if (options->backend == "gl") refuseCpuOnlyFrame(frame);  // before the driver is loaded
+#endif
     ProgressBar progress("ray tracing");  // drawn on a terminal only
     std::unique_ptr<Renderer> renderer = makeRenderer(*options, progress);
     RenderResult result;

@@ -1,4 +1,5 @@
 #include "gl/frame_renderer.h"
+#include "gl/gl_renderer.h"
 
 #include <algorithm>
 #include <array>
@@ -38,13 +39,6 @@ constexpr GLuint kMeshTexcoords1Binding = 4;
 constexpr GLint kMeshStorageBuffers = 5;
 constexpr GLuint kPaintedBinding = 5;         // storage buffer of triangle_id.frag: the painter's order
 
-// The scanline z-buffer and area-weighted averaging are the CPU backend's alone.
-void refuseCpuOnly(const FrameInputs& frame) {
-  if (frame.hsr == HiddenSurface::Scanline)
-    throw Error("settings key 'hsr': scanline is the CPU backend's scanline z-buffer (--backend cpu); OpenGL draws zbuffer or painter");
-  if (frame.areaAveraged)
-    throw Error("settings key 'antialiasing.pattern': area is the CPU backend's exact area-weighted averaging (--backend cpu); OpenGL samples grid or jittered");
-}
 
 // The vertex and fragment shader of each shading mode, indexed by ShadingMode.
 constexpr std::array<std::string_view, 2> kLitStages[] = {
@@ -85,7 +79,7 @@ void GlFrameRenderer::uploadScene(const Scene& scene) {
 }
 
 std::vector<PassTiming> GlFrameRenderer::drawFrame(const Scene& scene, const FrameInputs& frame) {
-  refuseCpuOnly(frame);
+  facet::refuseCpuOnlyFrame(frame);
   if (frame.hsr == HiddenSurface::Painter) painters_.prepare(gl_, scene, frame, frame.paintersOrder);
   if (!frame.transparentOrder.empty()) transparent_.prepare(gl_, scene, frame, frame.transparentOrder);
   std::vector<PassTiming> timings;
@@ -158,7 +152,7 @@ Image GlFrameRenderer::readImage() const {
 }
 
 std::vector<std::uint32_t> GlFrameRenderer::drawTriangleIds(const Scene& scene, const FrameInputs& frame) {
-  refuseCpuOnly(frame);
+  facet::refuseCpuOnlyFrame(frame);
   const bool painter = frame.hsr == HiddenSurface::Painter;
   if (painter) painters_.prepare(gl_, scene, frame, frame.paintersOrder);
   const auto idVariant = [&](const FrameInstance& instance) { return maskVariant(frame, instance); };
@@ -642,5 +636,6 @@ void GlFrameRenderer::checkError(const char* where) const {
   std::snprintf(code, sizeof code, "0x%04x", error);
   throw Error(std::string("OpenGL error ") + code + " in " + where);
 }
+
 
 }  // namespace facet::gl

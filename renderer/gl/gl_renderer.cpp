@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "common/error.h"
 #include "gl/frame_renderer.h"
 #include "gl/headless_context.h"
 #include "pipeline/frame_checks.h"
@@ -121,6 +122,13 @@ std::unique_ptr<Renderer> makeGlRenderer(GlContextKind kind) { return std::make_
 
 std::unique_ptr<WindowGlRenderer> makeWindowGlRenderer(const gl::GetProcAddress& getProcAddress) {
   return std::make_unique<CurrentContextGlRenderer>(getProcAddress);
+}
+
+void refuseCpuOnlyFrame(const FrameInputs& frame) {
+  if (frame.hsr == HiddenSurface::Scanline)
+    throw Error("settings key 'hsr': scanline is the CPU backend's scanline z-buffer (--backend cpu); OpenGL draws zbuffer or painter");
+  if (frame.areaAveraged)
+    throw Error("settings key 'antialiasing.pattern': area is the CPU backend's exact area-weighted averaging (--backend cpu); OpenGL samples grid or jittered");
 }
 
 }  // namespace facet

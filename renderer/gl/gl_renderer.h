@@ -18,6 +18,11 @@ enum class GlContextKind { OsMesa, Egl };
 // no 4.5 core context).
 std::unique_ptr<Renderer> makeGlRenderer(GlContextKind kind);
 
+// What OpenGL refuses of a frame (the CPU backend's own algorithms: the
+// scanline z-buffer, area-weighted averaging), naming the key: every draw
+// checks it, and `facet render` before it loads the driver.
+void refuseCpuOnlyFrame(const FrameInputs& frame);
+
 // The same backend on the caller's context, which must be current for every
 // call: what the viewer draws its window's frames with.
 class WindowGlRenderer : public Renderer {
