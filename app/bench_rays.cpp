@@ -51,8 +51,9 @@ struct RaySet {
 
 RaySet raysOf(const ray::TracedScene& traced, const FrameInputs& frame) {
   RaySet set;
+  const ray::CameraRays camera(frame);
   for (int y = 0; y < frame.height; ++y)
-    for (int x = 0; x < frame.width; ++x) set.primary.push_back(ray::primaryRay(frame, x, y));
+    for (int x = 0; x < frame.width; ++x) set.primary.push_back(camera.at(x, y));
   const float offset = frame.ray.epsilon * frame.sceneRadius;
   for (const ray::Ray& r : set.primary) {
     ray::Hit hit;

@@ -43,10 +43,10 @@ class RayRenderer final : public Renderer {
   std::string description() const override { return "ray tracer, " + countOf(static_cast<std::size_t>(pool_.size()), "thread"); }
 
   RenderResult render(const Scene& scene, const FrameInputs& frame) override {
-    RenderResult result;
-    const TracedScene& traced = prepare(scene, frame, frame.ray.spheres, result);
     if (frame.areaAveraged)
       throw Error("settings key 'antialiasing.pattern': area is the CPU rasterizer's exact coverage; the ray tracer samples grid or jittered");
+    RenderResult result;
+    const TracedScene& traced = prepare(scene, frame, frame.ray.spheres, result);
     // Paths per pixel: ray.samples, each jittered over the pixel; with one, the antialiasing
     // offsets (the pixel's centre, or the rasterizers' grid or jittered samples). One is held
     // straight, several are summed premultiplied.

@@ -76,10 +76,11 @@ Ray RayTracer::leaving(glm::vec3 P, glm::vec3 Ng, glm::vec3 direction) const {
   return ray;
 }
 
-bool RayTracer::nearestHit(const Ray& ray, bool primary, Hit& hit) const {
+bool RayTracer::nearestHit(const Ray& ray, bool primary, Hit& hit, bool throughBlended) const {
   return scene_.bvh().intersect(ray, hit, [&](const Hit& candidate) {
     if (primary && scene_.instanceOf(frame_, candidate.primitive).cullBackFaces && !scene_.frontFacing(candidate, ray)) return false;
     const CourseMaterial& material = *scene_.drawOf(candidate.primitive).material;
+    if (throughBlended && material.blended) return false;
     return !material.masked || cpu::alphaKept(material, scene_.alphaAt(candidate, ray));
   });
 }
@@ -257,8 +258,9 @@ glm::vec4 RayTracer::trace(const Ray& ray, const Path& path, RayStatistics& stat
     behind.tMax = ray.tMax - hit.t;
     Path onward = path;
     onward.continuation = true;
-    onward.weight = path.weight * (1.0f - clampUnit(scene_.alphaAt(hit, ray)));
-    result = cpu::blend(trace(behind, onward, statistics), color, scene_.alphaAt(hit, ray), Blending::Straight);
+    const float alpha = scene_.alphaAt(hit, ray);
+    onward.weight = path.weight * (1.0f - clampUnit(alpha));
+    result = cpu::blend(trace(behind, onward, statistics), color, alpha, Blending::Straight);
   }
   // Beer's law over the distance travelled inside a medium.
   if (largest(path.medium) > 0.0f) {
@@ -284,13 +286,8 @@ glm::vec4 RayTracer::pixel(int px, int py, glm::vec2 offset, PathSampler& sample
 std::uint32_t RayTracer::visibleTriangle(int px, int py) const {
   const Ray ray = camera_.at(px, py);
   Hit hit;
-  const bool found = scene_.bvh().intersect(ray, hit, [&](const Hit& candidate) {
-    if (scene_.instanceOf(frame_, candidate.primitive).cullBackFaces && !scene_.frontFacing(candidate, ray)) return false;
-    const CourseMaterial& material = *scene_.drawOf(candidate.primitive).material;
-    if (material.blended) return false;  // blended surfaces keep no pixel (they write no depth)
-    return !material.masked || cpu::alphaKept(material, scene_.alphaAt(candidate, ray));
-  });
-  return found ? scene_.primitive(hit.primitive).frameTriangle + 1 : 0;
+  // Blended surfaces keep no pixel: they write no depth.
+  return nearestHit(ray, true, hit, true) ? scene_.primitive(hit.primitive).frameTriangle + 1 : 0;
 }
 
 std::uint32_t RayTracer::surfacesCrossed(int px, int py) const {

@@ -75,8 +75,9 @@ class RayTracer {
  private:
   struct Path;
   glm::vec4 trace(const Ray& ray, const Path& path, RayStatistics& statistics) const;
-  // The nearest hit the ray can see: culled back faces (primary rays) and what a mask discards let it through.
-  bool nearestHit(const Ray& ray, bool primary, Hit& hit) const;
+  // The nearest hit the ray can see: culled back faces (primary rays) and what a mask discards let it
+  // through, and blended surfaces too where they keep nothing (the visible triangle of a pixel).
+  bool nearestHit(const Ray& ray, bool primary, Hit& hit, bool throughBlended = false) const;
   // A ray from P to `direction`, moved ε·R along Ng to the side it goes.
   Ray leaving(glm::vec3 P, glm::vec3 Ng, glm::vec3 direction) const;
 

@@ -41,6 +41,7 @@ std::optional<glm::vec2> planeBarycentrics(glm::vec3 p0, glm::vec3 p1, glm::vec3
 TracedScene::TracedScene(const Scene& scene, const FrameInputs& frame, bool spheres, cpu::ThreadPool& pool)
     : scene_(&scene), frame_(&frame), sceneToken_(scene.identity.token()), spheres_(spheres) {
   std::uint32_t frameTriangle = 0;
+  std::vector<TracedPrimitive> sphereRecords;  // each sphere's instance and its mesh's first triangle in the frame
   for (std::size_t i = 0; i < frame.instances.size(); ++i) {
     const FrameInstance& instance = frame.instances[i];
     const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
@@ -54,6 +55,7 @@ TracedScene::TracedScene(const Scene& scene, const FrameInputs& frame, bool sphe
       s.radius = *scale;
       s.modelFromWorld = glm::inverse(instance.worldFromModel);
       sphereFrames_.push_back(s);
+      sphereRecords.push_back({static_cast<std::uint32_t>(i), frameTriangle, 0});
     } else {
       // The corners the rasterizers' vertex stage computes: TM·p in float.
       for (std::uint32_t t = 0; t < triangles; ++t) {
@@ -65,15 +67,9 @@ TracedScene::TracedScene(const Scene& scene, const FrameInputs& frame, bool sphe
     frameTriangle += triangles;
   }
   // Spheres after every triangle: the primitives' numbering (primitives.h).
-  std::uint32_t sphere = 0;
-  for (std::size_t i = 0; i < frame.instances.size(); ++i) {
-    const Mesh& mesh = scene.meshes[static_cast<std::size_t>(frame.instances[i].mesh)];
-    if (!(mesh.sphere && spheres && uniformScale(frame.instances[i].worldFromModel))) continue;
-    const TracedSphere& s = sphereFrames_[sphere++];
-    primitives_.spheres.push_back(glm::vec4(s.center, s.radius));
-    std::uint32_t first = 0;
-    for (std::size_t j = 0; j < i; ++j) first += static_cast<std::uint32_t>(scene.meshes[static_cast<std::size_t>(frame.instances[j].mesh)].indices.size() / 3);
-    traced_.push_back({static_cast<std::uint32_t>(i), first, 0});
+  for (std::size_t k = 0; k < sphereFrames_.size(); ++k) {
+    primitives_.spheres.push_back(glm::vec4(sphereFrames_[k].center, sphereFrames_[k].radius));
+    traced_.push_back(sphereRecords[k]);
   }
   checkPrimitiveCounts(primitives_.triangleCorners.size(), primitives_.spheres.size());
   bvh_ = Bvh(primitives_, pool);
@@ -194,11 +190,26 @@ cpu::SurfacePoint TracedScene::surfaceAt(const Hit& hit, const Ray& ray, const R
 }
 
 float TracedScene::alphaAt(const Hit& hit, const Ray& ray) const {
-  const cpu::SurfaceDraw& draw = draws_[traced_[hit.primitive].instance];
-  const cpu::SurfacePoint p = surfaceAt(hit, ray, nullptr);
+  // Only what α reads (it runs inside traversals, for each masked or blended candidate): the base
+  // colour texture's coordinates and COLOR_0's alpha at the hit, weighted as surfaceAt weights them.
+  const TracedPrimitive& traced = traced_[hit.primitive];
+  const cpu::SurfaceDraw& draw = draws_[traced.instance];
+  const Mesh& mesh = *draw.mesh;
+  const int set = draw.material->baseColorSet;
+  glm::vec2 st{0.0f};
+  float vertexAlpha = 1.0f;
+  if (primitives_.isSphere(hit.primitive)) {
+    st = sphereTexcoords(sphereFrames_[hit.primitive - primitives_.triangleCount()], pointOf(hit, ray));
+  } else {
+    const std::uint32_t* index = &mesh.indices[traced.first];
+    const float w[3] = {1.0f - hit.u - hit.v, hit.u, hit.v};
+    const std::vector<glm::vec2>& texcoords = mesh.texcoordSet(set);
+    if (!texcoords.empty()) st = (w[0] * texcoords[index[0]] + w[1] * texcoords[index[1]]) + w[2] * texcoords[index[2]];
+    if (draw.colored) vertexAlpha = (w[0] * mesh.colors[index[0]].a + w[1] * mesh.colors[index[1]].a) + w[2] * mesh.colors[index[2]].a;
+  }
   glm::vec4 texel{1.0f};
-  if (draw.texture) texel = cpu::sampleBaseColorTexture(*draw.texture, *draw.material, p.st[draw.material->baseColorSet], glm::vec4(0.0f));
-  return cpu::fragmentAlpha(*draw.material, draw.colored ? &p.color.a : nullptr, draw.texture ? &texel : nullptr);
+  if (draw.texture) texel = cpu::sampleBaseColorTexture(*draw.texture, *draw.material, st, glm::vec4(0.0f));
+  return cpu::fragmentAlpha(*draw.material, draw.colored ? &vertexAlpha : nullptr, draw.texture ? &texel : nullptr);
 }
 
 std::size_t TracedScene::bytes() const {
