@@ -30,7 +30,7 @@ std::string sizeProblem(const std::string& text, int& width, int& height) {
 
 void addCommonOptions(CLI::App& command, CommonOptions& options, const std::string& outputHelp) {
   command.add_option("scene", options.scenePath,
-                     "glTF 2.0 scene (.gltf or .glb), or builtin:default|sphere|cube|plane|cylinder|torus; none: the built-in default scene");
+                     "glTF 2.0 scene (.gltf or .glb), or builtin:default|cornell|fountain|sphere|cube|plane|cylinder|torus, or a volume (.nrrd, .nhdr, .nii, .nii.gz, builtin:marschner-lobb); none: the built-in default scene");
   command.add_option("--settings", options.settingsPath, "RenderSettings JSON file (print the defaults with `facet settings`)");
   command.add_option("--set", options.assignments,
                      "override one settings key, repeatable: --set shading=gouraud --set lights.0.position=[1,4,2]")

@@ -25,6 +25,7 @@
 #include "pipeline/displacement.h"
 #include "scene/environment_map.h"
 #include "scene/load_scene.h"
+#include "pipeline/scene_additions.h"
 #if FACET_HAVE_GL
 #include "gl/gl_renderer.h"
 #endif
@@ -98,10 +99,12 @@ Command addRenderCommand(CLI::App& app) {
       checkOutputFile(options->shadowReport, {options->common.scenePath, options->common.settingsPath, output});
     }
     Scene scene = loadScene(options->common.scenePath);
-    const RenderSettings settings = settingsFor(options->common, scene);
-    useDisplacement(scene, settings.material);
-    useBumpMap(scene, settings.material);
-    useEnvironment(scene, settings.environment);
+    const RenderSettings asked = settingsFor(options->common, scene);
+    useDisplacement(scene, asked.material);
+    useBumpMap(scene, asked.material);
+    useEnvironment(scene, asked.environment);
+    SceneAdditions added;
+    const RenderSettings settings = addVolumeAndParticles(scene, asked, added, options->threads);
     for (const std::string& warning : scene.warnings) std::fprintf(stderr, "warning: %s: %s\n", scene.source.c_str(), warning.c_str());
     const FrameInputs frame = buildFrameInputs(scene, settings);
     for (const std::string& warning : frame.warnings) std::fprintf(stderr, "warning: %s: %s\n", scene.source.c_str(), warning.c_str());
@@ -139,6 +142,10 @@ Command addRenderCommand(CLI::App& app) {
     std::printf("rendered %s: %s, %dx%d, %s shading, %s, shadows %s\n", scene.source.c_str(), countOf(scene.triangleCount(), "triangle").c_str(),
                 frame.width, frame.height, std::string(kShadingModeNames[static_cast<std::size_t>(frame.shading)]).c_str(),
                 countOf(frame.lights.size(), "light").c_str(), frame.shadowLayerCount > 0 ? "on" : "off");
+    if (added.particles) std::printf("particles: %s at time %g s\n", countOf(added.particles, "sprite").c_str(), static_cast<double>(settings.time));
+    if (added.splats) std::printf("volume: %s (splatting)\n", countOf(added.splats, "splat").c_str());
+    if (added.isosurface)
+      std::printf("volume: %s (marching cubes)\n", countOf(added.isoTriangles, "iso-surface triangle").c_str());
     std::printf("backend: %s\n", renderer->description().c_str());
     for (const PassTiming& t : result.timings) std::printf("  %-28s %9.2f ms\n", t.pass.c_str(), t.milliseconds);
     if (options->stage == "overdraw")

@@ -26,16 +26,19 @@ vec4 premultipliedOf(vec4 held, bool premultiplied) {
 // over what the buffer holds at its pixel:
 //   straight       t = α_b·(1 − α_f), α_o = α_f + t, C_o = (C_f·α_f + C_b·t) / α_o (0 where α_o = 0)
 //   premultiplied  k = 1 − α_f, C_o = C_f·α_f + C_b·k, α_o = α_f + α_b·k
-vec4 blend(vec4 held, vec3 fragment, float alpha, bool premultiplied) {
+// and, additive, what is behind keeps its weight: C_b·α_b in place of C_b·t
+// (straight), C_b in place of C_b·k (premultiplied); α_o as above.
+vec4 blend(vec4 held, vec3 fragment, float alpha, bool premultiplied, bool additive) {
   float a = alpha > 0.0 ? (alpha < 1.0 ? alpha : 1.0) : 0.0;
   if (premultiplied) {
     precise float k = 1.0 - a;
-    precise vec3 c = fragment * a + held.rgb * k;
+    precise vec3 c = additive ? fragment * a + held.rgb : fragment * a + held.rgb * k;
     precise float outAlpha = a + held.a * k;
     return vec4(c, outAlpha);
   }
   precise float t = held.a * (1.0 - a);
   precise float outAlpha = a + t;
-  precise vec3 c = (fragment * a + held.rgb * t) / outAlpha;
+  precise float behind = additive ? held.a : t;
+  precise vec3 c = (fragment * a + held.rgb * behind) / outAlpha;
   return outAlpha > 0.0 ? vec4(c, outAlpha) : vec4(0.0);
 }

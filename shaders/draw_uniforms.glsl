@@ -9,6 +9,7 @@ uniform mat3 normalMatrix;         // (TM^T)^-1, upper 3x3
 uniform CourseMaterial material;   // k_e, k_a, k_d, k_s, n
 uniform vec3 baseColorFactor;      // O_d without its texture, linear RGB
 uniform float baseAlpha;           // its alpha
+uniform bool unlit;                // KHR_materials_unlit: the colour is O_d, no illumination
 uniform float alphaCutoff;         // alphaMode MASK: the least alpha a fragment keeps
 uniform ivec4 baseColorSampler;    // its texture's magFilter, minFilter, wrapS, wrapT: scene/scene.h's enum values
 uniform vec3 baseColorTransform[2];// its KHR_texture_transform: the rows of st' = M·(s, t, 1)

@@ -5,13 +5,14 @@
 // it by the frame's equation (FACET_PREMULTIPLIED). Mirror: renderer/cpu/lit_pass.cpp.
 #if FACET_BLENDED
 layout(location = 0) inout vec4 color;
+uniform bool additiveBlend;  // the material adds its light (the additive equation)
 #else
 layout(location = 0) out vec4 color;
 #endif
 
 void writeLit(vec3 lit, float alpha) {
 #if FACET_BLENDED
-  color = blend(color, lit, alpha, FACET_PREMULTIPLIED != 0);
+  color = blend(color, lit, alpha, FACET_PREMULTIPLIED != 0, additiveBlend);
 #else
   color = vec4(lit, 1.0);
 #endif

@@ -42,6 +42,10 @@ bool editFloat(const char* label, float& value, const FieldInfo& info, const cha
   return ImGui::DragFloat(label, &value, speed, lo, hi, format, kClamp);  // lo == hi == 0: unbounded
 }
 
+// What a list item's header says after its number: a light's kind.
+std::string itemTitle(const Light& light) { return ": " + std::string(kLightKindNames[static_cast<std::size_t>(light.kind)]); }
+std::string itemTitle(const Emitter&) { return ""; }
+
 class PanelVisitor {
  public:
   explicit PanelVisitor(float worldScale) : worldScale_(worldScale) {}
@@ -152,11 +156,12 @@ class PanelVisitor {
     ImGui::PopID();
   }
 
-  // One collapsing header per light, then add and remove buttons. A new
-  // light copies the last one, which is usually near where it should go.
-  void lights(std::string_view key, std::vector<Light>& list) {
+  // One collapsing header per item (a light, an emitter), then add and remove
+  // buttons. A new item copies the last one, which is usually near where it should go.
+  template <class T>
+  void list(const ListInfo& info, std::vector<T>& list) {
     const std::string outer = prefix_;
-    const std::string name(key);
+    const std::string name(info.key), item(info.item);
     const std::string header = name + " (" + std::to_string(list.size()) + ")###" + name;
     if (!ImGui::CollapsingHeader(header.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) return;
     ImGui::PushID(name.c_str());
@@ -164,13 +169,13 @@ class PanelVisitor {
     std::optional<std::size_t> removed;
     for (std::size_t i = 0; i < list.size(); ++i) {
       const std::string index = std::to_string(i);
-      const std::string title = "light " + index + ": " + std::string(kLightKindNames[static_cast<std::size_t>(list[i].kind)]) + "###light" + index;
+      const std::string title = item + " " + index + itemTitle(list[i]) + "###" + item + index;
       ImGui::PushID(static_cast<int>(i));
       if (ImGui::CollapsingHeader(title.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
         prefix_ = outer + name + "." + index + ".";
-        visitLight(*this, list[i]);
+        visitItem(*this, list[i]);
         prefix_ = outer;
-        if (ImGui::Button("remove this light")) removed = i;
+        if (ImGui::Button(("remove this " + item).c_str())) removed = i;
       }
       ImGui::PopID();
     }
@@ -178,8 +183,8 @@ class PanelVisitor {
       list.erase(list.begin() + static_cast<std::ptrdiff_t>(*removed));
       changedKey_ = outer + name + "." + std::to_string(*removed) + ".remove";
     }
-    if (ImGui::Button("add a light")) {
-      list.push_back(list.empty() ? Light{} : list.back());
+    if (ImGui::Button(("add a " + item).c_str()) && list.size() < info.max) {
+      list.push_back(list.empty() ? T{} : list.back());
       changedKey_ = outer + name + "." + std::to_string(list.size() - 1) + ".add";
     }
     ImGui::Unindent();

@@ -21,6 +21,7 @@ struct AreaSurface {
   glm::dvec2 corner[3];          // the snapped corners, either winding
   double z0 = 0, dzdx = 0, dzdy = 0;  // window z = z0 + dzdx·x + dzdy·y
   AreaRole role = AreaRole::Opaque;
+  bool additive = false;         // blended by the additive equation
 };
 
 // A convex part of one pixel: its area (a fraction of the pixel), its

@@ -35,16 +35,19 @@ inline glm::vec4 premultipliedOf(glm::vec4 held, Blending blending) {
 // over what the buffer holds at its pixel:
 //   straight       t = α_b·(1 − α_f), α_o = α_f + t, C_o = (C_f·α_f + C_b·t) / α_o (0 where α_o = 0)
 //   premultiplied  k = 1 − α_f, C_o = C_f·α_f + C_b·k, α_o = α_f + α_b·k
-inline glm::vec4 blend(glm::vec4 held, glm::vec3 fragment, float alpha, Blending blending) {
+// and, additive, what is behind keeps its weight: C_b·α_b in place of C_b·t
+// (straight), C_b in place of C_b·k (premultiplied); α_o as above.
+inline glm::vec4 blend(glm::vec4 held, glm::vec3 fragment, float alpha, Blending blending, bool additive) {
   const float a = clampUnit(alpha);
   const glm::vec3 b(held);
   if (blending == Blending::Premultiplied) {
     const float k = 1.0f - a;
-    return glm::vec4(fragment * a + b * k, a + held.a * k);
+    return glm::vec4(additive ? fragment * a + b : fragment * a + b * k, a + held.a * k);
   }
   const float t = held.a * (1.0f - a);
   const float out = a + t;
-  return out > 0.0f ? glm::vec4((fragment * a + b * t) / out, out) : glm::vec4(0.0f);
+  const float behind = additive ? held.a : t;
+  return out > 0.0f ? glm::vec4((fragment * a + b * behind) / out, out) : glm::vec4(0.0f);
 }
 
 }  // namespace facet::cpu

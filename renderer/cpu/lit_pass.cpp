@@ -131,6 +131,10 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         baseColor *= proceduralGrey(frame.procedural, {v[layout.model], v[layout.model + 1], v[layout.model + 2]}, frame.proceduralScale);
       else if (texture)
         baseColor *= glm::vec3(sampleBaseColorTexture(*texture, *material, stAt(material->baseColorSet), derivativesAt(material->baseColorSet)));
+      if (material->unlit) {  // KHR_materials_unlit: O_d itself, through the fog
+        color.at(px, py) = opaque(fogged(frame.fog, baseColor, depth));
+        continue;
+      }
       glm::vec3 lit;
       glm::vec3 interpolatedNormal(0.0f);
       if constexpr (kMode == ShadingMode::Pbr || kMode == ShadingMode::Phong) {
@@ -244,7 +248,7 @@ void blendTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         const int k = (py - r.y0) * kTileSize + (px - r.x0);
         if (scratch.fragment[k] != blended.id) continue;
         scratch.fragment[k] = kNoTriangle;
-        color.at(px, py) = blend(color.at(px, py), glm::vec3(fragments.at(px, py)), scratch.alpha[k], frame.blending);
+        color.at(px, py) = blend(color.at(px, py), glm::vec3(fragments.at(px, py)), scratch.alpha[k], frame.blending, material.additive);
       }
   }
 }

@@ -99,6 +99,7 @@ template <class Shadows>
 glm::vec3 shadeSurface(const SurfaceDraw& d, const Shadows& shadows, const SurfacePoint& p) {
   const FrameInputs& frame = *d.frame;
   const CourseMaterial& material = *d.material;
+  if (material.unlit) return baseColorAt(d, p);  // KHR_materials_unlit: O_d itself
   const auto emission = [&] {
     const int set = material.emissiveMap.set;
     return emissionAt(*d.emissiveMap, material, p.st[set], p.derivatives[set]);

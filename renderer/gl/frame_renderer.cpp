@@ -326,6 +326,8 @@ bool GlFrameRenderer::preparePrograms(const FrameInputs& frame) {
                                          .normalScale = at("normalScale"),
                                          .mapSets = at("mapSets"),
                                          .baseColorFactor = at("baseColorFactor"),
+                                         .unlit = at("unlit"),
+                                         .additive = at("additiveBlend"),
                                          .alpha = alphaUniforms(program),
                                          .program = std::move(program)});
     compiled = true;
@@ -535,6 +537,8 @@ void GlFrameRenderer::drawInstance(const LitProgram& lit, const FrameInputs& fra
   gl_.glProgramUniform1f(program, lit.metallic, material.metallic);
   gl_.glProgramUniform1f(program, lit.roughness, material.roughness);
   gl_.glProgramUniform3fv(program, lit.baseColorFactor, 1, glm::value_ptr(material.baseColor));
+  gl_.glProgramUniform1i(program, lit.unlit, material.unlit ? 1 : 0);
+  if (lit.additive >= 0) gl_.glProgramUniform1i(program, lit.additive, material.additive ? 1 : 0);
   setBaseColorUniforms(program, lit.alpha, material, textured);
   setMapUniforms(lit, material, variant);
 

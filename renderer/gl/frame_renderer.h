@@ -74,6 +74,7 @@ class GlFrameRenderer {
     GLint normalMapSampler, normalScale;  // the normal texture (Phong and pbr)
     GLint mapSets;                        // the texture coordinate set of each map above
     GLint baseColorFactor;
+    GLint unlit, additive;                // KHR_materials_unlit; the additive blending equation
     AlphaUniforms alpha;
     ShaderProgram program;
   };

@@ -22,6 +22,8 @@ CourseMaterial courseMaterial(const Material& material, const MaterialOverrides&
   out.blended = material.alphaMode == AlphaMode::Blend || (overrides.opacity && *overrides.opacity < 1.0f);
   out.masked = material.alphaMode == AlphaMode::Mask && !out.blended;
   out.alphaCutoff = out.blended ? transparency.shadowCutoff : material.alphaCutoff;
+  out.unlit = material.unlit;
+  out.additive = out.blended && material.additive;
   out.baseColorTexture = material.baseColorTexture;
   const TexcoordSets& sets = material.texcoordSets;
   out.baseColorSet = sets.baseColor;

@@ -259,8 +259,8 @@ glm::vec4 RayTracer::trace(const Ray& ray, const Path& path, RayStatistics& stat
     Path onward = path;
     onward.continuation = true;
     const float alpha = scene_.alphaAt(hit, ray);
-    onward.weight = path.weight * (1.0f - clampUnit(alpha));
-    result = cpu::blend(trace(behind, onward, statistics), color, alpha, Blending::Straight);
+    onward.weight = material.additive ? path.weight : path.weight * (1.0f - clampUnit(alpha));
+    result = cpu::blend(trace(behind, onward, statistics), color, alpha, Blending::Straight, material.additive);
   }
   // Beer's law over the distance travelled inside a medium.
   if (largest(path.medium) > 0.0f) {

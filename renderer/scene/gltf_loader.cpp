@@ -376,6 +376,7 @@ void convertMaterials(const tinygltf::Model& model, Scene& scene, Warnings& warn
       if (std::isfinite(s) && s >= 0) material.emissive *= static_cast<float>(s);
     }
     readRefraction(src, at("materials", m), material, warnings);
+    material.unlit = src.extensions.count("KHR_materials_unlit") > 0;  // the colour is O_d, no illumination
     material.doubleSided = src.doubleSided;
     // alphaMode and alphaCutoff are checked by checkGltfDocument.
     if (src.alphaMode == "MASK") {

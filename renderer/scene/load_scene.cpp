@@ -4,6 +4,7 @@
 
 #include "common/error.h"
 #include "scene/cornell_box.h"
+#include "volume/load_volume.h"
 #include "scene/default_scene.h"
 #include "scene/gltf_loader.h"
 #include "scene/primitives.h"
@@ -49,11 +50,32 @@ Scene primitive(std::string_view name, const std::string& path) {
 
 }  // namespace
 
-std::vector<std::string_view> builtinSceneNames() { return {"default", "cornell", "sphere", "cube", "plane", "cylinder", "torus"}; }
+std::vector<std::string_view> builtinSceneNames() { return {"default", "cornell", "fountain", "sphere", "cube", "plane", "cylinder", "torus"}; }
 
 Scene loadScene(const std::string& path) {
   if (path.empty() || path == "builtin:default") return makeDefaultScene();
   if (path == "builtin:cornell") return makeCornellBox();
+  if (path == "builtin:fountain") {
+    // The default scene with a fountain on its ground, between the objects
+    // (renderer/PIPELINE.md, section 12): the emitter's defaults.
+    Scene scene = makeDefaultScene();
+    scene.source = "builtin:fountain";
+    Emitter fountain;
+    fountain.position = {0.2f, 0.02f, -0.1f};
+    fountain.rate = 600.0f;
+    fountain.speed = 4.5f;
+    fountain.spread = 10.0f;
+    fountain.startSize = 0.06f;
+    fountain.endSize = 0.12f;
+    scene.emitters.push_back(fountain);
+    return scene;
+  }
+  if (isVolumeName(path)) {  // a volume on its own, in an empty scene (pipeline/scene_additions.h reads it)
+    Scene scene;
+    scene.source = path;
+    scene.volume.file = path;
+    return scene;
+  }
   if (path.rfind(kBuiltin, 0) != 0) return loadGltf(path);
   std::string_view name = std::string_view(path).substr(kBuiltin.size());
   constexpr std::string_view kGround = "+ground";

@@ -63,7 +63,7 @@ std::size_t Scene::triangleCount() const {
 }
 
 Bounds Scene::worldBounds() const {
-  Bounds bounds;
+  Bounds bounds = unmeshed;
   for (const MeshInstance& instance : instances) {
     const Mesh& mesh = meshes[static_cast<std::size_t>(instance.mesh)];
     for (const glm::vec3& p : mesh.positions) {

@@ -16,7 +16,10 @@
 #include "image/image.h"
 #include "image/mipmap.h"
 #include "scene/animation.h"
+#include "scene/emitter.h"
 #include "scene/light.h"
+#include "volume/transfer_function.h"
+#include "volume/volume.h"
 
 namespace facet {
 
@@ -92,6 +95,12 @@ struct Material {
   bool doubleSided = false;
   AlphaMode alphaMode = AlphaMode::Opaque;
   float alphaCutoff = 0.5f;       // MASK: a fragment whose alpha is below it is discarded
+  // KHR_materials_unlit: the colour is O_d (factor · COLOR_0 · texel) with no
+  // illumination, as lines and points are (particles' sprites, volume splats).
+  bool unlit = false;
+  // BLEND adds the fragment's light instead of laying it over
+  // (renderer/PIPELINE.md, section 7, "Transparency"): additive particles.
+  bool additive = false;
   // What the ray tracer refracts (renderer/PIPELINE.md, section 10):
   // KHR_materials_transmission, KHR_materials_ior, KHR_materials_volume.
   float transmission = 0.0f;      // the share of light transmitted, [0, 1]
@@ -213,6 +222,20 @@ struct Scene {
   // places the instances at settings.time with them; empty: the
   // instances' transforms are all there is.
   SceneAnimation animation;
+  // Particle emitters glTF nodes place (extras.facet_particles), drawn with the settings' own.
+  std::vector<Emitter> emitters;
+  // The settings' volume once read (pipeline/scene_additions.h): its samples,
+  // where it sits and its transfer function; ray casting draws it from here.
+  struct PlacedVolume {
+    std::string file;                    // the scene's own: a volume named as the scene (load_scene.h); volume.file replaces it
+    std::shared_ptr<const Volume> data;  // null: none
+    std::string key;                     // the file and resolution it was read with
+    glm::mat4 worldFromVolume{1.0f};     // the volume's model space (samples at (i, j, k)·spacing) to world
+    TransferFunction transfer;
+  } volume;
+  // What the scene draws without meshes (a ray-cast or splatted volume's
+  // box), counted in worldBounds so that auto cameras and lights frame it.
+  Bounds unmeshed;
   std::vector<std::string> warnings; // what a loader skipped or repaired
 
   std::size_t triangleCount() const;  // over all instances

@@ -12,6 +12,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "scene/emitter.h"
 #include "scene/light.h"
 #include "scene/scene.h"
 
@@ -212,6 +213,30 @@ struct RaySettings {
 };
 inline constexpr int kMaxRaySamples = 4096;
 
+// Particle systems (renderer/PIPELINE.md, section 12): the emitters of the
+// settings, particles.N.* (the scene's, from glTF node extras, come on top).
+inline constexpr std::size_t kMaxEmitters = 16;
+
+// Volume rendering (renderer/PIPELINE.md, section 11): a scalar volume
+// placed in the scene, drawn by the course's v-buffer ray casting,
+// splatting, or marching cubes' iso-surface.
+enum class VolumeMode { Raycast, Splat, Isosurface, Count };
+inline constexpr std::array<std::string_view, static_cast<int>(VolumeMode::Count)> kVolumeModeNames = {"raycast", "splat", "isosurface"};
+struct VolumeSettings {
+  std::string file;                   // a NRRD (.nrrd, .nhdr) or NIfTI-1 (.nii, .nii.gz) file, or builtin:marschner-lobb; empty: none
+  int resolution = 64;                // builtin:marschner-lobb: samples along each axis
+  VolumeMode mode = VolumeMode::Raycast;
+  std::string transfer = "grey";      // a preset, or control points "value r g b a, ..." (volume/transfer_function.h)
+  glm::vec3 center{0.0f, 1.0f, 0.0f};// world position of the volume box's centre
+  float size = 2.0f;                  // world length of the box's longest side
+  float step = 0.5f;                  // raycast: the distance between samples along a ray, in voxel spacings
+  float earlyTermination = 0.99f;     // raycast: a ray stops once its accumulated opacity reaches this (1: never)
+  bool emptySpaceSkipping = true;     // raycast: macro cells whose samples the transfer function makes transparent are stepped over
+  float splatRadius = 1.5f;           // splat: the footprint's radius, in voxel spacings (a Gaussian of σ = radius / 3)
+  std::optional<float> isoValue;      // isosurface: the value in the data's units; null: the middle of the data's range
+  glm::vec3 isoColor{0.9f, 0.85f, 0.75f};  // isosurface: the mesh's base colour, linear RGB
+};
+
 struct RenderSettings {
   int width = 800;   // image size in pixels
   int height = 600;
@@ -232,6 +257,8 @@ struct RenderSettings {
   EnvironmentSettings environment;
   FogSettings fog;
   RaySettings ray;
+  std::vector<Emitter> particles;
+  VolumeSettings volume;
   float time = 0.0f;                      // seconds into the scene's animation (glTF node animations)
   glm::vec3 background{0.02f, 0.025f, 0.035f};  // linear RGB
   float backgroundAlpha = 1.0f;                  // the colour buffer's alpha where no surface is drawn

@@ -21,10 +21,19 @@ struct FieldInfo {
 // Visitor interface (duck-typed): v.field(info, T& value) for float, int,
 // bool, glm::vec3, std::optional<float>, std::string (a file path) and enums with a names table
 // (v.choice(info, Enum& value, names)); v.group(key, fn) for nested objects;
-// v.lights(key, std::vector<Light>&) for the light list, whose elements
-// visitLight describes.
+// v.list(info, std::vector<T>&) for a list (the lights, the particle
+// emitters), whose elements visitItem describes.
+
+// A list of settings items: its key, what one item is called, the most it may hold.
+struct ListInfo {
+  std::string_view key;   // "lights"
+  std::string_view item;  // "light"
+  std::size_t max = 0;
+  std::string_view help;
+};
+
 template <class Visitor>
-void visitLight(Visitor& v, Light& l) {
+void visitItem(Visitor& v, Light& l) {
   v.choice({"kind", "point, directional or spot"}, l.kind, kLightKindNames);
   v.field({"position", "world position (point, spot)"}, l.position);
   v.field({"direction", "world direction the light shines in (directional, spot)"}, l.direction);
@@ -36,6 +45,36 @@ void visitLight(Visitor& v, Light& l) {
   v.field({"radius", "ray: soft shadows from a sphere of this radius (point, spot; world units) or a cone of this half-angle (directional; degrees)",
            0, 1e6},
           l.radius);
+}
+
+template <class Visitor>
+void visitItem(Visitor& v, Emitter& e) {
+  v.field({"position", "world position where particles are born"}, e.position);
+  v.field({"rate", "particles born per second", 1e-6, 1e9}, e.rate);
+  v.field({"startTime", "seconds: the first particle is born then", 0, 1e6}, e.startTime);
+  v.field({"direction", "world direction of the initial velocity (not zero)"}, e.direction);
+  v.field({"spread", "degrees: initial directions fill a cone of this half-angle", 0, 180}, e.spread);
+  v.field({"speed", "initial speed, world units per second", 0, 1e6}, e.speed);
+  v.field({"speedSpread", "speeds are uniform in speed +- speedSpread", 0, 1e6}, e.speedSpread);
+  v.field({"lifetime", "seconds a particle lives", 1e-3, 1e4}, e.lifetime);
+  v.field({"startColor", "linear RGB at birth", 0, 1, FieldKind::Color}, e.startColor);
+  v.field({"endColor", "linear RGB at death (linear in age between)", 0, 1, FieldKind::Color}, e.endColor);
+  v.field({"startAlpha", "alpha at birth", 0, 1}, e.startAlpha);
+  v.field({"endAlpha", "alpha at death", 0, 1}, e.endAlpha);
+  v.field({"startSize", "the sprite's side at birth, world units", 0, 1e6}, e.startSize);
+  v.field({"endSize", "the sprite's side at death, world units", 0, 1e6}, e.endSize);
+  v.field({"mass", "m in a = F/m, kg", 1e-9, 1e9}, e.mass);
+  v.field({"gravity", "acceleration on every particle, m/s^2"}, e.gravity);
+  v.field({"drag", "k of the drag force F = k (wind - v), kg/s", 0, 1e6}, e.drag);
+  v.field({"wind", "the air's velocity, m/s"}, e.wind);
+  v.field({"ground", "particles bounce off the plane y = groundHeight"}, e.ground);
+  v.field({"groundHeight", "y of the ground plane", -1e6, 1e6}, e.groundHeight);
+  v.field({"restitution", "the share of the normal speed kept at a bounce", 0, 1}, e.restitution);
+  v.field({"friction", "the share of the tangential speed lost at a bounce", 0, 1}, e.friction);
+  v.field({"sprite", "a PNG with alpha drawn on each particle; empty: a soft disc"}, e.sprite);
+  v.choice({"blending", "over: the frame's blending equation; additive: C_o = C_b a_b + C_f a_f, adding light"}, e.blending, kSpriteBlendingNames);
+  v.field({"seed", "the generator's seed: the same seed, the same particles", 0, 16777216}, e.seed);
+  v.field({"step", "seconds: the fixed step Newton's laws are integrated with", 1e-5, 1}, e.step);
 }
 
 template <class Visitor>
@@ -59,7 +98,7 @@ void visitSettings(Visitor& v, RenderSettings& s) {
     v.field({"shutter", "ray: seconds the shutter stays open from `time`: motion blur of what the scene's animation moves", 0, 1e6}, c.shutter);
   });
   v.choice({"lightSource", "auto: the scene's lights or one fitted to the scene; manual: the list in lights"}, s.lightSource, kSourceNames);
-  v.lights("lights", s.lights);
+  v.list({"lights", "light", kMaxLights, "the lights of lightSource = manual"}, s.lights);
   v.field({"ambient", "I_a, ambient intensity", 0, 1}, s.ambient);
   v.choice({"shading", "flat, gouraud, phong or pbr (glTF's metallic-roughness BRDF)"}, s.shading, kShadingModeNames);
   v.choice({"specular", "phong (R.V) or blinn-phong (N.H)"}, s.specular, kSpecularModelNames);
@@ -147,6 +186,23 @@ void visitSettings(Visitor& v, RenderSettings& s) {
     v.field({"seed", "the paths' generator seed (the same seed, the same image, whatever the threads)", 0, 16777216}, r.seed);
     v.field({"gloss", "reflected rays spread over the Phong lobe of the surface's exponent n (glossy reflection)"}, r.gloss);
     v.field({"translucency", "transmitted rays spread over the same lobe (translucency)"}, r.translucency);
+  });
+  v.list({"particles", "emitter", kMaxEmitters, "particle emitters, on top of those the scene's glTF nodes place"}, s.particles);
+  v.group("volume", [&] {
+    VolumeSettings& vs = s.volume;
+    v.field({"file", "a NRRD (.nrrd, .nhdr) or NIfTI-1 (.nii, .nii.gz) volume, or builtin:marschner-lobb; empty: none"}, vs.file);
+    v.field({"resolution", "builtin:marschner-lobb: samples along each axis", 2, 512}, vs.resolution);
+    v.choice({"mode", "raycast (v-buffer ray casting), splat (footprints back to front) or isosurface (marching cubes)"}, vs.mode, kVolumeModeNames);
+    v.field({"transfer", "the transfer function: a preset (grey, mri, bone, rainbow, iso-surface) or points 'value r g b a, ...', values increasing"},
+            vs.transfer);
+    v.field({"center", "world position of the volume box's centre"}, vs.center);
+    v.field({"size", "world length of the volume box's longest side", 1e-6, 1e9}, vs.size);
+    v.field({"step", "raycast: distance between samples along a ray, in voxel spacings", 0.01, 16}, vs.step);
+    v.field({"earlyTermination", "raycast: a ray stops once its opacity reaches this (1: never)", 0, 1}, vs.earlyTermination);
+    v.field({"emptySpaceSkipping", "raycast: step over macro cells the transfer function makes transparent"}, vs.emptySpaceSkipping);
+    v.field({"splatRadius", "splat: the footprint's radius in voxel spacings (Gaussian, sigma = radius / 3)", 0.5, 8}, vs.splatRadius);
+    v.field({"isoValue", "isosurface: the iso value in the data's units (null: the middle of the data's range)", -1e30, 1e30}, vs.isoValue);
+    v.field({"isoColor", "isosurface: the mesh's base colour, linear RGB", 0, 1, FieldKind::Color}, vs.isoColor);
   });
   v.field({"time", "seconds into the scene's glTF animations: where they place its meshes", 0, 1e6}, s.time);
   v.field({"background", "linear RGB of empty pixels, each in [0, 1]", 0, 1, FieldKind::Color}, s.background);

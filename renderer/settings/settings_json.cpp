@@ -60,15 +60,16 @@ struct JsonWriter {
     out = parent;
     (*out)[std::string(key)] = std::move(child);
   }
-  void lights(std::string_view key, std::vector<Light>& list) {
+  template <class T>
+  void list(const ListInfo& info, std::vector<T>& list) {
     json array = json::array();
-    for (Light& l : list) {
+    for (T& element : list) {
       json item = json::object();
       JsonWriter w{&item};
-      visitLight(w, l);
+      visitItem(w, element);
       array.push_back(std::move(item));
     }
-    (*out)[std::string(key)] = std::move(array);
+    (*out)[std::string(info.key)] = std::move(array);
   }
 };
 
@@ -163,17 +164,20 @@ struct JsonReader {
     checkNoUnknownKeys();
     std::swap(*this, nested);
   }
-  void lights(std::string_view key, std::vector<Light>& list) {
-    const json* j = find({key, ""});
+  template <class T>
+  void list(const ListInfo& info, std::vector<T>& list) {
+    const FieldInfo f{info.key, ""};
+    const json* j = find(f);
     if (!j) return;
-    if (!j->is_array()) fail({key, ""}, "expected an array of lights, got " + describeJson(*j));
-    if (j->size() > kMaxLights) fail({key, ""}, std::to_string(j->size()) + " lights, a frame shades at most " + std::to_string(kMaxLights));
-    list.assign(j->size(), Light{});
+    if (!j->is_array()) fail(f, "expected an array of " + std::string(info.item) + "s, got " + describeJson(*j));
+    if (j->size() > info.max)
+      fail(f, std::to_string(j->size()) + " " + std::string(info.item) + "s, a frame takes at most " + std::to_string(info.max));
+    list.assign(j->size(), T{});
     for (std::size_t i = 0; i < j->size(); ++i) {
-      const std::string path = join(prefix, key) + "." + std::to_string(i);
+      const std::string path = join(prefix, info.key) + "." + std::to_string(i);
       if (!(*j)[i].is_object()) throw Error(settingsKey(path) + ": expected an object, got " + describeJson((*j)[i]));
       JsonReader item{&(*j)[i], path, {}};
-      visitLight(item, list[i]);
+      visitItem(item, list[i]);
       item.checkNoUnknownKeys();
     }
   }
@@ -197,6 +201,41 @@ void validate(const RenderSettings& s) {
     if (l.kind != LightKind::Directional && !(l.attenuation.x + l.attenuation.y + l.attenuation.z > 0.0f))
       throw Error(key + ".attenuation': c1 + c2 + c3 must be positive");
   }
+  for (std::size_t i = 0; i < s.particles.size(); ++i)
+    if (!(glm::length(s.particles[i].direction) > 0.0f))
+      throw Error("settings key 'particles." + std::to_string(i) + ".direction': must not be zero");
+}
+
+// The JSON of a default element of the list at dotted key `listKey` ("lights", "particles.emitters").
+struct DefaultItemWriter {
+  std::string target, prefix;
+  json found;
+
+  template <class T>
+  void field(const FieldInfo&, const T&) {}
+  template <class E, std::size_t N>
+  void choice(const FieldInfo&, E, const std::array<std::string_view, N>&) {}
+  template <class Fn>
+  void group(std::string_view key, Fn fn) {
+    const std::string parent = prefix;
+    prefix = join(prefix, key);
+    fn();
+    prefix = parent;
+  }
+  template <class T>
+  void list(const ListInfo& info, std::vector<T>&) {
+    if (join(prefix, info.key) != target) return;
+    T element;
+    found = json::object();
+    JsonWriter writer{&found};
+    visitItem(writer, element);
+  }
+};
+json defaultItem(const std::string& listKey) {
+  RenderSettings defaults;
+  DefaultItemWriter writer{listKey, "", json::object()};
+  visitSettings(writer, defaults);
+  return writer.found;
 }
 
 }  // namespace
@@ -259,13 +298,7 @@ void applySetting(RenderSettings& settings, const std::string& assignment) {
       } catch (const std::exception&) {
         throw Error(settingsKey(walked) + ": expected an index into the list");
       }
-      if (index == node->size()) {
-        json fresh = json::object();  // one past the end appends a default element
-        Light light;
-        JsonWriter writer{&fresh};
-        visitLight(writer, light);
-        node->push_back(std::move(fresh));
-      }
+      if (index == node->size()) node->push_back(defaultItem(walked.substr(0, walked.rfind('.'))));  // one past the end appends a default element
       if (index >= node->size()) throw Error(settingsKey(walked) + ": index past the end of the list (" + std::to_string(node->size()) + " elements)");
       node = &(*node)[index];
     } else if (node->is_object()) {

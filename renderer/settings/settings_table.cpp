@@ -49,12 +49,13 @@ struct TableWriter {
     fn();
     prefix = parent;
   }
-  void lights(std::string_view key, std::vector<Light>&) {
-    *out += "| `" + prefix + std::string(key) + "` | `[]` | up to " + std::to_string(kMaxLights) +
-            " | the lights of lightSource = manual, each with the keys below |\n";
-    Light light;
-    TableWriter item{prefix + std::string(key) + ".N.", out};
-    visitLight(item, light);
+  template <class T>
+  void list(const ListInfo& info, std::vector<T>&) {
+    *out += "| `" + prefix + std::string(info.key) + "` | `[]` | up to " + std::to_string(info.max) + " | " + std::string(info.help) +
+            ", each with the keys below |\n";
+    T element;
+    TableWriter item{prefix + std::string(info.key) + ".N.", out};
+    visitItem(item, element);
   }
 };
 

@@ -220,7 +220,7 @@ TEST_CASE("anti-aliasing, area: each cell is shaded at its centroid, as a sample
   cpu::Interpolation planes(v[0], v[1], v[2]);
   planes.setUpVaryings(1);
   cpu::AreaAveraging area(2, 1);
-  area.collect(snapped, planes, cpu::AreaRole::Opaque);
+  area.collect(snapped, planes, cpu::AreaRole::Opaque, false);
   area.cut();
   area.shade(planes, [](const cpu::Interpolation& moved, int px, int py) -> std::optional<glm::vec4> {
     return glm::vec4(moved.varyingAt(0, px, py), 0.0f, 0.0f, 1.0f);

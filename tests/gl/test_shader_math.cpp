@@ -192,7 +192,7 @@ TEST_CASE("shader arithmetic: exp2Of and shading=pbr's Fresnel, GGX, Smith visib
                    }) == 0);
 }
 
-TEST_CASE("shader arithmetic: both blending equations, the premultiplied buffer's store and resolve and the samples' sum give the CPU's bits") {
+TEST_CASE("shader arithmetic: both blending equations (over and additive), the premultiplied buffer's store and resolve and the samples' sum give the CPU's bits") {
   std::mt19937 rng(7);
   std::vector<glm::vec4> held = random(rng, 0.0f, 1.0f), fragment = random(rng, -0.5f, 1.5f);  // alpha beyond [0, 1] is clamped
   // What each equation decides: alpha NaN, 0, 1, below 0; nothing under a clear fragment (α_o = 0); colours above 1.
@@ -203,9 +203,13 @@ TEST_CASE("shader arithmetic: both blending equations, the premultiplied buffer'
     const Blending blending = premultiplied ? Blending::Premultiplied : Blending::Straight;
     const std::string p = premultiplied ? "true" : "false";
     CAPTURE(p);
-    CHECK(mismatches("blend(a, b.xyz, b.w, " + p + ")", held, fragment, [&](const glm::vec4& a, const glm::vec4& b) {
-            return cpu::blend(a, glm::vec3(b), b.w, blending);
-          }) == 0);
+    for (const bool additive : {false, true}) {
+      const std::string add = additive ? "true" : "false";
+      CAPTURE(add);
+      CHECK(mismatches("blend(a, b.xyz, b.w, " + p + ", " + add + ")", held, fragment, [&](const glm::vec4& a, const glm::vec4& b) {
+              return cpu::blend(a, glm::vec3(b), b.w, blending, additive);
+            }) == 0);
+    }
     CHECK(mismatches("vec4(stored(a.xyz, a.w, " + p + ").xyz, unstored(b, " + p + ").x)", held, fragment, [&](const glm::vec4& a, const glm::vec4& b) {
             return glm::vec4(glm::vec3(cpu::stored(glm::vec3(a), a.w, blending)), cpu::unstored(b, blending).x);
           }) == 0);

@@ -37,7 +37,7 @@ bool pixelsOverlapped(const AreaSurface& s, int width, int height, int& x0, int&
 
 }  // namespace
 
-void AreaAveraging::collect(const SnappedTriangle& snapped, const Interpolation& planes, AreaRole role) {
+void AreaAveraging::collect(const SnappedTriangle& snapped, const Interpolation& planes, AreaRole role, bool additive) {
   AreaSurface s;
   // The grid puts pixel (px, py)'s centre at (256·px, 256·py): window x = X/256 + 0.5.
   for (int k = 0; k < 3; ++k) s.corner[k] = {snapped.X[k] / 256.0 + 0.5, snapped.Y[k] / 256.0 + 0.5};
@@ -47,6 +47,7 @@ void AreaAveraging::collect(const SnappedTriangle& snapped, const Interpolation&
   s.dzdy = z.dady;
   s.z0 = static_cast<double>(z.a0) - 0.5 * s.dzdx - 0.5 * s.dzdy;
   s.role = role;
+  s.additive = additive;
   surfaces_.push_back(s);
 }
 
@@ -140,7 +141,7 @@ ColorBuffer AreaAveraging::composite(const FrameInputs& frame) const {
           break;
         }
         std::sort(blended.begin(), blended.end(), [&](std::uint32_t a, std::uint32_t b) { return fragments_[a] < fragments_[b]; });
-        for (const std::uint32_t f : blended) held = blend(held, glm::vec3(shaded_[f]), shaded_[f].a, frame.blending);
+        for (const std::uint32_t f : blended) held = blend(held, glm::vec3(shaded_[f]), shaded_[f].a, frame.blending, surfaces_[fragments_[f]].additive);
         total += cell.area * glm::dvec4(premultipliedOf(held, frame.blending));
       }
       sum.at(x, y) = glm::vec4(total);

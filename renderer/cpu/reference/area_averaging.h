@@ -28,7 +28,7 @@ class AreaAveraging {
 
   // Until cut(): the lit pass's triangles, as set up, in draw order.
   bool collecting() const { return !cut_; }
-  void collect(const SnappedTriangle& snapped, const Interpolation& planes, AreaRole role);
+  void collect(const SnappedTriangle& snapped, const Interpolation& planes, AreaRole role, bool additive);
 
   // Every pixel's cells. Throws facet::Error past kMaxAreaCells in a pixel,
   // or when the cells would pass the frame budget.

@@ -76,7 +76,7 @@ using FragmentAlpha = std::function<float(const Interpolation& planes, int px, i
 // One triangle, its three vertices after the vertex stage, to the z-buffer.
 void drawTriangle(const ClipVertex (&vertex)[3], int varyingCount, bool cullBackFaces, std::uint32_t id, Target& target,
                   const FragmentShader& shade, const FragmentTest& keep = nullptr, const FragmentAlpha& blendedAlpha = nullptr,
-                  Blending blending = Blending::Straight) {
+                  Blending blending = Blending::Straight, bool additive = false) {
   const float halfWidth = 0.5f * static_cast<float>(target.width), halfHeight = 0.5f * static_cast<float>(target.height);
   // Clipping: the triangle itself when it lies inside the view volume, else the clipped polygon as a fan.
   WindowVertex window[3];
@@ -99,7 +99,7 @@ void drawTriangle(const ClipVertex (&vertex)[3], int varyingCount, bool cullBack
     planes.setUpVaryings(varyingCount);
     if (target.area) {  // area-weighted averaging: the triangle as a surface, or its fragments in the cells it shows in
       if (target.area->collecting()) {
-        target.area->collect(snapped, planes, blendedAlpha ? AreaRole::Blended : keep ? AreaRole::Masked : AreaRole::Opaque);
+        target.area->collect(snapped, planes, blendedAlpha ? AreaRole::Blended : keep ? AreaRole::Masked : AreaRole::Opaque, additive);
         continue;
       }
       target.area->shade(planes, [&](const Interpolation& moved, int px, int py) -> std::optional<glm::vec4> {
@@ -127,7 +127,7 @@ void drawTriangle(const ClipVertex (&vertex)[3], int varyingCount, bool cullBack
       planes.varyingsAt(px, py, varyings);
       const glm::vec3 lit = shade(varyings, snapped.frontFacing, planes, px, py);
       glm::vec4& held = target.color->at(px, py);
-      held = blendedAlpha ? blend(held, lit, blendedAlpha(planes, px, py), blending) : opaque(lit);
+      held = blendedAlpha ? blend(held, lit, blendedAlpha(planes, px, py), blending, additive) : opaque(lit);
     });
   }
 }
@@ -284,7 +284,7 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
       };
       const auto id = static_cast<std::uint32_t>(firstTriangle[run.instance] + t / 3 + 1);
       drawTriangle(v, count, instance.cullBackFaces, id, target, fragment, material.masked ? keep : nullptr, material.blended ? alpha : nullptr,
-                   frame.blending);
+                   frame.blending, material.additive);
     }
   }
 }

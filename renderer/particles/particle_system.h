@@ -1,0 +1,41 @@
+#pragma once
+// The particles of an emitter at a time T (renderer/PIPELINE.md, section 12,
+// "Particle systems"): Newton's laws integrated with a fixed step from each
+// particle's birth, its random numbers drawn from (seed, particle index)
+// alone, so that the state at T is the same for every backend, thread count
+// and order of evaluation.
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "scene/emitter.h"
+
+namespace facet {
+
+inline constexpr std::uint64_t kMaxParticles = 4'000'000;  // alive at once, over every emitter of a frame
+
+struct Particle {
+  std::uint64_t index = 0;   // the n-th particle the emitter bore (born at startTime + n/rate)
+  glm::vec3 position{0.0f};  // world space at T
+  glm::vec3 velocity{0.0f};  // world units per second at T
+  float age = 0.0f;          // seconds since birth, in [0, lifetime)
+  glm::vec4 color{1.0f};     // linear RGB and alpha at this age
+  float size = 0.0f;         // world units
+};
+
+// How many particles `emitter` has alive at `time` (those born in
+// (time − lifetime, time]), counted without simulating.
+std::uint64_t aliveParticleCount(const Emitter& emitter, float time);
+
+// The particles alive at `time`, by increasing index, integrated with the
+// fixed `step` (seconds) from their birth: per step, a = g + (k/m)·(wind − v),
+// v += a·step, p += v·step (semi-implicit Euler), then the ground bounce;
+// the last, partial step is of the remaining time. Runs on `threads` workers
+// (0: the hardware's); the result does not depend on how many.
+// Throws facet::Error naming `key` ("particles.0") when the emitter would
+// have more than kMaxParticles alive, or a value is out of range.
+std::vector<Particle> simulateParticles(const Emitter& emitter, float time, float step, const char* key, int threads = 0);
+
+}  // namespace facet

@@ -1,0 +1,354 @@
+// readNrrd: NRRD volumes (.nrrd, .nhdr) through teem, checked before the samples are read.
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <teem/nrrd.h>
+#include <zlib.h>
+
+#include "common/atomic_file.h"
+#include "common/error.h"
+#include "common/quote.h"
+#include "scene/memory_budget.h"
+#include "settings/render_settings.h"
+#include "volume/load_volume.h"
+
+// teem's gzip stream (nrrd/gzio.c): exported by libteem, declared only in
+// its private header. Only zlib's gzFile type comes from zlib.h.
+extern "C" {
+gzFile _nrrdGzOpen(FILE* fd, const char* mode);
+int _nrrdGzClose(gzFile file);
+int _nrrdGzRead(gzFile file, void* buf, unsigned int len, unsigned int* didread);
+}
+
+namespace facet {
+namespace {
+
+// teem grows its line buffer to fit any line, and a header has no length
+// field: it is looked at first and refused past this (real ones are < 4 kB).
+constexpr std::size_t kMaxHeaderBytes = std::size_t{1} << 20;
+// How much of teem's message an error line keeps.
+constexpr std::size_t kMaxTeemMessage = 240;
+
+// teem's reading state and array, released on every way out.
+class TeemNrrd {
+ public:
+  TeemNrrd() : nrrd_(nrrdNew()), io_(nrrdIoStateNew()) {}
+  ~TeemNrrd() {
+    if (io_) {
+      airFclose(io_->dataFile);  // kept open for the samples (airFclose leaves stdin alone)
+      io_->dataFile = nullptr;
+      nrrdIoStateNix(io_);
+    }
+    if (nrrd_) nrrdNuke(nrrd_);
+  }
+  TeemNrrd(const TeemNrrd&) = delete;
+  TeemNrrd& operator=(const TeemNrrd&) = delete;
+  Nrrd* nrrd() const { return nrrd_; }
+  NrrdIoState* io() const { return io_; }
+
+ private:
+  Nrrd* nrrd_;
+  NrrdIoState* io_;
+};
+
+// teem reports through biff, outermost call first:
+//   [nrrd] nrrdLoad: trouble reading "a.nrrd"
+//   [nrrd] _nrrdFormatNRRD_read: trouble parsing sizes info |2 2 x|
+//   [nrrd] _nrrdSizeCheck: axis 2 size is zero!
+// One line keeps the field being parsed and the innermost reason:
+// "sizes: axis 2 size is zero!".
+std::string teemProblem() {
+  if (!biffCheck(NRRD)) return "teem cannot read it";  // biffGetDone would warn on stderr
+  char* raw = biffGetDone(NRRD);
+  const std::string text = raw ? raw : "";
+  std::free(raw);
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    std::string line = text.substr(start, end - start);
+    if (line.rfind("[nrrd] ", 0) == 0) line.erase(0, 7);
+    const std::size_t colon = line.find(": ");  // after the function's name
+    if (colon != std::string::npos && line.find(' ') > colon) line.erase(0, colon + 2);
+    if (!line.empty() && line != "trouble" && line != ":") lines.push_back(line);
+    start = end + 1;
+  }
+  if (lines.empty()) return "teem cannot read it";
+  std::string field;
+  for (const std::string& line : lines) {
+    constexpr std::string_view kParsing = "trouble parsing ";
+    const std::size_t info = line.find(" info");
+    if (line.rfind(kParsing, 0) == 0 && info != std::string::npos) field = line.substr(kParsing.size(), info - kParsing.size()) + ": ";
+  }
+  std::string problem = field + lines.back();
+  for (char& c : problem)
+    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
+  if (problem.size() > kMaxTeemMessage) problem = problem.substr(0, kMaxTeemMessage) + "...";
+  return problem;
+}
+
+// Drops what teem has said so far: biff keeps messages until they are taken,
+// and a later teemProblem() would report them as this file's.
+void discardTeemMessages() {
+  if (biffCheck(NRRD)) std::free(biffGetDone(NRRD));
+}
+
+void requireRegularFile(const std::string& path, const std::string& shown) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (ec && ec.value() != ENOENT && ec.value() != ENOTDIR) throw Error(shown + ": " + describeErrno(ec.value()));
+  if (ec || !fs::exists(status)) throw Error(shown + ": no such file");
+  if (!fs::is_regular_file(status)) throw Error(shown + ": not a regular file");
+}
+
+std::string lowerCase(std::string_view text) {
+  std::string lower(text);
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return lower;
+}
+
+std::string_view trimmed(std::string_view text) {
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front()))) text.remove_prefix(1);
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.remove_suffix(1);
+  return text;
+}
+
+// Looks at the header before teem does: the magic, the header's length, and
+// its "data file" field, so that teem never parses an endless line, reads
+// standard input, or walks a numbered list of thousands of data files.
+void checkHeaderText(const std::string& path, const std::string& shown) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(shown + ": cannot open (" + describeErrno(errno) + ")");
+  std::string head(kMaxHeaderBytes + 1, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  if (head.rfind("NRRD000", 0) != 0) {
+    if (head.size() >= 2 && static_cast<unsigned char>(head[0]) == 0x1f && static_cast<unsigned char>(head[1]) == 0x8b)
+      throw Error(shown + ": not a NRRD file but gzip data (NRRD compresses its samples, not the header: use encoding: gzip)");
+    throw Error(shown + ": not a NRRD file (it does not start with NRRD000)");
+  }
+  bool ended = false;
+  std::size_t start = 0;
+  while (start < head.size()) {
+    const std::size_t newline = head.find('\n', start);
+    if (newline == std::string::npos) break;  // a last line without its newline: only a detached header may end so
+    std::string_view line(head.data() + start, newline - start);
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    start = newline + 1;
+    if (line.empty()) {
+      ended = true;
+      break;
+    }
+    const std::size_t colon = line.find(':');
+    if (colon == std::string_view::npos || line[0] == '#' || (colon + 1 < line.size() && line[colon + 1] == '=')) continue;
+    const std::string key = lowerCase(trimmed(line.substr(0, colon)));
+    if (key != "data file" && key != "datafile") continue;
+    const std::string_view value = trimmed(line.substr(colon + 1));
+    if (value == "-") throw Error(shown + ": data file '-' (standard input) is not read");
+    if (value.rfind("LIST", 0) == 0 || value.find_first_of(" \t") != std::string_view::npos)
+      throw Error(shown + ": samples split over several data files are not supported (one data file)");
+  }
+  if (!ended && head.size() > kMaxHeaderBytes) throw Error(shown + ": header longer than " + byteCount(kMaxHeaderBytes));
+}
+
+struct SampleType {
+  const char* name = "";  // as messages say it
+  std::size_t bytes = 0;
+  bool supported = false;
+};
+
+SampleType sampleType(int type) {
+  switch (type) {
+    case nrrdTypeChar: return {"int8", 1, true};
+    case nrrdTypeUChar: return {"uint8", 1, true};
+    case nrrdTypeShort: return {"int16", 2, true};
+    case nrrdTypeUShort: return {"uint16", 2, true};
+    case nrrdTypeFloat: return {"float32", 4, true};
+    case nrrdTypeInt: return {"int32", 4, false};
+    case nrrdTypeUInt: return {"uint32", 4, false};
+    case nrrdTypeLLong: return {"int64", 8, false};
+    case nrrdTypeULLong: return {"uint64", 8, false};
+    case nrrdTypeDouble: return {"float64", 8, false};
+    case nrrdTypeBlock: return {"block", 0, false};
+    default: return {"unknown", 0, false};  // teem knows no other
+  }
+}
+
+const char* const kAxisNames[3] = {"x", "y", "z"};
+
+// A number as a message shows it: "-2", "0.5", "inf".
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+// The distance between samples along an axis: "spacings", else the length of
+// its "space directions" vector, else 1.
+double axisSpacing(const Nrrd& nrrd, int axis) {
+  const NrrdAxisInfo& info = nrrd.axis[axis];
+  if (!std::isnan(info.spacing)) return info.spacing;
+  if (nrrd.spaceDim > 0 && !std::isnan(info.spaceDirection[0])) {
+    double squares = 0.0;
+    for (unsigned i = 0; i < nrrd.spaceDim && i < NRRD_SPACE_DIM_MAX; ++i) squares += info.spaceDirection[i] * info.spaceDirection[i];
+    return std::sqrt(squares);
+  }
+  return 1.0;
+}
+
+// gzip-encoded samples through teem's gzip stream, the one its gzip
+// encoding reads with, but closed on every path: the encoding's reader
+// leaks the stream whenever the data is truncated or corrupt. `skip`
+// decompressed bytes come first, as "byte skip" means for compressed data.
+void readGzip(FILE* data, long skip, unsigned char* out, std::size_t count, const std::string& what) {
+  const long position = std::ftell(data);
+  unsigned char magic[2] = {};
+  if (position < 0 || ::pread(fileno(data), magic, 2, position) != 2 || magic[0] != 0x1f || magic[1] != 0x8b)
+    throw Error(what + ": the data is not gzip data");
+  const auto close = [](gzFile stream) {
+    _nrrdGzClose(stream);
+    discardTeemMessages();  // closing a failed stream adds teem's complaint
+  };
+  const std::unique_ptr<gzFile_s, decltype(close)> gz(_nrrdGzOpen(data, "rb"), close);
+  if (!gz) throw Error(what + ": " + teemProblem());
+  const auto read = [&](unsigned char* into, std::size_t n) {
+    unsigned got = 0;
+    return _nrrdGzRead(gz.get(), into, static_cast<unsigned>(n), &got) == 0 && got == n;
+  };
+  const std::string truncated = what + ": truncated or corrupt gzip data (" + std::to_string(count) + " bytes expected)";
+  constexpr std::size_t kChunk = std::size_t{1} << 20;
+  std::vector<unsigned char> skipped(std::min<std::size_t>(kChunk, static_cast<std::size_t>(std::max(skip, 0L))));
+  for (long done = 0; done < skip;) {
+    const std::size_t n = std::min(skipped.size(), static_cast<std::size_t>(skip - done));
+    if (!read(skipped.data(), n)) throw Error(truncated);
+    done += static_cast<long>(n);
+  }
+  for (std::size_t done = 0; done < count;) {
+    const std::size_t n = std::min(kChunk, count - done);
+    if (!read(out + done, n)) throw Error(truncated);
+    done += n;
+  }
+}
+
+// Samples as read (little- or big-endian as the header says) to floats.
+template <typename T>
+void convert(const unsigned char* bytes, bool swap, std::vector<float>& values) {
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    unsigned char b[sizeof(T)];
+    std::memcpy(b, bytes + i * sizeof(T), sizeof(T));
+    if (swap) std::reverse(b, b + sizeof(T));
+    T v;
+    std::memcpy(&v, b, sizeof(T));
+    values[i] = static_cast<float>(v);
+  }
+}
+
+}  // namespace
+
+Volume readNrrd(const std::string& path) {
+  const std::string shown = shownPath(path);
+  requireRegularFile(path, shown);
+  checkHeaderText(path, shown);
+
+  // The header, with the data file opened and positioned but not read:
+  // the samples are checked and priced first.
+  discardTeemMessages();
+  TeemNrrd teem;
+  if (!teem.nrrd() || !teem.io()) throw Error(shown + ": teem cannot start reading");
+  NrrdIoState& io = *teem.io();
+  io.skipData = AIR_TRUE;
+  io.keepNrrdDataFileOpen = AIR_TRUE;
+  const std::string teemPath = path == "-" ? "./-" : path;  // teem reads "-" as standard input
+  if (nrrdLoad(teem.nrrd(), teemPath.c_str(), &io)) throw Error(shown + ": " + teemProblem());
+  const Nrrd& nrrd = *teem.nrrd();
+
+  if (nrrd.dim != 3) throw Error(shown + ": " + countOf(nrrd.dim, "axis", "axes") + ", a volume has 3");
+  const SampleType type = sampleType(nrrd.type);
+  if (!type.supported)
+    throw Error(shown + ": " + type.name + " samples are not supported (int8, uint8, int16, uint16 and float32 are)");
+  Volume volume;
+  volume.source = path;
+  std::string dims;
+  for (int a = 0; a < 3; ++a) {
+    const std::size_t n = nrrd.axis[a].size;
+    if (n < 2) throw Error(shown + ": " + countOf(n, "sample") + " along " + kAxisNames[a] + ", a volume needs at least 2");
+    if (n > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+      throw Error(shown + ": " + std::to_string(n) + " samples along " + kAxisNames[a] + " are more than facet indexes");
+    volume.size[a] = static_cast<int>(n);
+    if (a) dims += 'x';
+    dims += std::to_string(n);
+    const double spacing = axisSpacing(nrrd, a);
+    if (!(std::isfinite(spacing) && spacing > 0.0 && spacing <= std::numeric_limits<float>::max()))
+      throw Error(shown + ": spacing along " + kAxisNames[a] + " is " + number(spacing) + ", not a positive number");
+    volume.spacing[a] = static_cast<float>(spacing);
+  }
+  const std::string samples = dims + " " + type.name + " samples";
+
+  // Priced before anything is allocated: the floats kept and the file's samples read first.
+  const std::uint64_t count = static_cast<std::uint64_t>(volume.size.x) * static_cast<std::uint64_t>(volume.size.y);  // < 2^62
+  const std::uint64_t perSample = sizeof(float) + type.bytes;
+  if (count > std::numeric_limits<std::uint64_t>::max() / perSample / static_cast<std::uint64_t>(volume.size.z))
+    throw Error(shown + ": " + samples + " need more than the scene budget of " + byteCount(kSceneMemoryBudget));  // bytes past 2^64
+  const std::uint64_t total = count * static_cast<std::uint64_t>(volume.size.z);
+  MemoryBudget budget(kSceneMemoryBudget, "scene budget");
+  budget.charge(total * perSample, shown + ": " + samples);
+  const std::size_t fileBytes = static_cast<std::size_t>(total * type.bytes);
+
+  FILE* data = io.dataFile;
+  if (!data) throw Error(shown + ": teem opened no data file");
+  const bool detached = io.dataFNArr && io.dataFNArr->len > 0;
+  const std::string dataName = detached && io.dataFN && io.dataFN[0] ? "its data file " + shownPath(io.dataFN[0]) : "the file";
+  struct stat info {};
+  if (fstat(fileno(data), &info) != 0 || !S_ISREG(info.st_mode)) throw Error(shown + ": " + dataName + " is not a regular file");
+  if (io.encoding == nrrdEncodingBzip2)  // teem's bzip2 reader leaks its stream on every error, as its gzip reader does
+    throw Error(shown + ": bzip2 encoding is not supported (raw, gzip, ascii and hex are)");
+  if (io.byteSkip < 0 && io.encoding->isCompression)
+    throw Error(shown + ": byte skip " + std::to_string(io.byteSkip) + " with " + io.encoding->name + " encoding is not supported");
+
+  std::vector<unsigned char> bytes(fileBytes);
+  if (io.encoding == nrrdEncodingRaw) {
+    // Raw samples are counted against the file before reading: what is left
+    // after the header (or the skipped bytes) must be exactly the samples
+    // (a negative byte skip deliberately leaves bytes after them).
+    const long position = std::ftell(data);
+    const std::uint64_t remaining = position >= 0 && info.st_size > position ? static_cast<std::uint64_t>(info.st_size - position) : 0;
+    if (remaining < fileBytes || (io.byteSkip >= 0 && remaining != fileBytes))
+      throw Error(shown + ": " + samples + " need " + std::to_string(fileBytes) + " bytes, " + dataName + " holds " + std::to_string(remaining));
+    if (std::fread(bytes.data(), 1, fileBytes, data) != fileBytes) throw Error(shown + ": read failed (" + describeErrno(errno) + ")");
+  } else if (io.encoding == nrrdEncodingGzip) {
+    readGzip(data, io.byteSkip, bytes.data(), fileBytes, shown + ": " + samples + " in gzip encoding");
+  } else if (io.encoding->read(data, bytes.data(), static_cast<std::size_t>(total), teem.nrrd(), &io)) {
+    throw Error(shown + ": " + samples + " in " + io.encoding->name + " encoding: " + teemProblem());
+  }
+
+  const bool swap = type.bytes > 1 && io.encoding->endianMatters && io.endian != airEndianUnknown && io.endian != airMyEndian();
+  volume.values.resize(static_cast<std::size_t>(total));
+  switch (nrrd.type) {
+    case nrrdTypeChar: convert<std::int8_t>(bytes.data(), false, volume.values); break;
+    case nrrdTypeUChar: convert<std::uint8_t>(bytes.data(), false, volume.values); break;
+    case nrrdTypeShort: convert<std::int16_t>(bytes.data(), swap, volume.values); break;
+    case nrrdTypeUShort: convert<std::uint16_t>(bytes.data(), swap, volume.values); break;
+    default: convert<float>(bytes.data(), swap, volume.values); break;
+  }
+  updateRange(volume);
+  return volume;
+}
+
+}  // namespace facet
