@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <string>
 #include <thread>
 
@@ -12,6 +13,7 @@
 #include "cpu/passes.h"
 #include "cpu/reference/reference_renderer.h"
 #include "cpu/resolve.h"
+#include "cpu/volume_pass.h"
 #include "pipeline/antialiasing.h"
 #include "cpu/scanline_zbuffer.h"
 #include "cpu/thread_pool.h"
@@ -44,6 +46,7 @@ class CpuRenderer final : public Renderer {
     shadowPasses(scene, frame, result);
 
     const auto start = std::chrono::steady_clock::now();
+    RayCastCounts volumeCounts;
     // One pass into the colour buffer: the background, then the lit pass.
     const auto drawPass = [&](const FrameInputs& pass) {
       color_.reset(pass.width, pass.height, cpu::backgroundPixel(pass, 0, 0));
@@ -53,6 +56,7 @@ class CpuRenderer final : public Renderer {
             for (int x = 0; x < pass.width; ++x) color_.at(x, static_cast<int>(y)) = cpu::backgroundPixel(pass, x, static_cast<int>(y));
         });
       cpu::litPass(pool_, buffers_, scene, pass, maps_, color_);
+      if (pass.volume.placed) volumeCounts += cpu::volumePass(pool_, pass, buffers_.depth, color_);
     };
     if (frame.samples.empty()) {
       drawPass(frame);
@@ -64,6 +68,18 @@ class CpuRenderer final : public Renderer {
         cpu::accumulate(pool_, color_, frame.blending, sum_);
       }
       result.timings.push_back({"lit pass (" + std::to_string(frame.samples.size()) + " samples)", millisecondsSince(start)});
+    }
+    if (frame.volume.placed) {
+      const auto share = [&](std::uint64_t n) {
+        const double all = static_cast<double>(volumeCounts.samples + volumeCounts.skippedEmpty + volumeCounts.savedByTermination);
+        return all > 0 ? 100.0 * static_cast<double>(n) / all : 0.0;
+      };
+      char line[256];
+      std::snprintf(line, sizeof line, "volume ray casting: %llu samples taken; empty-space skipping saved %llu (%.1f%%), early termination %llu (%.1f%%)",
+                    static_cast<unsigned long long>(volumeCounts.samples), static_cast<unsigned long long>(volumeCounts.skippedEmpty),
+                    share(volumeCounts.skippedEmpty), static_cast<unsigned long long>(volumeCounts.savedByTermination),
+                    share(volumeCounts.savedByTermination));
+      result.notes.push_back(line);
     }
     const auto resolveStart = std::chrono::steady_clock::now();
     if (frame.samples.empty()) cpu::resolve(pool_, color_, frame.blending, 1, result.image);

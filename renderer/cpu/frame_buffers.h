@@ -124,6 +124,8 @@ struct FrameBuffers {
   // FrameInputs::transparentOrder), and the blended fragments' colours before they blend.
   std::vector<std::uint32_t> submission;
   ColorBuffer fragments;
+  // Volume ray casting: each pixel's window z after the opaque surfaces and lines, where its rays stop.
+  std::vector<float> depth;
 };
 
 }  // namespace facet::cpu

@@ -358,6 +358,8 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
   std::size_t fullestTile = 0;
   for (int tile = 0; tile < grid.count(); ++tile) fullestTile = std::max(fullestTile, trianglesInTile(buffers.workers, tile));
   for (WorkerBins& bins : buffers.workers) bins.tile.triangles.reserve(fullestTile), bins.tile.blended.reserve(fullestTile);
+  const bool keepDepth = frame.volume.placed && !triangleIds && !fragmentCounts;
+  if (keepDepth) buffers.depth.assign(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 1.0f);
   forEachTile(pool, grid, [&](int worker, int tile, const TileRect& r) {
     if (trianglesInTile(buffers.workers, tile) == 0 && buffers.lines.empty()) return;
     if (fragmentCounts) {  // depth complexity: every fragment, before the tests; each pixel is in one tile
@@ -433,6 +435,10 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
     shadeIn(scene, frame, maps, scratch, scratch.id, r, r, color);
     drawLines(frame, buffers.lines, r, painter ? nullptr : scratch.depth, kTileSize, color);  // the painter has no depth to test
     if (!scratch.blended.empty()) blendTile(scene, frame, maps, layout, scratch, r, buffers.fragments, color);
+    if (keepDepth)
+      for (int py = r.y0; py <= r.y1; ++py)
+        std::copy_n(scratch.depth + (py - r.y0) * kTileSize, r.x1 - r.x0 + 1,
+                    buffers.depth.begin() + static_cast<std::ptrdiff_t>(py) * frame.width + r.x0);
   });
 }
 

@@ -127,6 +127,8 @@ std::unique_ptr<WindowGlRenderer> makeWindowGlRenderer(const gl::GetProcAddress&
 void refuseCpuOnlyFrame(const FrameInputs& frame) {
   if (frame.hsr == HiddenSurface::Scanline)
     throw Error("settings key 'hsr': scanline is the CPU backend's scanline z-buffer (--backend cpu); OpenGL draws zbuffer or painter");
+  if (frame.volume.placed)
+    throw Error("settings key 'volume.mode': raycast is drawn by the CPU backend (--backend cpu); OpenGL draws splat and isosurface");
   if (frame.areaAveraged)
     throw Error("settings key 'antialiasing.pattern': area is the CPU backend's exact area-weighted averaging (--backend cpu); OpenGL samples grid or jittered");
 }

@@ -55,6 +55,8 @@ FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings)
     throw Error("settings key 'lights': " + std::to_string(settings.lights.size()) + " lights, a frame shades at most " +
                 std::to_string(kMaxLights));
   FrameInputs f;
+  if (settings.volume.mode == VolumeMode::Raycast && scene.volume.data)
+    f.volume = {&scene.volume, settings.volume.step, settings.volume.earlyTermination, settings.volume.emptySpaceSkipping};
   f.width = settings.width;
   f.height = settings.height;
   f.camera = resolveCamera(scene, settings);

@@ -114,6 +114,15 @@ struct FrameInputs {
     float cotTheta = 1.0f;  // perspective: 1/tan θ, double precision rounded to float
   } fog;
 
+  // Volume ray casting (PIPELINE.md, section 11): `placed` points into the
+  // Scene (its volume), null unless volume.mode = raycast and the scene has one.
+  struct VolumeCasting {
+    const Scene::PlacedVolume* placed = nullptr;
+    float step = 0.5f;
+    float earlyTermination = 0.99f;
+    bool emptySpaceSkipping = true;
+  } volume;
+
   std::vector<std::string> warnings;  // what building the frame dropped (lights beyond kMaxLights)
 };
 
