@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -105,9 +106,12 @@ std::uint64_t addParticles(Scene& scene, const RenderSettings& settings, const C
   std::uint64_t alive = 0;
   for (const Source& s : sources) {
     alive += aliveParticleCount(*s.emitter, settings.time);
-    if (alive > kMaxParticles)
-      throw Error("settings key '" + s.key + ".rate': " + std::to_string(alive) + " particles alive at time " + std::to_string(settings.time) +
-                  " over the emitters so far, more than the " + std::to_string(kMaxParticles) + " a frame holds");
+    if (alive > kMaxParticles) {
+      char time[32];
+      std::snprintf(time, sizeof time, "%g", static_cast<double>(settings.time));
+      throw Error("settings key '" + s.key + ".rate': " + std::to_string(alive) + " particles alive at time " + time +
+                  " s over the emitters so far, more than the " + std::to_string(kMaxParticles) + " a frame holds");
+    }
   }
   std::uint64_t added = 0;
   for (const Source& s : sources) {

@@ -42,6 +42,7 @@
 #include "pipeline/displacement.h"
 #include "scene/environment_map.h"
 #include "scene/load_scene.h"
+#include "pipeline/scene_additions.h"
 #include "settings/settings_json.h"
 
 namespace fs = std::filesystem;
@@ -119,6 +120,8 @@ Scene sceneOf(Case& c, const std::string& assets) {
   useDisplacement(scene, c.settings.material);
   useBumpMap(scene, c.settings.material);
   useEnvironment(scene, c.settings.environment);
+  SceneAdditions added;  // a volume's iso-surface or splats, particles (resolving the camera the sprites face)
+  c.settings = addVolumeAndParticles(scene, c.settings, added);
   return scene;
 }
 
