@@ -37,6 +37,7 @@
 #include "scene/memory_budget.h"
 #include "scene/vertex_normals.h"
 #include "scene/vertex_tangents.h"
+#include "settings/settings_json.h"
 #include "settings/render_settings.h"
 
 namespace facet {
@@ -841,6 +842,26 @@ void readAnimations(const tinygltf::Model& model, const std::vector<int>& animat
 // Walks the node trees from the scene's roots. The document checks
 // (gltf_document_checks.h) refused a node with two parents and a loop, so
 // each node is met at most once and the walk is linear in the file.
+// A tinygltf value (a node's extras) as JSON, for the settings reader; nested at most 8 deep.
+nlohmann::json jsonOf(const tinygltf::Value& v, int depth) {
+  if (depth > 8) throw Error("extras: nested deeper than 8 levels");
+  if (v.IsBool()) return v.Get<bool>();
+  if (v.IsInt()) return v.Get<int>();
+  if (v.IsNumber()) return v.GetNumberAsDouble();
+  if (v.IsString()) return v.Get<std::string>();
+  if (v.IsArray()) {
+    nlohmann::json out = nlohmann::json::array();
+    for (std::size_t i = 0; i < v.ArrayLen(); ++i) out.push_back(jsonOf(v.Get(static_cast<int>(i)), depth + 1));
+    return out;
+  }
+  if (v.IsObject()) {
+    nlohmann::json out = nlohmann::json::object();
+    for (const std::string& key : v.Keys()) out[key] = jsonOf(v.Get(key), depth + 1);
+    return out;
+  }
+  return nullptr;
+}
+
 struct NodeWalker {
   const tinygltf::Model& model;
   Scene& scene;
@@ -917,7 +938,23 @@ struct NodeWalker {
     }
     if (node.camera >= 0) addCamera(node, n, world);
     addLight(node, n, world);
+    addEmitter(node, n, world);
     for (int child : node.children) visit(child, world, depth + 1, self);
+  }
+
+  // A particle emitter in the node's extras (renderer/PIPELINE.md, section
+  // 12): {"facet_particles": {particles.N's keys}}, its position and
+  // direction in the node's frame.
+  void addEmitter(const tinygltf::Node& node, std::size_t n, const glm::mat4& world) {
+    if (!node.extras.IsObject() || !node.extras.Has("facet_particles")) return;
+    Emitter emitter = emitterFromJson(jsonOf(node.extras.Get("facet_particles"), 0), at("nodes", n) + ".extras.facet_particles");
+    emitter.position = glm::vec3(world * glm::vec4(emitter.position, 1.0f));
+    emitter.direction = glm::vec3(world * glm::vec4(emitter.direction, 0.0f));
+    if (!drawable(emitter.position) || !(glm::length(emitter.direction) > 0.0f)) {
+      warnings.push_back(at("nodes", n) + ": its particle emitter is placed beyond +-" + coordinateLimit() + " or scaled to nothing; ignored");
+      return;
+    }
+    scene.emitters.push_back(emitter);
   }
 
   void addCamera(const tinygltf::Node& node, std::size_t n, const glm::mat4& world) {

@@ -258,6 +258,16 @@ RenderSettings settingsFromJson(const json& j) {
   return settings;
 }
 
+Emitter emitterFromJson(const json& j, const std::string& where) {
+  if (!j.is_object()) throw Error(settingsKey(where) + ": expected an object, got " + describeJson(j));
+  Emitter emitter;
+  JsonReader reader{&j, where, {}};
+  visitItem(reader, emitter);
+  reader.checkNoUnknownKeys();
+  if (!(glm::length(emitter.direction) > 0.0f)) throw Error(settingsKey(where + ".direction") + ": must not be zero");
+  return emitter;
+}
+
 RenderSettings loadSettingsFile(const std::string& path) {
   const std::string text = readFile(path, 16u << 20);
   try {

@@ -13,6 +13,10 @@ namespace facet {
 nlohmann::json settingsToJson(const RenderSettings& settings);
 RenderSettings settingsFromJson(const nlohmann::json& json);
 
+// An emitter from a JSON object with particles.N's keys (a glTF node's
+// extras.facet_particles); errors name `where` and the key.
+Emitter emitterFromJson(const nlohmann::json& json, const std::string& where);
+
 // Reads a settings file (JSON); errors name the file and the key.
 RenderSettings loadSettingsFile(const std::string& path);
 

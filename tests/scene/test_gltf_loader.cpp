@@ -939,3 +939,19 @@ TEST_CASE("glTF POINTS, LINES, LINE_LOOP and LINE_STRIP load as points and segme
   REQUIRE(many.meshes.size() == 1);
   CHECK(many.meshes[0].points.size() == 1024);
 }
+
+TEST_CASE("glTF loader: particle emitters from node extras, placed in the node's frame") {
+  const Scene scene = loadScene(std::string(FACET_ASSETS) + "/particles.gltf");
+  REQUIRE(scene.emitters.size() == 3);
+  const Emitter& fountain = scene.emitters[0];
+  CHECK(fountain.position.x == doctest::Approx(-1.4f));
+  CHECK(fountain.position.y == doctest::Approx(0.22f));
+  CHECK(fountain.rate == 600.0f);
+  CHECK(fountain.seed == 3);
+  CHECK(scene.emitters[1].blending == SpriteBlending::Additive);
+  CHECK_FALSE(scene.emitters[1].ground);
+  // The smoke's node is turned -20 degrees about x: its emitter's +y leans toward -z.
+  const glm::vec3 d = glm::normalize(scene.emitters[2].direction);
+  CHECK(d.y == doctest::Approx(std::cos(glm::radians(20.0f))));
+  CHECK(d.z == doctest::Approx(-std::sin(glm::radians(20.0f))));
+}
