@@ -1,4 +1,5 @@
 // facet info: what a scene holds, as the renderers will see it.
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <sstream>
@@ -8,7 +9,10 @@
 #include "command_line.h"
 #include "commands.h"
 #include "common/atomic_file.h"
+#include "common/error.h"
 #include "pipeline/material_coefficients.h"
+#include "pipeline/scene_additions.h"
+#include "scene/gltf_writer.h"
 #include "scene/load_scene.h"
 
 namespace facet {
@@ -20,9 +24,17 @@ std::string str(glm::vec3 v) {
   return text;
 }
 
-std::string describe(const Scene& scene, const RenderSettings& settings) {
+std::string describe(const Scene& scene, const RenderSettings& settings, const SceneAdditions& added) {
   std::ostringstream out;
   out << "scene: " << scene.source << "\n";
+  if (const Volume* v = scene.volume.data.get()) {
+    out << "volume: " << v->source << ", " << v->size.x << "x" << v->size.y << "x" << v->size.z << " samples, spacing " << str(v->spacing)
+        << ", values " << v->minValue << " to " << v->maxValue << ", drawn by " << kVolumeModeNames[static_cast<std::size_t>(settings.volume.mode)]
+        << "\n";
+    if (added.isosurface) out << "iso-surface: " << added.isoTriangles << " triangles (marching cubes)\n";
+    if (added.splats) out << "splats: " << added.splats << " voxels the transfer function shows\n";
+  }
+  if (added.particles) out << "particles: " << added.particles << " alive at time " << settings.time << " s\n";
   out << "meshes: " << scene.meshes.size() << ", instances: " << scene.instances.size()
       << ", triangles: " << scene.triangleCount() << "\n";
   const Bounds b = scene.worldBounds();
@@ -76,16 +88,27 @@ Command addInfoCommand(CLI::App& app) {
   auto options = std::make_shared<CommonOptions>();
   CLI::App* command = app.add_subcommand("info", "Print a scene's meshes, triangle count, materials, lights, cameras and bounds");
   addCommonOptions(*command, *options, "also write the report to this file");
-  return [options]() {
+  auto isosurface = std::make_shared<std::string>();
+  command->add_option("--write-isosurface", *isosurface, "write the volume's iso-surface (volume.mode=isosurface) as a glTF 2.0 file");
+  return [options, isosurface]() {
     if (!options->output.empty()) checkOutputFile(options->output, {options->scenePath, options->settingsPath});
-    const Scene scene = loadScene(options->scenePath);
-    const RenderSettings settings = settingsFor(*options, scene);
-    const std::string report = describe(scene, settings);
+    if (!isosurface->empty()) checkOutputFile(*isosurface, {options->scenePath, options->settingsPath, options->output});
+    Scene scene = loadScene(options->scenePath);
+    SceneAdditions added;
+    const RenderSettings settings = addVolumeAndParticles(scene, settingsFor(*options, scene), added);
+    const std::string report = describe(scene, settings, added);
+    if (!isosurface->empty()) {
+      if (!added.isosurface) throw UsageError("--write-isosurface: the scene has no iso-surface (give a volume and --set volume.mode=isosurface)");
+      const auto at = std::find_if(scene.meshes.begin(), scene.meshes.end(), [](const Mesh& m) { return m.name == "isosurface"; });
+      if (at == scene.meshes.end()) throw Error("--write-isosurface: the iso-surface is empty at volume.isoValue");
+      writeMeshGltf(*at, scene.volume.worldFromVolume, settings.volume.isoColor, *isosurface);
+    }
     std::fputs(report.c_str(), stdout);
     if (!options->output.empty()) {
       writeFileAtomically(options->output, {reinterpret_cast<const std::uint8_t*>(report.data()), report.size()});
       std::printf("report written to %s\n", options->output.c_str());
     }
+    if (!isosurface->empty()) std::printf("iso-surface written to %s\n", isosurface->c_str());
     return 0;
   };
 }
