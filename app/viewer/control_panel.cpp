@@ -43,6 +43,12 @@ void pathField(const char* id, std::string& path) {
 }
 
 void drawFilesTab(ViewerState& state, PanelRequests& requests) {
+  ImGui::TextUnformatted("animation: glTF node animations and particles at time");
+  ImGui::Checkbox("play (space)", &state.playing);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(-1.0f);
+  ImGui::SliderFloat("##time", &state.settings.time, 0.0f, 30.0f, "%.2f s");
+  ImGui::Separator();
   ImGui::TextUnformatted("scene: a .gltf or .glb file, or builtin:NAME");
   pathField("##scene", state.scenePath);
   if (ImGui::Button("Open scene")) loadSceneFile(state, state.scenePath);
@@ -68,7 +74,7 @@ void drawFilesTab(ViewerState& state, PanelRequests& requests) {
 }
 
 void drawHelpTab() {
-  static constexpr std::array<std::array<const char*, 2>, 13> kKeys = {{
+  static constexpr std::array<std::array<const char*, 2>, 14> kKeys = {{
       {"left drag", "orbit around the reference point"},
       {"right or middle drag", "pan"},
       {"wheel", "zoom"},
@@ -79,6 +85,7 @@ void drawHelpTab() {
       {"R", "reset the camera"},
       {"F12, Ctrl+S", "screenshot of the 3D view"},
       {"H", "hide / show the panel"},
+      {"space", "play / pause the animation (glTF node animations, particles)"},
       {"Esc", "quit"},
       {"drop a file", "open a .gltf or .glb scene"},
       {"ctrl+click", "type a value into a slider"},

@@ -67,6 +67,7 @@ ViewRequests ViewInput::update(ViewerState& state, const std::vector<KeyPress>& 
         break;
       case GLFW_KEY_R: settings.camera = state.startSettings.camera; break;
       case GLFW_KEY_F12: requests.screenshot = true; break;
+      case GLFW_KEY_SPACE: state.playing = !state.playing; break;
       case GLFW_KEY_H: requests.togglePanel = !requests.togglePanel; break;
       case GLFW_KEY_ESCAPE: requests.quit = true; break;
       default: break;

@@ -17,6 +17,7 @@
 
 #include "pipeline/bump_map.h"
 #include "pipeline/displacement.h"
+#include "pipeline/scene_additions.h"
 #include "scene/environment_map.h"
 #include "common/error.h"
 #include "gl/gl_renderer.h"
@@ -89,7 +90,15 @@ struct DrawnFrame {
   std::string error;                   // why the newest settings could not be drawn; the last good image stays
   // The viewer's scene displaced and with the settings' environment map, while they and the scene stay.
   std::shared_ptr<const Scene> environmentBase, withEnvironment;
+  // The volume the last frame read (pipeline/scene_additions.h), kept so that the next reads it no more.
+  std::shared_ptr<const Scene::PlacedVolume> volume;
+  std::string volumeKey;
 };
+
+// Whether the settings or the scene add a volume or particles to the frame.
+bool hasAdditions(const Scene& scene, const RenderSettings& settings) {
+  return !settings.volume.file.empty() || !scene.volume.file.empty() || !settings.particles.empty() || !scene.emitters.empty();
+}
 
 // The scene a frame of `state` draws: its own when the settings displace
 // nothing and name the map it holds (or none), else a copy displaced and
@@ -117,8 +126,19 @@ bool drawChangedFrame(Renderer& renderer, const ViewerState& state, DrawnFrame& 
   const std::string key = frameKey(state);
   if (key == drawn.key && !force) return false;
   try {
-    const std::shared_ptr<const Scene> scene = sceneFor(state, drawn);
-    FrameInputs frame = buildFrameInputs(*scene, state.settings);
+    std::shared_ptr<const Scene> scene = sceneFor(state, drawn);
+    RenderSettings settings = state.settings;
+    if (hasAdditions(*scene, settings)) {
+      // A copy with the volume and this time's particles, facing this frame's camera; the volume is read once.
+      auto added = std::make_shared<Scene>(*scene);
+      if (drawn.volume && drawn.volume->key == drawn.volumeKey) added->volume = *drawn.volume;
+      SceneAdditions counts;
+      settings = addVolumeAndParticles(*added, settings, counts);
+      drawn.volume = std::make_shared<Scene::PlacedVolume>(added->volume);
+      drawn.volumeKey = added->volume.key;
+      scene = added;
+    }
+    FrameInputs frame = buildFrameInputs(*scene, settings);
     RenderResult result = renderer.render(*scene, frame);
     drawn.milliseconds = 0;
     for (const PassTiming& t : result.timings)
@@ -180,14 +200,18 @@ int runViewer(const ViewerOptions& options) {
   bool redrawEveryFrame = false;  // the panel's checkbox
   bool changedLastFrame = false;
   int framesLeft = options.frames;
+  Clock::time_point lastIteration = Clock::now();
 
   // Main loop
   while (!glfwWindowShouldClose(window.handle())) {
     // Poll and handle events; an idle window waits for them instead of spinning.
-    const bool idle = !batch && !changedLastFrame && !reference.busy() && !ImGui::IsAnyMouseDown();
+    const bool idle = !batch && !state.playing && !changedLastFrame && !reference.busy() && !ImGui::IsAnyMouseDown();
     if (batch && framesLeft > 0) glfwPollEvents();
     else glfwWaitEventsTimeout(idle ? kIdleWaitSeconds : kBusyWaitSeconds);
     const Clock::time_point start = Clock::now();
+    // Playing: time advances by the wall clock since the last iteration (at most 0.1 s, so a stall does not jump).
+    if (state.playing) state.settings.time += std::min(0.1f, std::chrono::duration<float>(start - lastIteration).count());
+    lastIteration = start;
     for (const std::string& path : window.takeDroppedPaths()) loadSceneFile(state, path);
     window.setTitle("facet view: " + state.scene->source);
     window.syncImageSize(state.settings.width, state.settings.height, ImGui::IsAnyItemActive());

@@ -25,6 +25,8 @@ struct ViewerState {
   std::string settingsPath;
   std::string screenshotPath;           // empty: facet-view-N.png, the first N not taken
 
+  bool playing = false;                 // the animation plays: settings.time advances with the clock (space)
+
   std::string message;                  // the last action's outcome, shown in the panel
   bool messageIsError = false;
 };
