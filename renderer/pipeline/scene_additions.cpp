@@ -7,6 +7,7 @@
 #include <string>
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/trigonometric.hpp>
 
 #include "common/error.h"
 #include "image/png.h"
@@ -132,7 +133,10 @@ glm::mat4 worldFromVolume(const Volume& volume, const VolumeSettings& settings) 
   const glm::vec3 extent = volume.extent();
   const float longest = std::max({extent.x, extent.y, extent.z});
   const float scale = longest > 0.0f ? settings.size / longest : 1.0f;
-  return glm::translate(glm::mat4(1.0f), settings.center) * glm::scale(glm::mat4(1.0f), glm::vec3(scale)) *
+  const glm::vec3 r = glm::radians(settings.rotation);
+  const glm::mat4 rotation = glm::rotate(glm::mat4(1.0f), r.z, glm::vec3(0, 0, 1)) * glm::rotate(glm::mat4(1.0f), r.y, glm::vec3(0, 1, 0)) *
+                             glm::rotate(glm::mat4(1.0f), r.x, glm::vec3(1, 0, 0));
+  return glm::translate(glm::mat4(1.0f), settings.center) * rotation * glm::scale(glm::mat4(1.0f), glm::vec3(scale)) *
          glm::translate(glm::mat4(1.0f), -0.5f * extent);
 }
 

@@ -19,7 +19,7 @@ struct SceneAdditions {
 };
 
 // The volume's model space to world: scaled by size / (the box's longest
-// side), its box's centre moved to `center`.
+// side), turned by `rotation` about the box's centre, which is moved to `center`.
 glm::mat4 worldFromVolume(const Volume& volume, const VolumeSettings& settings);
 
 // Adds what the settings ask for to `scene` and returns the settings the

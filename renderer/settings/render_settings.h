@@ -229,6 +229,7 @@ struct VolumeSettings {
   std::string transfer = "grey";      // a preset, or control points "value r g b a, ..." (volume/transfer_function.h)
   glm::vec3 center{0.0f, 1.0f, 0.0f};// world position of the volume box's centre
   float size = 2.0f;                  // world length of the box's longest side
+  glm::vec3 rotation{0.0f};           // degrees about x, then y, then z (R = Rz·Ry·Rx), about the box's centre
   float step = 0.5f;                  // raycast: the distance between samples along a ray, in voxel spacings
   float earlyTermination = 0.99f;     // raycast: a ray stops once its accumulated opacity reaches this (1: never)
   bool emptySpaceSkipping = true;     // raycast: macro cells whose samples the transfer function makes transparent are stepped over

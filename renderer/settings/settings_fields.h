@@ -197,6 +197,7 @@ void visitSettings(Visitor& v, RenderSettings& s) {
             vs.transfer);
     v.field({"center", "world position of the volume box's centre"}, vs.center);
     v.field({"size", "world length of the volume box's longest side", 1e-6, 1e9}, vs.size);
+    v.field({"rotation", "degrees about x, then y, then z, about the box's centre (a scan's z up: [-90, 0, 0])", -360, 360}, vs.rotation);
     v.field({"step", "raycast: distance between samples along a ray, in voxel spacings", 0.01, 16}, vs.step);
     v.field({"earlyTermination", "raycast: a ray stops once its opacity reaches this (1: never)", 0, 1}, vs.earlyTermination);
     v.field({"emptySpaceSkipping", "raycast: step over macro cells the transfer function makes transparent"}, vs.emptySpaceSkipping);

@@ -81,6 +81,14 @@ Case readCase(const fs::path& file) {
   c.note = j.value("note", "");
   if (c.note.empty()) throw Error(file.string() + ": 'note': say what the case is for");
   nlohmann::json settings = j.value("settings", nlohmann::json::object());
+  // "settingsFile": an assets settings file (assets:NAME) the case's own settings are laid over.
+  if (j.contains("settingsFile")) {
+    const std::string name = j["settingsFile"].get<std::string>(), local = "assets:";
+    const std::string path = name.rfind(local, 0) == 0 ? std::string(FACET_ASSETS) + "/" + name.substr(local.size()) : name;
+    nlohmann::json base = settingsToJson(loadSettingsFile(path));
+    base.merge_patch(settings);
+    settings = std::move(base);
+  }
   if (!settings.contains("width")) settings["width"] = kGoldenSize;
   if (!settings.contains("height")) settings["height"] = kGoldenSize;
   try {
@@ -103,7 +111,7 @@ Case readCase(const fs::path& file) {
     c.allow = allow;
   }
   for (const auto& [key, value] : j.items())
-    if (key != "scene" && key != "note" && key != "settings" && key != "allow") throw Error(file.string() + ": '" + key + "': unknown key");
+    if (key != "scene" && key != "note" && key != "settings" && key != "settingsFile" && key != "allow") throw Error(file.string() + ": '" + key + "': unknown key");
   return c;
 }
 
