@@ -49,6 +49,7 @@
 #include "image/png.h"
 #include "math/transforms.h"
 #include "pipeline/frame_inputs.h"
+#include "pipeline/scene_additions.h"
 #include "scene/default_scene.h"
 #include "scene/primitives.h"
 #if FACET_HAVE_GL
@@ -152,8 +153,46 @@ BenchScene defaultScene(const std::string& name, int samples, int width, int hei
   return b;
 }
 
+// The default scene's ground with 100k particles alive (40,000 born a second, living 2.5 s, at 3 s).
+BenchScene particleScene(const std::string& name, int width, int height) {
+  BenchScene b = defaultScene(name, 1, width, height);
+  Emitter e;
+  e.position = {0.0f, 0.02f, 0.0f};
+  e.rate = 40000.0f;
+  e.lifetime = 2.5f;
+  e.spread = 20.0f;
+  e.speed = 4.5f;
+  e.startSize = 0.03f;
+  e.endSize = 0.06f;
+  b.settings.particles = {e};
+  b.settings.time = 3.0f;
+  return b;
+}
+
+// The Marschner-Lobb signal at 256³ drawn by `mode`: the iso-surface at 0.5,
+// or its values near 0.5 (a thin shell: splatting's sprites fit the frame budget).
+BenchScene volumeScene(const std::string& name, VolumeMode mode, int width, int height) {
+  BenchScene b{name, {}, manualSettings(width, height)};
+  b.scene.source = name;
+  b.settings.volume.file = "builtin:marschner-lobb";
+  b.settings.volume.resolution = 256;
+  b.settings.volume.mode = mode;
+  b.settings.volume.center = {0.0f, 0.0f, 0.0f};
+  b.settings.volume.rotation = {-65.0f, 30.0f, 0.0f};
+  b.settings.volume.transfer = mode == VolumeMode::Splat ? "0.47 1 0.8 0.5 0, 0.5 1 0.8 0.5 0.6, 0.53 1 0.8 0.5 0"
+                                                         : "0.42 0.1 0.3 0.9 0, 0.5 0.95 0.7 0.25 0.5, 0.75 0.85 0.25 0.1 0.25, 1 1 0.95 0.9 0.5";
+  b.settings.volume.isoValue = 0.5f;
+  b.settings.camera.eye = {0.0f, 1.6f, 3.0f};
+  b.settings.camera.reference = {0.0f, -0.05f, 0.0f};
+  Light light;
+  light.position = {-2.0f, 4.0f, 2.5f};
+  b.settings.lights = {light};
+  return b;
+}
+
 std::vector<std::string> allSceneNames() {
-  return {"sphere-100k", "sphere-1m", "sphere-100k-shadow", "sphere-1m-shadow", "fill-10x", "fill-10x-blended", "default", "default-aa4"};
+  return {"sphere-100k", "sphere-1m",     "sphere-100k-shadow", "sphere-1m-shadow", "fill-10x",     "fill-10x-blended", "default",
+          "default-aa4", "particles-100k", "volume-raycast-256", "volume-splat-256", "volume-isosurface-256"};
 }
 
 BenchScene makeBenchScene(const std::string& name, int width, int height) {
@@ -165,7 +204,29 @@ BenchScene makeBenchScene(const std::string& name, int width, int height) {
   if (name == "fill-10x-blended") return fillScene(name, true, width, height);
   if (name == "default") return defaultScene(name, 1, width, height);
   if (name == "default-aa4") return defaultScene(name, 4, width, height);
+  if (name == "particles-100k") return particleScene(name, width, height);
+  if (name == "volume-raycast-256") return volumeScene(name, VolumeMode::Raycast, width, height);
+  if (name == "volume-splat-256") return volumeScene(name, VolumeMode::Splat, width, height);
+  if (name == "volume-isosurface-256") return volumeScene(name, VolumeMode::Isosurface, width, height);
   throw Error("bench: unknown scene '" + name + "'");
+}
+
+// [SECTION] Figures of the stages the settings add
+
+// The samples a ray-casting note counts ("volume ray casting: N samples taken; ...").
+double rayCastSamples(const std::string& note) {
+  unsigned long long n = 0;
+  return std::sscanf(note.c_str(), "volume ray casting: %llu", &n) == 1 ? static_cast<double>(n) : 0.0;
+}
+
+void printAdditions(const SceneAdditions& added, double milliseconds, const FrameInputs& frame) {
+  if (added.particles)
+    std::printf("  particles: %llu simulated and made sprites in %.2f ms (median)\n", static_cast<unsigned long long>(added.particles), milliseconds);
+  if (added.isosurface)
+    std::printf("  marching cubes: %llu triangles in %.2f ms (median), %.3g triangles a second\n",
+                static_cast<unsigned long long>(added.isoTriangles), milliseconds, static_cast<double>(added.isoTriangles) / (milliseconds * 1e-3));
+  if (added.splats) std::printf("  splats: %llu sprites made in %.2f ms (median)\n", static_cast<unsigned long long>(added.splats), milliseconds);
+  if (frame.volume.placed) std::printf("  volume: placed in %.2f ms (median)\n", milliseconds);
 }
 
 // [SECTION] Statistics
@@ -330,15 +391,32 @@ Command addBenchCommand(CLI::App& app) {
     const std::string self = selfPath();
 
     for (const std::string& name : o->scenes) {
-      const BenchScene b = makeBenchScene(name, width, height);
+      BenchScene b = makeBenchScene(name, width, height);
+      // What the settings add (particles, a volume's mesh or sprites), timed over the frames as its own stage.
+      // The first run reads the volume (kept for the others) and is not timed.
+      std::vector<double> adding;
+      SceneAdditions added;
+      Scene base = b.scene;
+      const RenderSettings asked = b.settings;
+      for (int i = 0; i <= o->frames; ++i) {
+        b.scene = base;
+        const auto start = Clock::now();
+        b.settings = addVolumeAndParticles(b.scene, asked, added, o->threads);
+        if (i > 0) adding.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+        base.volume = b.scene.volume;
+      }
       const FrameInputs frame = buildFrameInputs(b.scene, b.settings);
+      // OpenGL does not ray cast volumes; the CPU backend alone draws that scene.
+      std::vector<char> skip(renderers.size(), 0);
+      for (std::size_t r = 0; r < renderers.size(); ++r) skip[r] = frame.volume.placed && o->backends[r] != "cpu";
       const double triangles = static_cast<double>(b.scene.triangleCount());
       std::vector<std::vector<double>> ms(renderers.size()), upload(renderers.size());
       std::vector<RenderResult> last(renderers.size());
       for (std::size_t r = 0; r < renderers.size(); ++r)
-        for (int i = 0; i < o->warmup; ++i) (void)renderers[r]->render(b.scene, frame);
+        for (int i = 0; i < o->warmup && !skip[r]; ++i) (void)renderers[r]->render(b.scene, frame);
       for (int i = 0; i < o->frames; ++i)
         for (std::size_t r = 0; r < renderers.size(); ++r) {
+          if (skip[r]) continue;
           const auto start = Clock::now();
           last[r] = renderers[r]->render(b.scene, frame);
           ms[r].push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
@@ -354,7 +432,12 @@ Command addBenchCommand(CLI::App& app) {
       double glMedian = 0;
       for (std::size_t r = 0; r < renderers.size(); ++r)
         if (o->backends[r] == "gl") glMedian = summarize(ms[r]).median;
+      printAdditions(added, summarize(adding).median, frame);
       for (std::size_t r = 0; r < renderers.size(); ++r) {
+        if (skip[r]) {
+          std::printf("  %-4s does not ray cast volumes\n", o->backends[r].c_str());
+          continue;
+        }
         const Summary s = summarize(ms[r]);
         std::vector<double> net;
         for (std::size_t i = 0; i < ms[r].size(); ++i) net.push_back(ms[r][i] - upload[r][i]);
@@ -375,6 +458,9 @@ Command addBenchCommand(CLI::App& app) {
         std::printf("  %-4s %10.2f %31s %8.2f %8.0f %11.2f %7s\n", o->backends[r].c_str(), s.median, spread, triangles / (s.median * 1e3),
                     peakMb, summarize(net).median, ratio);
         if (!o->outDir.empty()) writePng(o->outDir + "/" + name + "-" + o->backends[r] + ".png", last[r].image);
+        for (const std::string& note : last[r].notes)
+          if (note.rfind("volume ray casting", 0) == 0)
+            std::printf("       %s; %.3g samples a second\n", note.c_str(), rayCastSamples(note) / (s.median * 1e-3));
       }
       if (std::find(o->backends.begin(), o->backends.end(), "ray") != o->backends.end()) printRayRates(b.scene, frame, o->threads, o->frames);
       std::fflush(stdout);

@@ -68,6 +68,7 @@ void shadowPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, con
                             Interpolation interpolation(vertices[0], vertices[1], vertices[2]);
                             const FrameInstance& instance = frame.instances[t.instance];
                             const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
+                            if (!material.castsShadow) return;
                             if (!masksShadow(material)) {
                               rasterizeBlocks(t.snapped, box, [&](int px, int py) {
                                 const float z = interpolation.depthAt(px, py);

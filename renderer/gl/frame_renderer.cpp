@@ -384,7 +384,7 @@ void GlFrameRenderer::shadowPass(const FrameInputs& frame) {
       gl_.glClearNamedFramebufferfv(shadowMaps_.framebuffer(), GL_DEPTH, 0, &farDepth);
       for (const FrameInstance& instance : frame.instances) {
         const MeshBuffers& mesh = scene_.mesh(instance.mesh);
-        if (mesh.indexCount == 0) continue;
+        if (mesh.indexCount == 0 || !frame.materials[static_cast<std::size_t>(instance.material)].castsShadow) continue;
         const DrawVariant variant = maskVariant(frame, instance);
         const DepthProgram& depth = depthPrograms_.at(variant.index());
         const GLuint program = depth.program.id();

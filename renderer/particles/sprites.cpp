@@ -25,7 +25,7 @@ Image softDisc(int side) {
 }
 
 void addSprites(Scene& scene, const std::vector<Sprite>& sprites, const CameraSettings& camera, const Image& sprite, SpriteBlending blending,
-                const std::string& name) {
+                bool castsShadow, const std::string& name) {
   if (sprites.empty()) return;
   // The eye's axes (the course's eye matrix): n toward the eye, u to the right, v up.
   const glm::vec3 n = glm::normalize(camera.eye - camera.reference);
@@ -74,6 +74,7 @@ void addSprites(Scene& scene, const std::vector<Sprite>& sprites, const CameraSe
   material.doubleSided = true;
   material.unlit = true;
   material.additive = blending == SpriteBlending::Additive;
+  material.castsShadow = castsShadow;
   material.metallic = 0.0f;
   scene.materials.push_back(std::move(material));
   scene.addObject(std::move(mesh), static_cast<int>(scene.materials.size()) - 1, glm::mat4(1.0f));

@@ -36,6 +36,6 @@ Image softDisc(int side);
 // sRGB image with alpha, mipmapped here). `camera` must be resolved
 // (pipeline/view_setup.h). Adds nothing for no sprites.
 void addSprites(Scene& scene, const std::vector<Sprite>& sprites, const CameraSettings& camera, const Image& sprite, SpriteBlending blending,
-                const std::string& name);
+                bool castsShadow, const std::string& name);
 
 }  // namespace facet

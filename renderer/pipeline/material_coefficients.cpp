@@ -24,6 +24,7 @@ CourseMaterial courseMaterial(const Material& material, const MaterialOverrides&
   out.alphaCutoff = out.blended ? transparency.shadowCutoff : material.alphaCutoff;
   out.unlit = material.unlit;
   out.additive = out.blended && material.additive;
+  out.castsShadow = material.castsShadow;
   out.baseColorTexture = material.baseColorTexture;
   const TexcoordSets& sets = material.texcoordSets;
   out.baseColorSet = sets.baseColor;

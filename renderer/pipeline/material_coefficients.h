@@ -48,6 +48,7 @@ struct CourseMaterial {
   float alphaCutoff = 0.5f;
   bool unlit = false;     // the colour is O_d, no illumination (KHR_materials_unlit)
   bool additive = false;  // blended by the additive equation (PIPELINE.md, section 7)
+  bool castsShadow = true;  // drawn into the shadow maps
   // The ray tracer's recursive terms (PIPELINE.md, section 10): k_r = reflectivity·O_s
   // of the reflected ray, k_t of the transmitted one, the index of refraction
   // n, and Beer's law's σ per channel inside the medium (0: no attenuation).

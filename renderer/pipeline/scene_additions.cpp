@@ -121,7 +121,7 @@ std::uint64_t addParticles(Scene& scene, const RenderSettings& settings, const C
     sprites.reserve(particles.size());
     for (const Particle& p : particles) sprites.push_back({p.position, p.size, p.color});
     const Image sprite = s.emitter->sprite.empty() ? softDisc(64) : readPng(s.emitter->sprite);
-    addSprites(scene, sprites, camera, sprite, s.emitter->blending, "particles of " + s.key);
+    addSprites(scene, sprites, camera, sprite, s.emitter->blending, s.emitter->castsShadow, "particles of " + s.key);
     added += sprites.size();
   }
   return added;
@@ -166,7 +166,7 @@ RenderSettings addVolumeAndParticles(Scene& scene, const RenderSettings& setting
   const RenderSettings resolved = materialize(scene, settings, true, true);
   if (!file.empty() && vs.mode == VolumeMode::Splat) {
     const std::vector<Sprite> voxels = splats(scene, vs);
-    addSprites(scene, voxels, resolved.camera, gaussianFootprint(), SpriteBlending::Over, "splats");
+    addSprites(scene, voxels, resolved.camera, gaussianFootprint(), SpriteBlending::Over, true, "splats");
     added.splats = voxels.size();
   }
   added.particles = addParticles(scene, settings, resolved.camera, threads);

@@ -111,6 +111,7 @@ float RayTracer::shadowFactor(const FrameLight& light, glm::vec3 P, glm::vec3 Ng
   float S = 1.0f;
   scene_.bvh().forEachHit(ray, [&](const Hit& hit) {
     const CourseMaterial& material = *scene_.drawOf(hit.primitive).material;
+    if (!material.castsShadow) return false;  // as the shadow maps leave it out
     // The shadow pass's alpha test (blended: transparency.shadowCutoff): what it discards casts nothing.
     if ((material.masked || material.blended) && !cpu::alphaKept(material, scene_.alphaAt(hit, ray))) return false;
     S = material.transmission > 0.0f ? S * material.transmission : 0.0f;

@@ -42,6 +42,7 @@ struct Emitter {
   float friction = 0.2f;                   // the share of the tangential speed lost at a bounce
   std::string sprite;                      // a PNG with alpha; empty: a built-in soft disc
   SpriteBlending blending = SpriteBlending::Over;
+  bool castsShadow = false;                // the sprites are drawn into the shadow maps (where α ≥ transparency.shadowCutoff)
   int seed = 1;                            // the generator's seed: the same seed, the same particles
   float step = kDefaultParticleStep;       // seconds: the fixed step of the integration (simulateParticles is given it)
 };

@@ -101,6 +101,8 @@ struct Material {
   // BLEND adds the fragment's light instead of laying it over
   // (renderer/PIPELINE.md, section 7, "Transparency"): additive particles.
   bool additive = false;
+  // Whether it casts a shadow in the shadow maps (sprites: their emitter's castsShadow).
+  bool castsShadow = true;
   // What the ray tracer refracts (renderer/PIPELINE.md, section 10):
   // KHR_materials_transmission, KHR_materials_ior, KHR_materials_volume.
   float transmission = 0.0f;      // the share of light transmitted, [0, 1]

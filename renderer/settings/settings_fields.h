@@ -73,6 +73,7 @@ void visitItem(Visitor& v, Emitter& e) {
   v.field({"friction", "the share of the tangential speed lost at a bounce", 0, 1}, e.friction);
   v.field({"sprite", "a PNG with alpha drawn on each particle; empty: a soft disc"}, e.sprite);
   v.choice({"blending", "over: the frame's blending equation; additive: C_o = C_b a_b + C_f a_f, adding light"}, e.blending, kSpriteBlendingNames);
+  v.field({"castsShadow", "the sprites cast shadows where their alpha is at least transparency.shadowCutoff"}, e.castsShadow);
   v.field({"seed", "the generator's seed: the same seed, the same particles", 0, 16777216}, e.seed);
   v.field({"step", "seconds: the fixed step Newton's laws are integrated with", 1e-5, 1}, e.step);
 }

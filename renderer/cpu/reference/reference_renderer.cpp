@@ -145,6 +145,7 @@ ShadowMaps shadowPass(const Scene& scene, const FrameInputs& frame) {
         // An alpha-masked material casts a shadow only where its fragments are kept: it
         // interpolates texture coordinates and vertex alpha, in the flat layout's places.
         const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
+        if (!material.castsShadow) continue;
         const VaryingLayout mask = varyingLayout(ShadingMode::Flat);
         const Texture* texture = baseColorTextureOf(scene, frame, material, mesh);
         const bool colored = !mesh.colors.empty();
