@@ -11,6 +11,14 @@ function(facet_run_command)
     set(R_WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
   endif()
   execute_process(COMMAND ${R_COMMAND} WORKING_DIRECTORY ${R_WORKING_DIRECTORY} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  # xvfb-run exits 5, in place of the command's own code, when it cannot
+  # remove its temporary folder afterwards (Debian 12's xvfb-run removes it
+  # before it stops Xvfb, which may still write there): the virtual display's
+  # housekeeping, not facet. The command runs once more; twice is a failure.
+  if(rc EQUAL 5 AND err MATCHES "xvfb-run: error: problem while cleaning up temporary directory")
+    message(STATUS "xvfb-run could not clean up its temporary folder; running the command again")
+    execute_process(COMMAND ${R_COMMAND} WORKING_DIRECTORY ${R_WORKING_DIRECTORY} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  endif()
   set(report "\nexit ${rc}\nstdout:\n${out}\nstderr:\n${err}")
   if(NOT rc MATCHES "^[0-9]+$")
     message(FATAL_ERROR "the command did not exit, it ended with: ${rc}${report}")

@@ -50,9 +50,20 @@ void readVolume(Scene& scene, const VolumeSettings& settings, const std::string&
   scene.volume.key = key;
 }
 
+// The mean of the finite samples: the default iso value, which separates a
+// scan's tissue from its background far better than the middle of the range
+// (one bright voxel moves that), and is 0.5 for the Marschner-Lobb signal.
+float meanValue(const Volume& volume) {
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (const float v : volume.values)
+    if (std::isfinite(v)) sum += v, ++count;
+  return count ? static_cast<float>(sum / static_cast<double>(count)) : 0.0f;
+}
+
 void addIsosurface(Scene& scene, const VolumeSettings& settings, SceneAdditions& added) {
   const Volume& volume = *scene.volume.data;
-  const float iso = settings.isoValue.value_or(0.5f * (volume.minValue + volume.maxValue));
+  const float iso = settings.isoValue ? *settings.isoValue : meanValue(volume);
   if (!(iso >= volume.minValue && iso <= volume.maxValue))
     scene.warnings.push_back("volume.isoValue " + std::to_string(iso) + " is outside the data's range [" + std::to_string(volume.minValue) + ", " +
                              std::to_string(volume.maxValue) + "]: the iso-surface is empty");

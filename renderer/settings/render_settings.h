@@ -225,7 +225,7 @@ inline constexpr std::array<std::string_view, static_cast<int>(VolumeMode::Count
 struct VolumeSettings {
   std::string file;                   // a NRRD (.nrrd, .nhdr) or NIfTI-1 (.nii, .nii.gz) file, or builtin:marschner-lobb; empty: none
   int resolution = 64;                // builtin:marschner-lobb: samples along each axis
-  VolumeMode mode = VolumeMode::Raycast;
+  VolumeMode mode = VolumeMode::Isosurface;  // the one every backend draws, and the quickest
   std::string transfer = "grey";      // a preset, or control points "value r g b a, ..." (volume/transfer_function.h)
   glm::vec3 center{0.0f, 1.0f, 0.0f};// world position of the volume box's centre
   float size = 2.0f;                  // world length of the box's longest side
@@ -234,7 +234,7 @@ struct VolumeSettings {
   float earlyTermination = 0.99f;     // raycast: a ray stops once its accumulated opacity reaches this (1: never)
   bool emptySpaceSkipping = true;     // raycast: macro cells whose samples the transfer function makes transparent are stepped over
   float splatRadius = 1.5f;           // splat: the footprint's radius, in voxel spacings (a Gaussian of σ = radius / 3)
-  std::optional<float> isoValue;      // isosurface: the value in the data's units; null: the middle of the data's range
+  std::optional<float> isoValue;      // isosurface: the value in the data's units; null: the mean of the data
   glm::vec3 isoColor{0.9f, 0.85f, 0.75f};  // isosurface: the mesh's base colour, linear RGB
 };
 

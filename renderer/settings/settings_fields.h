@@ -203,7 +203,7 @@ void visitSettings(Visitor& v, RenderSettings& s) {
     v.field({"earlyTermination", "raycast: a ray stops once its opacity reaches this (1: never)", 0, 1}, vs.earlyTermination);
     v.field({"emptySpaceSkipping", "raycast: step over macro cells the transfer function makes transparent"}, vs.emptySpaceSkipping);
     v.field({"splatRadius", "splat: the footprint's radius in voxel spacings (Gaussian, sigma = radius / 3)", 0.5, 8}, vs.splatRadius);
-    v.field({"isoValue", "isosurface: the iso value in the data's units (null: the middle of the data's range)", -1e30, 1e30}, vs.isoValue);
+    v.field({"isoValue", "isosurface: the iso value in the data's units (null: the mean of the data)", -1e30, 1e30}, vs.isoValue);
     v.field({"isoColor", "isosurface: the mesh's base colour, linear RGB", 0, 1, FieldKind::Color}, vs.isoColor);
   });
   v.field({"time", "seconds into the scene's glTF animations: where they place its meshes", 0, 1e6}, s.time);

@@ -1,16 +1,13 @@
 # `facet view --screenshot --with-panel` writes the whole window: the panel
 # must be in it, so it differs from the 3D view alone. Defines: FACET,
 # XVFB_RUN, OUT (a path prefix for the images).
+include(${CMAKE_CURRENT_LIST_DIR}/../run_command.cmake)
 set(plain ${OUT}_plain.png)
 set(panel ${OUT}_panel.png)
 file(REMOVE ${plain} ${panel})
 foreach(flags IN ITEMS "--screenshot|${plain}" "--screenshot|${panel}|--with-panel")
   string(REPLACE "|" ";" flags "${flags}")
-  execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 1024x768x24" ${FACET} view --size 800x600 --frames 2 ${flags}
-    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "facet view ${flags} failed (exit ${rc})\nstdout: ${out}\nstderr: ${err}")
-  endif()
+  facet_run_command(COMMAND ${XVFB_RUN} -a -s "-screen 0 1024x768x24" ${FACET} view --size 800x600 --frames 2 ${flags} EXPECT 0)
 endforeach()
 execute_process(COMMAND ${FACET} diff ${plain} ${panel} -o ${OUT}_heatmap.png RESULT_VARIABLE rc OUTPUT_VARIABLE out)
 message(STATUS "${out}")
