@@ -13,10 +13,7 @@
 #include <thread>
 
 #include "common/error.h"
-
-#if defined(__SSE2__)
-#include <xmmintrin.h>
-#endif
+#include "cpu/denormals.h"  // header only: the mode the CPU backend and llvmpipe compute in
 
 namespace facet {
 namespace {
@@ -271,26 +268,10 @@ void integrate(const Job& job, std::uint64_t from, std::uint64_t to) {
 }
 
 // Every worker, the calling thread included, integrates with denormals
-// flushed to zero (MXCSR FTZ and DAZ, as the CPU backend's phases and
-// llvmpipe run), whatever mode its thread had: the same bits on any thread,
-// and no slow denormal arithmetic as a resting particle's speed decays.
-class FlushDenormalsHere {
- public:
-#if defined(__SSE2__)
-  FlushDenormalsHere() : saved_(_mm_getcsr()) { _mm_setcsr(saved_ | 0x8040u); }
-  ~FlushDenormalsHere() { _mm_setcsr(saved_); }
-#endif
-  FlushDenormalsHere(const FlushDenormalsHere&) = delete;
-  FlushDenormalsHere& operator=(const FlushDenormalsHere&) = delete;
-
- private:
-#if defined(__SSE2__)
-  unsigned saved_;
-#endif
-};
-
+// flushed to zero, whatever mode its thread had: the same bits on any
+// thread, and no slow denormal arithmetic as a resting particle's speed decays.
 void runRange(const Job& job, std::uint64_t from, std::uint64_t to) {
-  const FlushDenormalsHere flush;
+  const cpu::FlushDenormals flush;
   if (job.emitter->ground) integrate<true>(job, from, to);
   else integrate<false>(job, from, to);
 }

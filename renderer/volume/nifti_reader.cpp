@@ -18,6 +18,7 @@
 #include "scene/memory_budget.h"
 #include "settings/render_settings.h"
 #include "volume/load_volume.h"
+#include "volume/volume_file.h"
 
 namespace facet {
 namespace {
@@ -43,21 +44,6 @@ struct ZnzClose {
   }
 };
 using ZnzFile = std::unique_ptr<znzptr, ZnzClose>;
-
-void requireRegularFile(const std::string& path, const std::string& shown) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::file_status status = fs::status(path, ec);
-  if (ec && ec.value() != ENOENT && ec.value() != ENOTDIR) throw Error(shown + ": " + describeErrno(ec.value()));
-  if (ec || !fs::exists(status)) throw Error(shown + ": no such file");
-  if (!fs::is_regular_file(status)) throw Error(shown + ": not a regular file");
-}
-
-struct SampleType {
-  const char* name = "";  // as messages say it
-  std::size_t bytes = 0;
-  bool supported = false;
-};
 
 SampleType sampleType(int datatype) {
   switch (datatype) {

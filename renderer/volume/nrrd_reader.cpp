@@ -26,6 +26,7 @@
 #include "scene/memory_budget.h"
 #include "settings/render_settings.h"
 #include "volume/load_volume.h"
+#include "volume/volume_file.h"
 
 // teem's gzip stream (nrrd/gzio.c): exported by libteem, declared only in
 // its private header. Only zlib's gzFile type comes from zlib.h.
@@ -109,15 +110,6 @@ void discardTeemMessages() {
   if (biffCheck(NRRD)) std::free(biffGetDone(NRRD));
 }
 
-void requireRegularFile(const std::string& path, const std::string& shown) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::file_status status = fs::status(path, ec);
-  if (ec && ec.value() != ENOENT && ec.value() != ENOTDIR) throw Error(shown + ": " + describeErrno(ec.value()));
-  if (ec || !fs::exists(status)) throw Error(shown + ": no such file");
-  if (!fs::is_regular_file(status)) throw Error(shown + ": not a regular file");
-}
-
 std::string lowerCase(std::string_view text) {
   std::string lower(text);
   for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -167,12 +159,6 @@ void checkHeaderText(const std::string& path, const std::string& shown) {
   }
   if (!ended && head.size() > kMaxHeaderBytes) throw Error(shown + ": header longer than " + byteCount(kMaxHeaderBytes));
 }
-
-struct SampleType {
-  const char* name = "";  // as messages say it
-  std::size_t bytes = 0;
-  bool supported = false;
-};
 
 SampleType sampleType(int type) {
   switch (type) {
