@@ -45,6 +45,8 @@ class RayRenderer final : public Renderer {
   RenderResult render(const Scene& scene, const FrameInputs& frame) override {
     if (frame.areaAveraged)
       throw Error("settings key 'antialiasing.pattern': area is the CPU rasterizer's exact coverage; the ray tracer samples grid or jittered");
+    if (frame.volume.placed)
+      throw Error("settings key 'volume.mode': raycast is drawn by the CPU rasterizer (--backend cpu); the ray tracer draws splat and isosurface");
     RenderResult result;
     const TracedScene& traced = prepare(scene, frame, frame.ray.spheres, result);
     // Paths per pixel: ray.samples, each jittered over the pixel; with one, the antialiasing

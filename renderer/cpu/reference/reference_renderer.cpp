@@ -344,6 +344,8 @@ class ReferenceRenderer final : public Renderer {
 
   RenderResult render(const Scene& scene, const FrameInputs& frame) override {
     check_(scene, frame);
+    if (frame.volume.placed)
+      throw Error("settings key 'volume.mode': raycast is drawn by the CPU backend (--backend cpu); the readable reference draws splat and isosurface");
     if (frame.areaAveraged) return renderAreaAveraged(scene, frame);
     refuseHiddenSurface(frame);
     const auto start = std::chrono::steady_clock::now();
