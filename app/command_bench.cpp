@@ -3,8 +3,7 @@
 //
 // Index of this file
 //   [SECTION] Scenes: built in code, manual camera and lights
-//   [SECTION] Statistics
-//   [SECTION] Child processes: peak memory per backend, time to first PNG
+//   [SECTION] Memory
 //   [SECTION] The command
 //
 // In one process, for each scene, both backends render `--warmup` frames,
@@ -15,9 +14,6 @@
 // one scene and renders it with one backend, so each backend's figure is its
 // own. `--callgrind` renders one scene with one backend with callgrind's
 // instrumentation switched on around the frames only.
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -40,9 +36,11 @@
 #define CALLGRIND_ZERO_STATS
 #endif
 
+#include "child_process.h"
 #include "command_line.h"
 #include "bench_rays.h"
 #include "commands.h"
+#include "sample_summary.h"
 #include "common/error.h"
 #include "cpu/cpu_renderer.h"
 #include "ray/ray_renderer.h"
@@ -55,8 +53,6 @@
 #if FACET_HAVE_GL
 #include "gl/gl_renderer.h"
 #endif
-
-extern char** environ;
 
 namespace facet {
 namespace {
@@ -229,24 +225,7 @@ void printAdditions(const SceneAdditions& added, double milliseconds, const Fram
   if (frame.volume.placed) std::printf("  volume: placed in %.2f ms (median)\n", milliseconds);
 }
 
-// [SECTION] Statistics
-
-struct Summary {
-  double median = 0, min = 0, max = 0, q1 = 0, q3 = 0;
-};
-
-double quantile(std::vector<double> sorted, double q) {
-  if (sorted.empty()) return 0;
-  const double at = q * static_cast<double>(sorted.size() - 1);
-  const auto lo = static_cast<std::size_t>(std::floor(at)), hi = static_cast<std::size_t>(std::ceil(at));
-  return sorted[lo] + (sorted[hi] - sorted[lo]) * (at - static_cast<double>(lo));
-}
-
-Summary summarize(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  if (v.empty()) return {};
-  return {quantile(v, 0.5), v.front(), v.back(), quantile(v, 0.25), quantile(v, 0.75)};
-}
+// [SECTION] Memory
 
 long statusKilobytes(const char* key) {
   std::ifstream in("/proc/self/status");
@@ -255,47 +234,6 @@ long statusKilobytes(const char* key) {
   while (std::getline(in, line))
     if (line.rfind(prefix, 0) == 0) return std::atol(line.c_str() + prefix.size());
   return -1;
-}
-
-// [SECTION] Child processes: peak memory per backend, time to first PNG
-
-// Runs argv to completion with stdout captured (when `out` is given); returns the exit status.
-int runChild(const std::vector<std::string>& args, std::string* out) {
-  std::vector<char*> argv;
-  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  int pipeFds[2] = {-1, -1};
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  if (out) {
-    if (pipe(pipeFds) != 0) throw Error("bench: pipe failed");
-    posix_spawn_file_actions_adddup2(&actions, pipeFds[1], STDOUT_FILENO);
-    posix_spawn_file_actions_addclose(&actions, pipeFds[0]);
-  } else {
-    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  }
-  pid_t pid = 0;
-  const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (out) {
-    close(pipeFds[1]);
-    char buffer[4096];
-    ssize_t n;
-    while ((n = read(pipeFds[0], buffer, sizeof buffer)) > 0) out->append(buffer, static_cast<std::size_t>(n));
-    close(pipeFds[0]);
-  }
-  if (spawned != 0) throw Error("bench: cannot run " + args[0]);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
-}
-
-std::string selfPath() {
-  char path[4096];
-  const ssize_t n = readlink("/proc/self/exe", path, sizeof path - 1);
-  if (n <= 0) throw Error("bench: cannot find /proc/self/exe");
-  path[n] = '\0';
-  return path;
 }
 
 // [SECTION] The command

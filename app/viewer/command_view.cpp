@@ -18,6 +18,7 @@ struct ViewCommandOptions {
   bool withPanel = false;
   bool reference = false;
   bool rayReference = false;
+  int benchOrbit = 0;
 };
 
 }  // namespace
@@ -35,6 +36,11 @@ Command addViewCommand(CLI::App& app) {
                     "render the CPU reference after every change; --screenshot waits for it and prints its figures");
   command->add_flag("--ray-reference", options->rayReference,
                     "the reference is the ray tracer (shadow rays, reflections, refraction), not the CPU rasterizer");
+  command->add_option("--bench-orbit", options->benchOrbit,
+                      "orbit the camera once around the scene in N frames, as a drag would, print the median and spread of ms per window frame "
+                      "and the ratio to a headless `facet render` frame of the same scene and size, and exit")
+      ->check(CLI::Range(1, 100000))
+      ->excludes(screenshot);
   return [options]() {
     viewer::ViewerOptions view;
     view.scene = std::make_shared<const Scene>(loadScene(options->common.scenePath));
@@ -48,6 +54,7 @@ Command addViewCommand(CLI::App& app) {
     view.screenshotWithPanel = options->withPanel;
     view.followReference = options->reference;
     view.rayReference = options->rayReference;
+    view.benchOrbit = options->benchOrbit;
     return viewer::runViewer(view);
   };
 }

@@ -27,6 +27,7 @@
 #include "viewer/control_panel.h"
 #include "viewer/frame_times.h"
 #include "viewer/imgui_session.h"
+#include "viewer/orbit_bench.h"
 #include "viewer/reference_view.h"
 #include "viewer/view_input.h"
 #include "viewer/viewer_gl.h"
@@ -180,7 +181,8 @@ void drawErrorOverlay(const std::string& error) {
 
 int runViewer(const ViewerOptions& options) {
   ViewerState state = initialState(options);
-  const bool batch = !options.batchScreenshot.empty();
+  const bool bench = options.benchOrbit > 0;
+  const bool batch = !options.batchScreenshot.empty() || bench;
 
   // Setup window, OpenGL 4.5 core, the GL backend and Dear ImGui
   GlfwLibrary glfw;
@@ -199,7 +201,8 @@ int runViewer(const ViewerOptions& options) {
   bool showPanel = true;
   bool redrawEveryFrame = false;  // the panel's checkbox
   bool changedLastFrame = false;
-  int framesLeft = options.frames;
+  int framesLeft = bench ? options.benchOrbit + 1 : options.frames;  // the bench's first frame (upload, compile) is not timed
+  std::vector<double> benchFrames;
   Clock::time_point lastIteration = Clock::now();
 
   // Main loop
@@ -218,6 +221,7 @@ int runViewer(const ViewerOptions& options) {
     int width = 0, height = 0;
     window.framebufferSize(width, height);
     if (width == 0 || height == 0) continue;  // minimized: nothing to draw into
+    if (bench && framesLeft <= options.benchOrbit) orbitBenchStep(state, options.benchOrbit, static_cast<float>(height));
 
     // Start the Dear ImGui frame: the shortcuts and the panel edit state.settings
     const std::vector<KeyPress> presses = window.takePressedKeys();
@@ -239,7 +243,7 @@ int runViewer(const ViewerOptions& options) {
     // draws and times each of its frames). A value being typed waits until it
     // is done: "1200" would otherwise draw 1, 12 and 120 on the way.
     const bool typing = ImGui::GetIO().WantTextInput;
-    changedLastFrame = !typing && drawChangedFrame(renderer, state, drawn, redrawEveryFrame || (batch && framesLeft > 0));
+    changedLastFrame = !typing && drawChangedFrame(renderer, state, drawn, redrawEveryFrame || (batch && !bench && framesLeft > 0));
     if (changedLastFrame && drawn.error.empty()) drawTimes.add(drawn.milliseconds);
     if (batch && !drawn.error.empty()) throw Error(drawn.error);
     reference.update(drawn.version, [&] { return ReferenceRequest{drawn.version, drawn.scene, drawn.frame, drawn.image}; });
@@ -250,6 +254,13 @@ int runViewer(const ViewerOptions& options) {
     if ((keys.screenshot || panel.screenshot) && drawn.version > 0) saveScreenshot(state, drawn.image);
     imgui.render();
 
+    if (bench) {
+      glfwSwapBuffers(window.handle());
+      if (framesLeft <= options.benchOrbit) benchFrames.push_back(millisecondsSince(start));
+      if (--framesLeft > 0) continue;
+      printOrbitReport(benchFrames, renderer.rendererName(), options.scenePath, state.settings);
+      break;
+    }
     // --screenshot: after `frames` frames (and the reference, when asked for), before the swap
     if (batch && --framesLeft <= 0 && (!options.followReference || reference.isFinal(drawn.version))) {
       const Image image = options.screenshotWithPanel ? readWindow(gl, width, height) : drawn.image;

@@ -19,6 +19,7 @@ struct ViewerOptions {
   bool screenshotWithPanel = false;    // --with-panel: the batch screenshot is the whole window
   bool followReference = false;        // --reference: the CPU reference follows every change
   bool rayReference = false;           // --ray-reference: the ray tracer is the reference
+  int benchOrbit = 0;                  // --bench-orbit N: orbit once in N timed frames, print the figures (orbit_bench.h), exit
 };
 
 // Opens the window and runs until it closes (or, with batchScreenshot, until
