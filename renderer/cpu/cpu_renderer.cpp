@@ -18,6 +18,7 @@
 #include "cpu/scanline_zbuffer.h"
 #include "cpu/thread_pool.h"
 #include "pipeline/frame_checks.h"
+#include "pipeline/shadow_pass_key.h"
 
 namespace facet {
 namespace {
@@ -118,8 +119,14 @@ class CpuRenderer final : public Renderer {
     return values;
   }
 
+  // Pass 1 for every shadowed light's faces, unless the maps hold this frame's already (pipeline/shadow_pass_key.h).
   void shadowPasses(const Scene& scene, const FrameInputs& frame, RenderResult& result) {
     if (frame.shadowLayerCount > 0) {
+      if (mapsDrawn_.matches(scene, frame)) {
+        result.timings.push_back({shadowPassName(frame, true), 0.0});
+        return;
+      }
+      mapsDrawn_ = {};  // until every face is drawn
       const auto start = std::chrono::steady_clock::now();
       maps_.reset(frame.shadows.mapSize, frame.shadowLayerCount);
       for (std::size_t l = 0; l < frame.lights.size(); ++l) {
@@ -127,7 +134,8 @@ class CpuRenderer final : public Renderer {
         if (!light.hasShadowMap) continue;
         for (int face = 0; face < light.frustum.faceCount; ++face) cpu::shadowPass(pool_, buffers_, scene, frame, light, face, maps_);
       }
-      result.timings.push_back({"shadow pass (" + std::to_string(frame.shadowLayerCount) + " maps)", millisecondsSince(start)});
+      mapsDrawn_ = ShadowPassKey(scene, frame);
+      result.timings.push_back({shadowPassName(frame, false), millisecondsSince(start)});
     }
   }
 
@@ -135,6 +143,7 @@ class CpuRenderer final : public Renderer {
   cpu::ThreadPool pool_;
   cpu::FrameBuffers buffers_;
   cpu::ShadowMaps maps_;
+  ShadowPassKey mapsDrawn_;  // what maps_ holds the shadow maps of
   ColorBuffer color_;  // the lit pass's linear colours, kept from frame to frame
   ColorBuffer sum_;    // anti-aliasing: the samples' premultiplied sum
 };

@@ -106,11 +106,15 @@ std::vector<PassTiming> GlFrameRenderer::drawFrame(const Scene& scene, const Fra
   for (GLenum capability : {GL_BLEND, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_DITHER, GL_FRAMEBUFFER_SRGB, GL_POLYGON_OFFSET_FILL})
     gl_.glDisable(capability);  // a pixel keeps the shader's float output, nothing else, until the resolve
 
-  if (frame.shadowLayerCount > 0) {
+  if (frame.shadowLayerCount > 0 && mapsDrawn_.matches(scene, frame)) {
+    timings.push_back({shadowPassName(frame, true), 0.0});  // the maps hold this frame's (pipeline/shadow_pass_key.h)
+  } else if (frame.shadowLayerCount > 0) {
+    mapsDrawn_ = {};  // until every face is drawn
     shadowPass(frame);
     gl_.glFinish();
     checkError("the shadow pass");
-    timings.push_back({"shadow pass (" + std::to_string(frame.shadowLayerCount) + " maps)", millisecondsSince(start)});
+    mapsDrawn_ = ShadowPassKey(scene, frame);
+    timings.push_back({shadowPassName(frame, false), millisecondsSince(start)});
     start = Clock::now();
   }
   if (frame.samples.empty()) {

@@ -20,6 +20,7 @@
 #include "gl/scene_buffers.h"
 #include "gl/shader_program.h"
 #include "gl/shader_variant.h"
+#include "pipeline/shadow_pass_key.h"
 #include "render/renderer.h"
 
 namespace facet::gl {
@@ -158,6 +159,7 @@ class GlFrameRenderer {
   PaintersDraws painters_;  // hsr = painter: the frame's triangles back to front
   PaintersDraws transparent_;  // the blended triangles back to front, after the rest
   ShadowMapArray shadowMaps_;
+  ShadowPassKey mapsDrawn_;  // what shadowMaps_ holds the maps of
   RenderTarget target_{GL_RGBA32F};  // the lit pass's colour buffer, linear RGBA
   RenderTarget resolved_{GL_RGBA8, RenderTarget::Depth::Without};
   RenderTarget sum_{GL_RGBA32F, RenderTarget::Depth::Without};  // anti-aliasing: the samples' premultiplied sum

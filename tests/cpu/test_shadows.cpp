@@ -7,6 +7,8 @@
 #include <doctest/doctest.h>
 #include <glm/geometric.hpp>
 
+#include "../kept_shadow_maps.h"
+#include "cpu/cpu_renderer.h"
 #include "cpu/lighting.h"
 #include "cpu/shadow_maps.h"
 #include "cpu_test_scenes.h"
@@ -174,4 +176,8 @@ TEST_CASE("PCF taps beyond a map's edge: lit for a spot or directional map, the 
   CHECK(S(LightKind::Spot) == doctest::Approx(3.0f / 9.0f));
   // The neighbouring cube face holds what lies beyond the edge: no lit seam where the face changes.
   CHECK(S(LightKind::Point) == 0.0f);
+}
+
+TEST_CASE("the CPU renderer keeps its shadow maps while the light, the geometry and the shadow settings stay, and redraws them when they change") {
+  checkShadowMapsKept([] { return makeCpuRenderer(2); });
 }
