@@ -19,6 +19,9 @@ struct ViewCommandOptions {
   bool reference = false;
   bool rayReference = false;
   int benchOrbit = 0;
+  std::string backend = "auto";
+  int dragPreview = 2;
+  bool noPanel = false;
 };
 
 }  // namespace
@@ -36,6 +39,15 @@ Command addViewCommand(CLI::App& app) {
                     "render the CPU reference after every change; --screenshot waits for it and prints its figures");
   command->add_flag("--ray-reference", options->rayReference,
                     "the reference is the ray tracer (shadow rays, reflections, refraction), not the CPU rasterizer");
+  command->add_option("--backend", options->backend,
+                      "what draws the 3D view: gl (OpenGL on the window's context), cpu (the CPU rasterizer, the same bytes), or auto: cpu where "
+                      "OpenGL is a software rasterizer (llvmpipe), else gl")
+      ->check(CLI::IsMember({"auto", "gl", "cpu"}));
+  command->add_flag("--no-panel", options->noPanel, "start with the panel hidden (H shows it): the 3D view takes the whole window");
+  command->add_option("--drag-preview", options->dragPreview,
+                      "while a drag or the wheel moves the camera, draw frames at 1/N of each side (the full frame follows when it stops); 1: always full")
+      ->check(CLI::Range(1, viewer::kMaxDragPreview))
+      ->capture_default_str();
   command->add_option("--bench-orbit", options->benchOrbit,
                       "orbit the camera once around the scene in N frames, as a drag would, print the median and spread of ms per window frame "
                       "and the ratio to a headless `facet render` frame of the same scene and size, and exit")
@@ -55,6 +67,9 @@ Command addViewCommand(CLI::App& app) {
     view.followReference = options->reference;
     view.rayReference = options->rayReference;
     view.benchOrbit = options->benchOrbit;
+    view.dragPreview = options->dragPreview;
+    view.showPanel = !options->noPanel;
+    view.backend = options->backend == "gl" ? viewer::FrameBackend::OpenGl : options->backend == "cpu" ? viewer::FrameBackend::Cpu : viewer::FrameBackend::Auto;
     return viewer::runViewer(view);
   };
 }

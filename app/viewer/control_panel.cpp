@@ -13,23 +13,36 @@ namespace {
 
 const ImVec4 kErrorColor{1.0f, 0.45f, 0.4f, 1.0f};
 const ImVec4 kDoneColor{0.55f, 0.85f, 0.55f, 1.0f};
-// The panel's first width: 40% of the window, within these (pixels): below
-// the minimum, "parallelWidth" and a drag box no longer fit side by side.
-constexpr float kPanelMinWidth = 280.0f, kPanelMaxWidth = 420.0f;
+// Below this width (ImGui units) "parallelWidth" and a drag box no longer
+// fit side by side; the 3D view keeps at least kViewMinWidth.
+constexpr float kPanelMinWidth = 280.0f, kViewMinWidth = 64.0f;
 
 void helpMarker(const char* text) {
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
 }
 
-void drawStatus(const ViewerState& state, const FrameStats& stats, bool& redrawEveryFrame) {
+void drawStatus(ViewerState& state, const FrameStats& stats, bool& redrawEveryFrame) {
   ImGui::TextUnformatted(state.scene->source.c_str());
   ImGui::Text("%zu triangles, %d light%s, %d shadow map%s", stats.triangles, stats.lights, stats.lights == 1 ? "" : "s", stats.shadowMaps,
               stats.shadowMaps == 1 ? "" : "s");
-  ImGui::Text("GL frame %.1f ms, window frame %.1f ms", stats.drawMilliseconds, stats.windowMilliseconds);
-  helpMarker("medians of the last 60 frames\nGL frame: GlFrameRenderer::drawFrame, both passes, finished\nwindow frame: UI, the 3D frame when it changed, the swap");
+  ImGui::Text("3D frame %.1f ms, window frame %.1f ms", stats.drawMilliseconds, stats.windowMilliseconds);
+  helpMarker("medians of the last 60 frames\n3D frame: the backend's passes (shadow, lit, resolve)\nwindow frame: UI, the 3D frame when it changed, the swap");
+  ImGui::TextUnformatted("draw with");
+  for (std::size_t i = 0; i < kFrameBackendNames.size(); ++i) {
+    ImGui::SameLine();
+    static constexpr std::array<const char*, 3> kLabels = {"auto", "OpenGL", "CPU"};
+    if (ImGui::RadioButton(kLabels[i], state.backend == static_cast<FrameBackend>(i))) state.backend = static_cast<FrameBackend>(i);
+  }
+  helpMarker("auto: the CPU rasterizer where OpenGL is a software rasterizer (llvmpipe), which it outruns; else OpenGL.\n"
+             "Both draw the same bytes: the agreement suite holds them to it.");
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6.0f);
+  ImGui::SliderInt("drag preview (1/N of each side)", &state.dragPreview, 1, kMaxDragPreview);
+  helpMarker("while a drag or the wheel moves the camera, frames are drawn at 1/N of the view's width and height and scaled up;\n"
+             "the frame at full size follows when the camera stops. 1: always full size");
   ImGui::Checkbox("redraw every frame", &redrawEveryFrame);
   helpMarker("draw the 3D frame every window frame, not only after a change, to time it");
   ImGui::PushTextWrapPos(0.0f);
+  ImGui::TextDisabled("%s", stats.backend.c_str());
   ImGui::TextDisabled("%s", stats.renderer.c_str());
   if (!stats.drawError.empty()) ImGui::TextColored(kErrorColor, "cannot draw these settings: %s", stats.drawError.c_str());
   if (!state.message.empty()) ImGui::TextColored(state.messageIsError ? kErrorColor : kDoneColor, "%s", state.message.c_str());
@@ -117,13 +130,17 @@ void tab(const char* name, Fn&& drawContent) {
 
 }  // namespace
 
-PanelRequests drawControlPanel(ViewerState& state, const FrameStats& stats, ReferenceView& reference, bool& redrawEveryFrame) {
+PanelRequests drawControlPanel(ViewerState& state, const FrameStats& stats, ReferenceView& reference, bool& redrawEveryFrame, float& width) {
   PanelRequests requests;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(std::clamp(0.4f * display.x, kPanelMinWidth, kPanelMaxWidth), display.y), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(display.x, display.y));  // shrinks with the window
-  if (ImGui::Begin("facet")) {
+  // Docked: the left edge, the whole height; only its right edge moves, and the 3D view takes the rest.
+  const float widest = std::max(kPanelMinWidth, display.x - kViewMinWidth);
+  ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(std::clamp(width, kPanelMinWidth, widest), display.y), ImGuiCond_Always);
+  ImGui::SetNextWindowSizeConstraints(ImVec2(kPanelMinWidth, display.y), ImVec2(widest, display.y));
+  const bool open = ImGui::Begin("facet", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBringToFrontOnFocus);
+  width = ImGui::GetWindowWidth();
+  if (open) {
     drawStatus(state, stats, redrawEveryFrame);
     if (ImGui::BeginTabBar("tabs")) {
       tab("Settings", [&] { drawSettingsPanel(state.settings, *state.scene, state.sphere); });

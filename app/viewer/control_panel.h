@@ -12,7 +12,8 @@ namespace facet::viewer {
 
 struct FrameStats {
   std::string renderer;            // GL_RENDERER, GL_VERSION
-  double drawMilliseconds = 0;     // GlFrameRenderer::drawFrame, median of the last 60 frames drawn
+  std::string backend;             // which backend draws the 3D view, and why (ViewFrame::backendLine)
+  double drawMilliseconds = 0;     // the 3D frame's passes, median of the last 60 frames drawn
   double windowMilliseconds = 0;   // a whole window frame (UI, 3D if it changed, swap), median of the last 60
   std::size_t triangles = 0;       // over all instances
   int lights = 0, shadowMaps = 0;  // of the frame on screen
@@ -24,8 +25,10 @@ struct PanelRequests {
   bool screenshot = false;
 };
 
-// Within an ImGui frame. redrawEveryFrame: the panel's checkbox (draw the 3D
-// frame even when nothing changed, to time it).
-PanelRequests drawControlPanel(ViewerState& state, const FrameStats& stats, ReferenceView& reference, bool& redrawEveryFrame);
+// Within an ImGui frame: the panel docked on the left of the window, the
+// whole height, `width` wide (ImGui units; the user's resize of its right
+// edge comes back in it). redrawEveryFrame: the panel's checkbox (draw the
+// 3D frame even when nothing changed, to time it).
+PanelRequests drawControlPanel(ViewerState& state, const FrameStats& stats, ReferenceView& reference, bool& redrawEveryFrame, float& width);
 
 }  // namespace facet::viewer

@@ -5,6 +5,7 @@ namespace facet::viewer {
 void ImageTexture::upload(const Image& image) {
   if (image.empty()) {
     texture_ = gl::GlObject();
+    framebuffer_ = gl::GlObject();
     width_ = height_ = 0;
     return;
   }
@@ -16,6 +17,8 @@ void ImageTexture::upload(const Image& image) {
     gl_->glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     gl_->glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     gl_->glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    framebuffer_ = gl::createFramebuffer(*gl_);
+    gl_->glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, texture_.id(), 0);
     width_ = image.width();
     height_ = image.height();
   }

@@ -26,12 +26,15 @@ class ImageTexture {
   bool empty() const { return !texture_; }
   int width() const { return width_; }
   int height() const { return height_; }
+  // A framebuffer with the texture as its colour attachment 0, to blit from.
+  unsigned framebuffer() const { return framebuffer_.id(); }
   // ImGui's opengl3 backend takes the texture name as its ImTextureID.
   ImTextureID id() const { return reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(texture_.id())); }
 
  private:
   const gl::GlFunctions* gl_;
   gl::GlObject texture_;
+  gl::GlObject framebuffer_;
   int width_ = 0, height_ = 0;
 };
 

@@ -72,11 +72,13 @@ double headlessFrameMilliseconds(const std::string& scenePath, const RenderSetti
   return summarize(frames).median;
 }
 
-void printOrbitReport(const std::vector<double>& windowMilliseconds, const std::string& shown, const std::string& scenePath,
+void printOrbitReport(const std::vector<double>& windowMilliseconds, const std::string& shown, int dragPreview, const std::string& scenePath,
                       const RenderSettings& settings) {
   const Summary s = summarize(windowMilliseconds);
-  std::printf("orbit: %zu window frames at %dx%d, 3D frames by %s: %.1f ms median (quartiles %.1f..%.1f, %.1f..%.1f), %.1f frames a second\n",
-              windowMilliseconds.size(), settings.width, settings.height, shown.c_str(), s.median, s.q1, s.q3, s.min, s.max, 1000.0 / s.median);
+  std::printf("orbit: %zu window frames of a %dx%d view, %s, drawn at 1/%d of each side while dragging\n", windowMilliseconds.size(), settings.width,
+              settings.height, shown.c_str(), dragPreview);
+  std::printf("  %.1f ms a window frame (median; quartiles %.1f..%.1f, range %.1f..%.1f), %.1f frames a second\n", s.median, s.q1, s.q3, s.min,
+              s.max, 1000.0 / s.median);
   for (const char* backend : {"gl", "cpu"}) {
     const double headless = headlessFrameMilliseconds(scenePath, settings, backend, kHeadlessRuns);
     std::printf("  headless `facet render --backend %s` frame (median of %d processes): %.1f ms; orbit frame / headless frame = %.3f\n", backend,

@@ -23,7 +23,8 @@ void orbitBenchStep(ViewerState& state, int frames, float windowHeight);
 double headlessFrameMilliseconds(const std::string& scenePath, const RenderSettings& settings, const std::string& backend, int runs);
 
 // The figures: the window frames' median and spread, and the ratio to each headless frame.
-void printOrbitReport(const std::vector<double>& windowMilliseconds, const std::string& shown, const std::string& scenePath,
+// shown: which backend drew the view; dragPreview: the preview's divisor (ViewerState).
+void printOrbitReport(const std::vector<double>& windowMilliseconds, const std::string& shown, int dragPreview, const std::string& scenePath,
                       const RenderSettings& settings);
 
 }  // namespace facet::viewer

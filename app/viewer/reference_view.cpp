@@ -115,7 +115,7 @@ void ReferenceView::drawControls(std::uint64_t version) {
   }
 
   ImGui::Separator();
-  ImGui::TextUnformatted("behind the panel, the window shows");
+  ImGui::TextUnformatted("beside the panel, the window shows");
   for (std::size_t i = 0; i < kMainViewNames.size(); ++i) {
     if (ImGui::RadioButton(std::string(kMainViewNames[i]).c_str(), mainView_ == static_cast<MainView>(i))) mainView_ = static_cast<MainView>(i);
   }
@@ -144,11 +144,11 @@ void ReferenceView::drawImages(std::uint64_t version) {
   ImGui::End();
 }
 
-void ReferenceView::drawMainView(std::uint64_t version) const {
+void ReferenceView::drawMainView(std::uint64_t version, ImVec2 topLeft, ImVec2 bottomRight) const {
   if (mainView_ == MainView::OpenGl || !isCurrent(version)) return;
   const ImageTexture* texture = shownTexture(mainView_);
   if (!texture || texture->empty()) return;
-  ImGui::GetBackgroundDrawList()->AddImage(texture->id(), ImVec2(0.0f, 0.0f), ImGui::GetIO().DisplaySize, kTopLeftUv, kBottomRightUv);
+  ImGui::GetBackgroundDrawList()->AddImage(texture->id(), topLeft, bottomRight, kTopLeftUv, kBottomRightUv);
 }
 
 const ImageTexture* ReferenceView::shownTexture(MainView view) const {

@@ -35,8 +35,9 @@ class ReferenceView {
   void drawControls(std::uint64_t version);
   // A window of its own: the GL and CPU images (or the heat map) side by side.
   void drawImages(std::uint64_t version);
-  // The CPU image or the heat map over the whole window, when chosen and current.
-  void drawMainView(std::uint64_t version) const;
+  // The CPU image or the heat map over the 3D view (from topLeft to
+  // bottomRight, ImGui units), when chosen and current.
+  void drawMainView(std::uint64_t version, ImVec2 topLeft, ImVec2 bottomRight) const;
 
   // A result (or an error) for this version is in: what --screenshot waits for.
   bool isCurrent(std::uint64_t version) const { return result_ && result_->version == version; }

@@ -1,5 +1,7 @@
 #include "viewer/view_input.h"
 
+#include <algorithm>
+
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
@@ -17,10 +19,11 @@ CameraSettings& manualCamera(ViewerState& state) {
 
 }  // namespace
 
-ViewRequests ViewInput::update(ViewerState& state, const std::vector<KeyPress>& keys) {
+ViewRequests ViewInput::update(ViewerState& state, const std::vector<KeyPress>& keys, float viewLeft) {
   const ImGuiIO& io = ImGui::GetIO();
   RenderSettings& settings = state.settings;
   ViewRequests requests;
+  const float viewWidth = std::max(1.0f, io.DisplaySize.x - viewLeft);
 
   // A drag belongs to the view when it starts outside every ImGui window,
   // even if the cursor then crosses the panel.
@@ -35,14 +38,16 @@ ViewRequests ViewInput::update(ViewerState& state, const std::vector<KeyPress>& 
     if (dragButton_ == ImGuiMouseButton_Left)
       orbit(camera, {io.MouseDelta.x, io.MouseDelta.y}, io.DisplaySize.y);
     else
-      pan(camera, {io.MouseDelta.x, io.MouseDelta.y}, io.DisplaySize.x);
+      pan(camera, {io.MouseDelta.x, io.MouseDelta.y}, viewWidth);
     moveDepthRange(camera, before, state.sphere);
+    requests.cameraMoved = true;
   }
   if (!io.WantCaptureMouse && io.MouseWheel != 0.0f) {
     CameraSettings& camera = manualCamera(state);
     const CameraSettings before = camera;
     zoom(camera, io.MouseWheel, 1e-3f * state.sphere.radius);
     moveDepthRange(camera, before, state.sphere);
+    requests.cameraMoved = true;
   }
 
   if (io.WantCaptureKeyboard) return requests;  // typing into a text field

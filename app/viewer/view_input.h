@@ -15,12 +15,14 @@ struct ViewRequests {
   bool screenshot = false;   // F12, Ctrl+S
   bool quit = false;         // Esc
   bool togglePanel = false;  // H
+  bool cameraMoved = false;  // a drag or the wheel moved the camera this frame
 };
 
 class ViewInput {
  public:
-  // Within an ImGui frame; keys: pressed since the last frame.
-  ViewRequests update(ViewerState& state, const std::vector<KeyPress>& keys);
+  // Within an ImGui frame; keys: pressed since the last frame. viewLeft:
+  // where the 3D view starts (ImGui units; the panel is left of it).
+  ViewRequests update(ViewerState& state, const std::vector<KeyPress>& keys, float viewLeft);
 
  private:
   int dragButton_ = -1;  // the button that started a drag over the view; -1: none

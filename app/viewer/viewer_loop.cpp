@@ -15,10 +15,6 @@
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
-#include "pipeline/bump_map.h"
-#include "pipeline/displacement.h"
-#include "pipeline/scene_additions.h"
-#include "scene/environment_map.h"
 #include "common/error.h"
 #include "gl/gl_renderer.h"
 #include "image/png.h"
@@ -29,6 +25,7 @@
 #include "viewer/imgui_session.h"
 #include "viewer/orbit_bench.h"
 #include "viewer/reference_view.h"
+#include "viewer/view_frame.h"
 #include "viewer/view_input.h"
 #include "viewer/viewer_gl.h"
 #include "viewer/viewer_state.h"
@@ -61,8 +58,9 @@ ViewerState initialState(const ViewerOptions& options) {
   return state;
 }
 
-// Everything the 3D frame depends on: the scene and the settings.
-std::string frameKey(const ViewerState& state) { return std::to_string(state.sceneSerial) + settingsToJson(state.settings).dump(); }
+// The panel's first width, in ImGui's units (the window's pixels where the
+// display does not scale): "parallelWidth" and a drag box fit side by side.
+constexpr float kPanelWidth = 360.0f;
 
 // The CPU reference leaves a core to the window (and llvmpipe).
 int referenceThreads() { return std::max(1, static_cast<int>(std::thread::hardware_concurrency()) - 1); }
@@ -78,95 +76,6 @@ Image readWindow(const ViewerGl& gl, int width, int height) {
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) image.at(x, y).a = 255;
   return image;
-}
-
-// The 3D frame on screen: what the renderer's framebuffer holds.
-struct DrawnFrame {
-  std::uint64_t version = 0;           // counts the distinct frames drawn; 0: none yet
-  std::string key;                     // frameKey when it was last drawn (or failed to draw)
-  std::shared_ptr<const Scene> scene;  // the scene `frame` was built from
-  FrameInputs frame;
-  Image image;                         // what render() read back
-  double milliseconds = 0;             // the frame's passes (upload, shadow, lit; not the read-back), when it last ran
-  std::string error;                   // why the newest settings could not be drawn; the last good image stays
-  // The viewer's scene displaced and with the settings' environment map, while they and the scene stay.
-  std::shared_ptr<const Scene> environmentBase, withEnvironment;
-  // The volume the last frame read (pipeline/scene_additions.h), kept so that the next reads it no more.
-  std::shared_ptr<const Scene::PlacedVolume> volume;
-  std::string volumeKey;
-};
-
-// Whether the settings or the scene add a volume or particles to the frame.
-bool hasAdditions(const Scene& scene, const RenderSettings& settings) {
-  return !settings.volume.file.empty() || !scene.volume.file.empty() || !settings.particles.empty() || !scene.emitters.empty();
-}
-
-// The scene a frame of `state` draws: its own when the settings displace
-// nothing and name the map it holds (or none), else a copy displaced and
-// with that map, made once per displacement and map.
-std::shared_ptr<const Scene> sceneFor(const ViewerState& state, DrawnFrame& drawn) {
-  const std::string displacement = displacementKey(state.settings.material);
-  const auto matches = [&](const Scene& s) {
-    return s.environment.path == state.settings.environment.map && s.displacement == displacement && s.bumpMapPath == state.settings.material.bumpMap;
-  };
-  if (matches(*state.scene)) return state.scene;
-  if (drawn.withEnvironment && drawn.environmentBase == state.scene && matches(*drawn.withEnvironment)) return drawn.withEnvironment;
-  auto copy = std::make_shared<Scene>(*state.scene);
-  useDisplacement(*copy, state.settings.material);
-  useBumpMap(*copy, state.settings.material);
-  useEnvironment(*copy, state.settings.environment);
-  drawn.environmentBase = state.scene;
-  drawn.withEnvironment = copy;
-  return copy;
-}
-
-// Draws the 3D frame when the scene or the settings changed since the last
-// one (or always, with force); true when it tried. The renderer uploads a
-// scene only when it is not the one it drew last.
-bool drawChangedFrame(Renderer& renderer, const ViewerState& state, DrawnFrame& drawn, bool force) {
-  const std::string key = frameKey(state);
-  if (key == drawn.key && !force) return false;
-  try {
-    std::shared_ptr<const Scene> scene = sceneFor(state, drawn);
-    RenderSettings settings = state.settings;
-    if (hasAdditions(*scene, settings)) {
-      // A copy with the volume and this time's particles, facing this frame's camera; the volume is read once.
-      auto added = std::make_shared<Scene>(*scene);
-      if (drawn.volume && drawn.volume->key == drawn.volumeKey) added->volume = *drawn.volume;
-      SceneAdditions counts;
-      settings = addVolumeAndParticles(*added, settings, counts);
-      drawn.volume = std::make_shared<Scene::PlacedVolume>(added->volume);
-      drawn.volumeKey = added->volume.key;
-      scene = added;
-    }
-    FrameInputs frame = buildFrameInputs(*scene, settings);
-    RenderResult result = renderer.render(*scene, frame);
-    drawn.milliseconds = 0;
-    for (const PassTiming& t : result.timings)
-      if (t.pass != "read-back") drawn.milliseconds += t.milliseconds;
-    if (key != drawn.key || drawn.version == 0) ++drawn.version;
-    drawn.scene = scene;
-    drawn.frame = std::move(frame);
-    drawn.image = std::move(result.image);
-    drawn.error.clear();
-  } catch (const Error& e) {
-    drawn.error = e.what();
-  }
-  drawn.key = key;
-  return true;
-}
-
-// The renderer's framebuffer into the window's, scaled for the frame
-// after a resize, before the new size is drawn.
-void blitToWindow(const ViewerGl& gl, const WindowGlRenderer& renderer, const DrawnFrame& drawn, int width, int height) {
-  gl.gl.glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-  gl.gl.glDisable(GL_SCISSOR_TEST);  // a blit honours the scissor box
-  gl.gl.glViewport(0, 0, width, height);
-  const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-  gl.gl.glClearNamedFramebufferfv(0, GL_COLOR, 0, black);
-  if (drawn.version == 0) return;
-  gl.glBlitNamedFramebuffer(renderer.framebuffer(), 0, 0, 0, drawn.frame.width, drawn.frame.height, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
-                            GL_NEAREST);
 }
 
 // In the bottom right corner, when the panel (whose status lines say it) is hidden.
@@ -186,7 +95,9 @@ int runViewer(const ViewerOptions& options) {
 
   // Setup window, OpenGL 4.5 core, the GL backend and Dear ImGui
   GlfwLibrary glfw;
-  ViewerWindow window(state.settings.width, state.settings.height);
+  bool showPanel = options.showPanel;
+  float panelWidth = kPanelWidth;  // as the user last left it (ImGui units)
+  ViewerWindow window(state.settings.width, state.settings.height, showPanel ? static_cast<int>(panelWidth) : 0);
   glfwSwapInterval(batch ? 0 : 1);
   if (!batch) window.setMinimumSize(kMinimumWindowWidth, kMinimumWindowHeight);
   const ViewerGl gl = loadViewerGl(glfwGetProcAddress);
@@ -194,11 +105,12 @@ int runViewer(const ViewerOptions& options) {
   WindowGlRenderer& renderer = *rendererOwner;
   ImGuiSession imgui(window.handle());
   ReferenceView reference(gl.gl, referenceThreads(), options.followReference, options.rayReference);
+  ViewFrame view(gl, renderer, 0);
   ViewInput input;
+  state.backend = options.backend;
+  state.dragPreview = options.dragPreview;
 
-  DrawnFrame drawn;
   FrameTimes drawTimes, windowTimes;
-  bool showPanel = true;
   bool redrawEveryFrame = false;  // the panel's checkbox
   bool changedLastFrame = false;
   int framesLeft = bench ? options.benchOrbit + 1 : options.frames;  // the bench's first frame (upload, compile) is not timed
@@ -217,40 +129,53 @@ int runViewer(const ViewerOptions& options) {
     lastIteration = start;
     for (const std::string& path : window.takeDroppedPaths()) loadSceneFile(state, path);
     window.setTitle("facet view: " + state.scene->source);
-    window.syncImageSize(state.settings.width, state.settings.height, ImGui::IsAnyItemActive());
+    // The panel's side of the window, in framebuffer pixels; the image takes the rest.
+    const float pixelsPerUnit = ImGui::GetIO().DisplayFramebufferScale.x > 0 ? ImGui::GetIO().DisplayFramebufferScale.x : 1.0f;
+    const int besideWidth = showPanel ? static_cast<int>(panelWidth * pixelsPerUnit + 0.5f) : 0;
+    window.syncImageSize(state.settings.width, state.settings.height, besideWidth, ImGui::IsAnyItemActive());
     int width = 0, height = 0;
     window.framebufferSize(width, height);
     if (width == 0 || height == 0) continue;  // minimized: nothing to draw into
+    const ViewRect viewRect{std::min(besideWidth, width - 1), 0, std::max(1, width - besideWidth), height};
     if (bench && framesLeft <= options.benchOrbit) orbitBenchStep(state, options.benchOrbit, static_cast<float>(height));
 
     // Start the Dear ImGui frame: the shortcuts and the panel edit state.settings
     const std::vector<KeyPress> presses = window.takePressedKeys();
     imgui.newFrame(presses);
-    const ViewRequests keys = input.update(state, presses);
+    const ViewRequests keys = input.update(state, presses, static_cast<float>(viewRect.x) / pixelsPerUnit);
     if (keys.quit) glfwSetWindowShouldClose(window.handle(), GLFW_TRUE);
     if (keys.togglePanel) showPanel = !showPanel;
     PanelRequests panel;
     if (showPanel) {
-      const FrameStats stats{renderer.rendererName(), drawTimes.median(), windowTimes.median(), state.scene->triangleCount(),
-                             static_cast<int>(drawn.frame.lights.size()), drawn.frame.shadowLayerCount, drawn.version, drawn.error};
-      panel = drawControlPanel(state, stats, reference, redrawEveryFrame);
+      const DrawnFrame& drawn = view.drawn();
+      const FrameStats stats{renderer.rendererName(), view.backendLine(state.backend), drawTimes.median(), windowTimes.median(),
+                             state.scene->triangleCount(), static_cast<int>(drawn.frame.lights.size()), drawn.frame.shadowLayerCount,
+                             drawn.version, drawn.error};
+      panel = drawControlPanel(state, stats, reference, redrawEveryFrame, panelWidth);
       reference.drawImages(drawn.version);
-    } else if (!drawn.error.empty()) {
-      drawErrorOverlay(drawn.error);
+    } else if (!view.drawn().error.empty()) {
+      drawErrorOverlay(view.drawn().error);
     }
 
     // The 3D frame, when the scene or the settings changed (a batch screenshot
     // draws and times each of its frames). A value being typed waits until it
-    // is done: "1200" would otherwise draw 1, 12 and 120 on the way.
+    // is done: "1200" would otherwise draw 1, 12 and 120 on the way. While a
+    // drag moves the camera the frame is a preview at reduced size; the
+    // first frame without a move draws it whole.
     const bool typing = ImGui::GetIO().WantTextInput;
-    changedLastFrame = !typing && drawChangedFrame(renderer, state, drawn, redrawEveryFrame || (batch && !bench && framesLeft > 0));
+    const bool preview = keys.cameraMoved || (bench && framesLeft <= options.benchOrbit);
+    changedLastFrame = !typing && view.drawIfChanged(state, preview, redrawEveryFrame || (batch && !bench && framesLeft > 0));
+    const DrawnFrame& drawn = view.drawn();
     if (changedLastFrame && drawn.error.empty()) drawTimes.add(drawn.milliseconds);
     if (batch && !drawn.error.empty()) throw Error(drawn.error);
-    reference.update(drawn.version, [&] { return ReferenceRequest{drawn.version, drawn.scene, drawn.frame, drawn.image}; });
-    reference.drawMainView(drawn.version);
+    // The reference compares whole frames, not previews.
+    if (!drawn.preview)
+      reference.update(drawn.version, [&] { return ReferenceRequest{drawn.version, drawn.scene, drawn.frame, view.glImage()}; });
+    const float unitsPerPixel = 1.0f / pixelsPerUnit;
+    reference.drawMainView(drawn.version, ImVec2(static_cast<float>(viewRect.x) * unitsPerPixel, 0.0f), ImGui::GetIO().DisplaySize);
 
     // Rendering: the 3D frame, then ImGui on top
-    blitToWindow(gl, renderer, drawn, width, height);
+    view.blit(width, height, viewRect);
     if ((keys.screenshot || panel.screenshot) && drawn.version > 0) saveScreenshot(state, drawn.image);
     imgui.render();
 
@@ -258,15 +183,15 @@ int runViewer(const ViewerOptions& options) {
       glfwSwapBuffers(window.handle());
       if (framesLeft <= options.benchOrbit) benchFrames.push_back(millisecondsSince(start));
       if (--framesLeft > 0) continue;
-      printOrbitReport(benchFrames, renderer.rendererName(), options.scenePath, state.settings);
+      printOrbitReport(benchFrames, view.backendLine(state.backend), state.dragPreview, options.scenePath, state.settings);
       break;
     }
     // --screenshot: after `frames` frames (and the reference, when asked for), before the swap
     if (batch && --framesLeft <= 0 && (!options.followReference || reference.isFinal(drawn.version))) {
       const Image image = options.screenshotWithPanel ? readWindow(gl, width, height) : drawn.image;
       writePng(options.batchScreenshot, image);
-      std::printf("screenshot written to %s: %dx%d, %d frames, GL frame %.1f ms (median)\n", options.batchScreenshot.c_str(), image.width(),
-                  image.height(), options.frames, drawTimes.median());
+      std::printf("screenshot written to %s: %dx%d, %d frames, %s, frame %.1f ms (median)\n", options.batchScreenshot.c_str(), image.width(),
+                  image.height(), options.frames, view.backendLine(state.backend).c_str(), drawTimes.median());
       if (options.followReference) std::printf("%s\n", reference.summary().c_str());
       break;
     }

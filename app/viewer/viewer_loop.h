@@ -5,6 +5,7 @@
 
 #include "scene/scene.h"
 #include "settings/render_settings.h"
+#include "viewer/viewer_state.h"
 
 namespace facet::viewer {
 
@@ -19,6 +20,9 @@ struct ViewerOptions {
   bool screenshotWithPanel = false;    // --with-panel: the batch screenshot is the whole window
   bool followReference = false;        // --reference: the CPU reference follows every change
   bool rayReference = false;           // --ray-reference: the ray tracer is the reference
+  FrameBackend backend = FrameBackend::Auto;  // --backend: what draws the 3D view
+  bool showPanel = true;               // --no-panel: false
+  int dragPreview = 2;                 // --drag-preview: ViewerState::dragPreview
   int benchOrbit = 0;                  // --bench-orbit N: orbit once in N timed frames, print the figures (orbit_bench.h), exit
 };
 

@@ -2,9 +2,11 @@
 // What the viewer shows and what its panel and shortcuts edit: the scene, the
 // settings of the next frame, the panel's file names and the last message.
 // The window, the GL objects and the reference worker live in the loop.
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <string_view>
 
 #include "image/image.h"
 #include "pipeline/view_setup.h"
@@ -12,6 +14,16 @@
 #include "settings/render_settings.h"
 
 namespace facet::viewer {
+
+// Which backend draws the 3D view. auto: the CPU rasterizer where OpenGL is
+// Mesa's software rasterizer (llvmpipe, softpipe: no GPU), which the CPU
+// backend outruns, else OpenGL. Both draw the same bytes (the agreement suite).
+enum class FrameBackend { Auto, OpenGl, Cpu, Count };
+inline constexpr std::array<std::string_view, static_cast<std::size_t>(FrameBackend::Count)> kFrameBackendNames = {"auto", "gl", "cpu"};
+
+// While a drag moves the camera, frames are drawn at 1/dragPreview of each
+// side and shown scaled up; the frame at full size follows when the drag stops.
+inline constexpr int kMaxDragPreview = 8;
 
 struct ViewerState {
   std::shared_ptr<const Scene> scene;  // shared with the reference worker
@@ -26,6 +38,8 @@ struct ViewerState {
   std::string screenshotPath;           // empty: facet-view-N.png, the first N not taken
 
   bool playing = false;                 // the animation plays: settings.time advances with the clock (space)
+  FrameBackend backend = FrameBackend::Auto;
+  int dragPreview = 2;                  // 1: full size while dragging too; at most kMaxDragPreview
 
   std::string message;                  // the last action's outcome, shown in the panel
   bool messageIsError = false;

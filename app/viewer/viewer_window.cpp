@@ -25,12 +25,12 @@ GlfwLibrary::GlfwLibrary() {
 
 GlfwLibrary::~GlfwLibrary() { glfwTerminate(); }
 
-ViewerWindow::ViewerWindow(int width, int height) {
+ViewerWindow::ViewerWindow(int width, int height, int besideWidth) : appliedBeside_(besideWidth) {
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-  window_ = glfwCreateWindow(width, height, "facet view", nullptr, nullptr);
+  window_ = glfwCreateWindow(width + besideWidth, height, "facet view", nullptr, nullptr);
   if (!window_) throw Error("view: cannot create a window with an OpenGL 4.5 core context: " + lastGlfwError());
   glfwMakeContextCurrent(window_);
   glfwSetWindowUserPointer(window_, this);
@@ -44,7 +44,7 @@ ViewerWindow::ViewerWindow(int width, int height) {
   // Ask for exactly width × height of framebuffer, where the window system scales.
   int framebufferWidth = 0, framebufferHeight = 0;
   framebufferSize(framebufferWidth, framebufferHeight);
-  if (framebufferWidth != width || framebufferHeight != height) {
+  if (framebufferWidth != width + besideWidth || framebufferHeight != height) {
     appliedWidth_ = appliedHeight_ = -1;  // syncImageSize resizes on its first call
   } else {
     appliedWidth_ = width;
@@ -72,11 +72,16 @@ void ViewerWindow::setMinimumSize(int width, int height) {
   glfwSetWindowSizeLimits(window_, width, height, GLFW_DONT_CARE, GLFW_DONT_CARE);  // for a window manager's resizes
 }
 
-void ViewerWindow::syncImageSize(int& width, int& height, bool editing) {
+void ViewerWindow::syncImageSize(int& width, int& height, int besideWidth, bool editing) {
   int framebufferWidth = 0, framebufferHeight = 0;
   framebufferSize(framebufferWidth, framebufferHeight);
   if (framebufferWidth == 0 || framebufferHeight == 0) return;  // minimized: keep the size for when it comes back
-  if (width != appliedWidth_ || height != appliedHeight_) {
+  const int left = std::max(1, framebufferWidth - besideWidth);  // what the window leaves the image
+  if (besideWidth != appliedBeside_ && appliedWidth_ >= 0) {
+    appliedBeside_ = besideWidth;
+    width = appliedWidth_ = left;
+    height = appliedHeight_ = framebufferHeight;
+  } else if (width != appliedWidth_ || height != appliedHeight_) {
     if (editing) return;
     // Window sizes are in screen coordinates; the image is in framebuffer pixels.
     int windowWidth = 0, windowHeight = 0;
@@ -84,12 +89,13 @@ void ViewerWindow::syncImageSize(int& width, int& height, bool editing) {
     const double scaleX = static_cast<double>(framebufferWidth) / windowWidth;
     const double scaleY = static_cast<double>(framebufferHeight) / windowHeight;
     // Clamped here too: without a window manager, X applies any size asked for.
-    glfwSetWindowSize(window_, std::max(static_cast<int>(width / scaleX + 0.5), minimumWidth_),
+    glfwSetWindowSize(window_, std::max(static_cast<int>((width + besideWidth) / scaleX + 0.5), minimumWidth_),
                       std::max(static_cast<int>(height / scaleY + 0.5), minimumHeight_));
     appliedWidth_ = width;
     appliedHeight_ = height;
-  } else if (framebufferWidth != width || framebufferHeight != height) {
-    width = appliedWidth_ = framebufferWidth;
+    appliedBeside_ = besideWidth;
+  } else if (left != width || framebufferHeight != height) {
+    width = appliedWidth_ = left;
     height = appliedHeight_ = framebufferHeight;
   }
 }

@@ -25,9 +25,10 @@ struct KeyPress {
 
 class ViewerWindow {
  public:
-  // width × height pixels of framebuffer (on a display that scales, the
-  // window's own size follows from it).
-  ViewerWindow(int width, int height);
+  // An image of width × height pixels beside a panel besideWidth pixels
+  // wide: a framebuffer of (width + besideWidth) × height (on a display that
+  // scales, the window's own size follows from it).
+  ViewerWindow(int width, int height, int besideWidth);
   ~ViewerWindow();
   ViewerWindow(const ViewerWindow&) = delete;  // GLFW keeps a pointer to it
   ViewerWindow& operator=(const ViewerWindow&) = delete;
@@ -53,18 +54,22 @@ class ViewerWindow {
   // stays usable; 0 × 0 (the default) for none.
   void setMinimumSize(int width, int height);
 
-  // Keeps the image size and the window in step: when width or height
-  // differ from what was last applied (the panel, a settings file), resizes
-  // the window, unless editing (a value still being typed or dragged: a
-  // window 1 pixel high on the way to 120 would take the panel with it);
-  // otherwise, when the window's size changed, sets them to it.
-  void syncImageSize(int& width, int& height, bool editing);
+  // Keeps the image size and the window in step, the image beside a panel
+  // besideWidth pixels wide (0: hidden): when the panel's width changed
+  // (shown, hidden, resized), the image takes what the window leaves; when
+  // width or height differ from what was last applied (the panel's fields,
+  // a settings file), resizes the window, unless editing (a value still
+  // being typed or dragged: a window 1 pixel high on the way to 120 would
+  // take the panel with it); otherwise, when the window's size changed,
+  // sets them to what it leaves beside the panel.
+  void syncImageSize(int& width, int& height, int besideWidth, bool editing);
 
  private:
   GLFWwindow* window_ = nullptr;
   std::vector<std::string> dropped_;
   std::vector<KeyPress> pressed_;
   int appliedWidth_ = 0, appliedHeight_ = 0;  // the image size last set on either side
+  int appliedBeside_ = 0;                     // the panel's width then
   int minimumWidth_ = 0, minimumHeight_ = 0;
   std::string title_;
 };

@@ -1,0 +1,125 @@
+#include "viewer/view_frame.h"
+
+#include <algorithm>
+
+#include <nlohmann/json.hpp>
+
+#include "common/error.h"
+#include "cpu/cpu_renderer.h"
+#include "pipeline/bump_map.h"
+#include "pipeline/displacement.h"
+#include "pipeline/scene_additions.h"
+#include "scene/environment_map.h"
+#include "settings/settings_json.h"
+
+namespace facet::viewer {
+namespace {
+
+// Whether the settings or the scene add a volume or particles to the frame.
+bool hasAdditions(const Scene& scene, const RenderSettings& settings) {
+  return !settings.volume.file.empty() || !scene.volume.file.empty() || !settings.particles.empty() || !scene.emitters.empty();
+}
+
+bool isSoftwareRasterizer(const std::string& glRenderer) {
+  return glRenderer.find("llvmpipe") != std::string::npos || glRenderer.find("softpipe") != std::string::npos;
+}
+
+}  // namespace
+
+ViewFrame::ViewFrame(const ViewerGl& gl, WindowGlRenderer& glRenderer, int cpuThreads)
+    : gl_(gl), glRenderer_(glRenderer), cpuRenderer_(makeCpuRenderer(cpuThreads)), cpuTexture_(gl.gl),
+      softwareGl_(isSoftwareRasterizer(glRenderer.rendererName())) {}
+
+bool ViewFrame::drawsOnCpu(FrameBackend backend) const {
+  return backend == FrameBackend::Cpu || (backend == FrameBackend::Auto && softwareGl_);
+}
+
+std::string ViewFrame::backendLine(FrameBackend backend) const {
+  const std::string shown = drawsOnCpu(backend) ? "the " + cpuRenderer_->description() : "OpenGL";
+  if (backend != FrameBackend::Auto) return "3D view by " + shown;
+  return "3D view by " + shown + (softwareGl_ ? ": auto, OpenGL here is a software rasterizer" : ": auto, OpenGL here has a GPU");
+}
+
+std::shared_ptr<const Scene> ViewFrame::sceneFor(const ViewerState& state) {
+  const std::string displacement = displacementKey(state.settings.material);
+  const auto matches = [&](const Scene& s) {
+    return s.environment.path == state.settings.environment.map && s.displacement == displacement && s.bumpMapPath == state.settings.material.bumpMap;
+  };
+  if (matches(*state.scene)) return state.scene;
+  if (withEnvironment_ && environmentBase_ == state.scene && matches(*withEnvironment_)) return withEnvironment_;
+  auto copy = std::make_shared<Scene>(*state.scene);
+  useDisplacement(*copy, state.settings.material);
+  useBumpMap(*copy, state.settings.material);
+  useEnvironment(*copy, state.settings.environment);
+  environmentBase_ = state.scene;
+  withEnvironment_ = copy;
+  return copy;
+}
+
+bool ViewFrame::drawIfChanged(const ViewerState& state, bool preview, bool force) {
+  RenderSettings settings = state.settings;
+  const int divisor = preview ? std::clamp(state.dragPreview, 1, kMaxDragPreview) : 1;
+  settings.width = std::max(1, (settings.width + divisor - 1) / divisor);
+  settings.height = std::max(1, (settings.height + divisor - 1) / divisor);
+  const bool onCpu = drawsOnCpu(state.backend);
+  // Everything the frame depends on: the scene, the backend and the settings (the size included).
+  const std::string key = std::to_string(state.sceneSerial) + (onCpu ? " cpu " : " gl ") + settingsToJson(settings).dump();
+  if (key == drawn_.key && !force) return false;
+  try {
+    std::shared_ptr<const Scene> scene = sceneFor(state);
+    if (hasAdditions(*scene, settings)) {
+      // A copy with the volume and this time's particles, facing this frame's camera; the volume is read once.
+      auto added = std::make_shared<Scene>(*scene);
+      if (volume_) added->volume = *volume_;
+      SceneAdditions counts;
+      settings = addVolumeAndParticles(*added, settings, counts);
+      volume_ = std::make_shared<Scene::PlacedVolume>(added->volume);
+      scene = added;
+    }
+    FrameInputs frame = buildFrameInputs(*scene, settings);
+    Renderer& renderer = onCpu ? *cpuRenderer_ : static_cast<Renderer&>(glRenderer_);
+    RenderResult result = renderer.render(*scene, frame);
+    drawn_.milliseconds = 0;
+    for (const PassTiming& t : result.timings)
+      if (t.pass != "read-back") drawn_.milliseconds += t.milliseconds;
+    if (key != drawn_.key || drawn_.version == 0) ++drawn_.version;
+    drawn_.scene = scene;
+    drawn_.frame = std::move(frame);
+    drawn_.image = std::move(result.image);
+    drawn_.onCpu = onCpu;
+    drawn_.preview = divisor > 1;
+    if (onCpu) cpuTexture_.upload(drawn_.image);
+    drawn_.error.clear();
+  } catch (const Error& e) {
+    drawn_.error = e.what();
+  }
+  drawn_.key = key;
+  return true;
+}
+
+Image ViewFrame::glImage() {
+  if (!drawn_.onCpu || drawn_.version == 0) return drawn_.image;
+  if (glImageVersion_ != drawn_.version) {
+    glImageVersion_ = drawn_.version;
+    try {
+      glImage_ = glRenderer_.render(*drawn_.scene, drawn_.frame).image;
+    } catch (const Error&) {
+      glImage_ = Image();  // OpenGL cannot draw this frame (volume ray casting): nothing to compare
+    }
+  }
+  return glImage_;
+}
+
+void ViewFrame::blit(int windowWidth, int windowHeight, ViewRect view) const {
+  gl_.gl.glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  gl_.gl.glDisable(GL_SCISSOR_TEST);  // a blit honours the scissor box
+  gl_.gl.glViewport(0, 0, windowWidth, windowHeight);
+  const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+  gl_.gl.glClearNamedFramebufferfv(0, GL_COLOR, 0, black);
+  if (drawn_.version == 0) return;
+  const unsigned source = drawn_.onCpu ? cpuTexture_.framebuffer() : glRenderer_.framebuffer();
+  gl_.glBlitNamedFramebuffer(source, 0, 0, 0, drawn_.frame.width, drawn_.frame.height, view.x, view.y, view.x + view.width, view.y + view.height,
+                             GL_COLOR_BUFFER_BIT, drawn_.preview ? GL_LINEAR : GL_NEAREST);
+}
+
+}  // namespace facet::viewer
