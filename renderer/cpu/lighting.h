@@ -95,36 +95,55 @@ F specularTerm(const Vec3Of<F>& N, const Vec3Of<F>& L, const Vec3Of<F>& V, F shi
   return power(maxZero(dot3(N, H)), shininess);
 }
 
+// Where world point P reads a light's shadow maps: the face, the map
+// coordinates (u, v, z) after the divide by w, the texel (tx, ty) holding
+// (u, v), and the bias = max(b_slope·(1 - N·L), b_min). `outside`: P counts
+// as lit without a read (behind the light's eye, beyond its far plane).
+struct ShadowLookup {
+  bool outside = true;
+  int face = 0, layer = 0;
+  float u = 0, v = 0, z = 0, bias = 0;
+  int tx = 0, ty = 0;
+};
+inline ShadowLookup shadowLookup(const ShadowMaps& maps, const FrameLight& light, const ShadowSettings& shadows, glm::vec3 P, glm::vec3 N,
+                                 glm::vec3 L) {
+  ShadowLookup at;
+  at.face = light.light.kind == LightKind::Point ? cubeFace(P - light.light.position) : 0;
+  at.layer = light.shadowLayer + at.face;
+  const glm::vec4 s = transformPoint(light.shadowFromWorld[static_cast<std::size_t>(at.face)], P);
+  if (!(s.w > 0.0f)) return at;
+  at.u = s.x / s.w, at.v = s.y / s.w, at.z = s.z / s.w;
+  if (!(at.z <= 1.0f) || std::isnan(at.u) || std::isnan(at.v)) return at;
+  at.outside = false;
+  // Far outside the map every texel is outside too; the clamp keeps the texel
+  // index an int without changing which texels a point inside reads.
+  const float uc = at.u < -1.0f ? -1.0f : (at.u > 2.0f ? 2.0f : at.u);
+  const float vc = at.v < -1.0f ? -1.0f : (at.v > 2.0f ? 2.0f : at.v);
+  const float slope = shadows.biasSlope * (1.0f - dot3(N, L));
+  at.bias = slope > shadows.biasMin ? slope : shadows.biasMin;
+  at.tx = static_cast<int>(std::floor(uc * static_cast<float>(maps.size)));
+  at.ty = static_cast<int>(std::floor(vc * static_cast<float>(maps.size)));
+  return at;
+}
+
 // S of one light at world point P: PCF over (2r+1)² texels of the light's
-// map, a texel in shadow when z - bias > depth, bias = max(b_slope·(1 - N·L), b_min).
+// map around shadowLookup's texel, a texel in shadow when z - bias > depth.
 // Outside the map (or beyond its far plane) counts as lit. A point light's
 // cube has no outside: a tap beyond its face's edge reads the edge texel.
 // One pixel at a time: texel reads do not go into lanes.
 inline float shadowFactor(const ShadowMaps& maps, const FrameLight& light, const ShadowSettings& shadows, glm::vec3 P, glm::vec3 N,
                           glm::vec3 L) {
   if (!light.hasShadowMap) return 1.0f;
-  const int face = light.light.kind == LightKind::Point ? cubeFace(P - light.light.position) : 0;
-  const glm::vec4 s = transformPoint(light.shadowFromWorld[static_cast<std::size_t>(face)], P);
-  if (!(s.w > 0.0f)) return 1.0f;
-  const float u = s.x / s.w, v = s.y / s.w, z = s.z / s.w;
-  if (!(z <= 1.0f) || std::isnan(u) || std::isnan(v)) return 1.0f;
-  // Far outside the map every texel is outside too; the clamp keeps the texel
-  // index an int without changing which texels a point inside reads.
-  const float uc = u < -1.0f ? -1.0f : (u > 2.0f ? 2.0f : u);
-  const float vc = v < -1.0f ? -1.0f : (v > 2.0f ? 2.0f : v);
-  const float slope = shadows.biasSlope * (1.0f - dot3(N, L));
-  const float bias = slope > shadows.biasMin ? slope : shadows.biasMin;
+  const ShadowLookup at = shadowLookup(maps, light, shadows, P, N, L);
+  if (at.outside) return 1.0f;
   const int size = maps.size, r = shadows.pcfRadius;
-  const int tx = static_cast<int>(std::floor(uc * static_cast<float>(size)));
-  const int ty = static_cast<int>(std::floor(vc * static_cast<float>(size)));
-  const int layer = light.shadowLayer + face;
   const bool cube = light.light.kind == LightKind::Point;
   int lit = 0;
   for (int dy = -r; dy <= r; ++dy)
     for (int dx = -r; dx <= r; ++dx) {
-      const int x = cube ? std::clamp(tx + dx, 0, size - 1) : tx + dx, y = cube ? std::clamp(ty + dy, 0, size - 1) : ty + dy;
+      const int x = cube ? std::clamp(at.tx + dx, 0, size - 1) : at.tx + dx, y = cube ? std::clamp(at.ty + dy, 0, size - 1) : at.ty + dy;
       if (x < 0 || y < 0 || x >= size || y >= size) ++lit;
-      else if (!(z - bias > maps.texelFetch(layer, x, y))) ++lit;
+      else if (!(at.z - at.bias > maps.texelFetch(at.layer, x, y))) ++lit;
     }
   return static_cast<float>(lit) / static_cast<float>((2 * r + 1) * (2 * r + 1));
 }
