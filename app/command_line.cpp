@@ -54,6 +54,25 @@ void parseSize(const std::string& text, int& width, int& height) {
     throw UsageError("--size " + quoteInput(text) + ": " + problem);
 }
 
+std::array<int, 2> parsePixel(const std::string& text, const std::string& option) {
+  std::array<int, 2> xy{};
+  const std::size_t comma = text.find(',');
+  bool ok = comma != std::string::npos;
+  for (int k = 0; ok && k < 2; ++k) {
+    const std::string part = k == 0 ? text.substr(0, comma) : text.substr(comma + 1);
+    std::size_t used = 0;
+    try {
+      const long value = std::stol(part, &used);
+      ok = used == part.size() && value >= 0 && value <= kMaxImageSide;
+      xy[static_cast<std::size_t>(k)] = static_cast<int>(value);
+    } catch (const std::exception&) {
+      ok = false;
+    }
+  }
+  if (!ok) throw UsageError(option + " " + quoteInput(text) + ": expected X,Y, whole numbers from 0 (the pixel from the top left)");
+  return xy;
+}
+
 CLI::Validator wholeNumberIn(int min, int max) {
   return CLI::Validator(
       [min, max](std::string& text) -> std::string {

@@ -2,6 +2,7 @@
 // The shape every facet subcommand shares: the scene file as the positional
 // argument (none: the default scene), --settings FILE.json, --set key=value
 // (repeatable), --size WxH, -o/--output FILE.
+#include <array>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,10 @@ RenderSettings settingsFor(const CommonOptions& options, const Scene& scene);
 
 // Parses "WxH" (1..kMaxImageSide each) or throws facet::UsageError.
 void parseSize(const std::string& text, int& width, int& height);
+
+// Parses a pixel "X,Y" (whole numbers from 0, counted from the top left) or
+// throws facet::UsageError naming `option`; the frame checks the range.
+std::array<int, 2> parsePixel(const std::string& text, const std::string& option);
 
 // An option's check that its value is a whole number in [min, max], with a
 // message that says which of the two it is not (CLI::Range says "not in

@@ -22,6 +22,7 @@ struct ViewCommandOptions {
   std::string backend = "auto";
   int dragPreview = 2;
   bool noPanel = false;
+  std::string pick;
 };
 
 }  // namespace
@@ -43,6 +44,9 @@ Command addViewCommand(CLI::App& app) {
                       "what draws the 3D view: gl (OpenGL on the window's context), cpu (the CPU rasterizer, the same bytes), or auto: cpu where "
                       "OpenGL is a software rasterizer (llvmpipe), else gl")
       ->check(CLI::IsMember({"auto", "gl", "cpu"}));
+  command->add_option("--pick", options->pick,
+                      "X,Y: pick that pixel of the 3D view (from the top left) once the first frame is drawn, as a click does; --screenshot "
+                      "also prints what both backends say of it");
   command->add_flag("--no-panel", options->noPanel, "start with the panel hidden (H shows it): the 3D view takes the whole window");
   command->add_option("--drag-preview", options->dragPreview,
                       "while a drag or the wheel moves the camera, draw frames at 1/N of each side (the full frame follows when it stops); 1: always full")
@@ -69,6 +73,7 @@ Command addViewCommand(CLI::App& app) {
     view.benchOrbit = options->benchOrbit;
     view.dragPreview = options->dragPreview;
     view.showPanel = !options->noPanel;
+    if (!options->pick.empty()) view.pick = parsePixel(options->pick, "--pick");
     view.backend = options->backend == "gl" ? viewer::FrameBackend::OpenGl : options->backend == "cpu" ? viewer::FrameBackend::Cpu : viewer::FrameBackend::Auto;
     return viewer::runViewer(view);
   };

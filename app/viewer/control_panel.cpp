@@ -87,7 +87,7 @@ void drawFilesTab(ViewerState& state, PanelRequests& requests) {
 }
 
 void drawHelpTab() {
-  static constexpr std::array<std::array<const char*, 2>, 14> kKeys = {{
+  static constexpr std::array<std::array<const char*, 2>, 15> kKeys = {{
       {"left drag", "orbit around the reference point"},
       {"right or middle drag", "pan"},
       {"wheel", "zoom"},
@@ -102,6 +102,7 @@ void drawHelpTab() {
       {"Esc", "quit"},
       {"drop a file", "open a .gltf or .glb scene"},
       {"ctrl+click", "type a value into a slider"},
+      {"click the view", "the pixel in both backends, and the illumination equation's terms (Pixel tab)"},
   }};
   ImGui::TextWrapped("The first mouse move of an auto camera makes it manual, starting where auto put it. R brings back the camera of the command line (or of the settings file loaded last).");
   if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
@@ -120,8 +121,8 @@ void drawHelpTab() {
 
 // A tab whose content scrolls under the status lines, which stay.
 template <class Fn>
-void tab(const char* name, Fn&& drawContent) {
-  if (!ImGui::BeginTabItem(name)) return;
+void tab(const char* name, Fn&& drawContent, bool select = false) {
+  if (!ImGui::BeginTabItem(name, nullptr, select ? ImGuiTabItemFlags_SetSelected : 0)) return;
   ImGui::BeginChild(name);
   drawContent();
   ImGui::EndChild();
@@ -130,7 +131,8 @@ void tab(const char* name, Fn&& drawContent) {
 
 }  // namespace
 
-PanelRequests drawControlPanel(ViewerState& state, const FrameStats& stats, ReferenceView& reference, bool& redrawEveryFrame, float& width) {
+PanelRequests drawControlPanel(ViewerState& state, const FrameStats& stats, ReferenceView& reference, PixelPick& pick, bool& redrawEveryFrame,
+                               float& width) {
   PanelRequests requests;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   // Docked: the left edge, the whole height; only its right edge moves, and the 3D view takes the rest.
@@ -146,6 +148,7 @@ PanelRequests drawControlPanel(ViewerState& state, const FrameStats& stats, Refe
       tab("Settings", [&] { drawSettingsPanel(state.settings, *state.scene, state.sphere); });
       tab("Files", [&] { drawFilesTab(state, requests); });
       tab("Reference", [&] { reference.drawControls(stats.version); });
+      tab("Pixel", [&] { pick.drawTab(stats.version); }, pick.takeFresh());
       tab("Help", [] { drawHelpTab(); });
       ImGui::EndTabBar();
     }

@@ -50,6 +50,7 @@ class ViewFrame {
   // always, with force); true when it tried. preview: draw at 1/dragPreview size.
   bool drawIfChanged(const ViewerState& state, bool preview, bool force);
   const DrawnFrame& drawn() const { return drawn_; }
+  WindowGlRenderer& glRenderer() { return glRenderer_; }
 
   // The OpenGL image of the frame on screen, for the reference's comparison:
   // the one on screen, or drawn by OpenGL now when the CPU drew it.

@@ -1,6 +1,7 @@
 #include "viewer/view_input.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -29,9 +30,19 @@ ViewRequests ViewInput::update(ViewerState& state, const std::vector<KeyPress>& 
   // even if the cursor then crosses the panel.
   if (dragButton_ < 0 && !io.WantCaptureMouse) {
     for (int button : {ImGuiMouseButton_Left, ImGuiMouseButton_Right, ImGuiMouseButton_Middle})
-      if (ImGui::IsMouseClicked(button)) dragButton_ = button;
+      if (ImGui::IsMouseClicked(button)) dragButton_ = button, dragDistance_ = 0;
   }
-  if (dragButton_ >= 0 && !ImGui::IsMouseDown(dragButton_)) dragButton_ = -1;
+  if (dragButton_ >= 0) dragDistance_ += std::abs(io.MouseDelta.x) + std::abs(io.MouseDelta.y);
+  if (dragButton_ >= 0 && !ImGui::IsMouseDown(dragButton_)) {
+    // A left click that did not drag picks the pixel under it (the camera moved by less than the slop is kept).
+    constexpr float kClickSlop = 3.0f;
+    if (dragButton_ == ImGuiMouseButton_Left && dragDistance_ < kClickSlop && io.MousePos.x >= viewLeft) {
+      requests.picked = true;
+      requests.pickX = io.MousePos.x;
+      requests.pickY = io.MousePos.y;
+    }
+    dragButton_ = -1;
+  }
   if (dragButton_ >= 0 && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
     CameraSettings& camera = manualCamera(state);
     const CameraSettings before = camera;

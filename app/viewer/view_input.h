@@ -16,6 +16,8 @@ struct ViewRequests {
   bool quit = false;         // Esc
   bool togglePanel = false;  // H
   bool cameraMoved = false;  // a drag or the wheel moved the camera this frame
+  bool picked = false;       // a left click on the view without a drag: pick the pixel at pickX, pickY
+  float pickX = 0, pickY = 0;  // ImGui units, from the window's top left
 };
 
 class ViewInput {
@@ -26,6 +28,7 @@ class ViewInput {
 
  private:
   int dragButton_ = -1;  // the button that started a drag over the view; -1: none
+  float dragDistance_ = 0;  // how far the cursor moved since the drag began (a click moves less than kClickSlop)
 };
 
 }  // namespace facet::viewer

@@ -24,6 +24,7 @@
 #include "viewer/frame_times.h"
 #include "viewer/imgui_session.h"
 #include "viewer/orbit_bench.h"
+#include "viewer/pixel_pick.h"
 #include "viewer/reference_view.h"
 #include "viewer/view_frame.h"
 #include "viewer/view_input.h"
@@ -107,6 +108,8 @@ int runViewer(const ViewerOptions& options) {
   ReferenceView reference(gl.gl, referenceThreads(), options.followReference, options.rayReference);
   ViewFrame view(gl, renderer, 0);
   ViewInput input;
+  PixelPick pick;
+  std::optional<std::array<int, 2>> pickAsked = options.pick;
   state.backend = options.backend;
   state.dragPreview = options.dragPreview;
 
@@ -151,7 +154,7 @@ int runViewer(const ViewerOptions& options) {
       const FrameStats stats{renderer.rendererName(), view.backendLine(state.backend), drawTimes.median(), windowTimes.median(),
                              state.scene->triangleCount(), static_cast<int>(drawn.frame.lights.size()), drawn.frame.shadowLayerCount,
                              drawn.version, drawn.error};
-      panel = drawControlPanel(state, stats, reference, redrawEveryFrame, panelWidth);
+      panel = drawControlPanel(state, stats, reference, pick, redrawEveryFrame, panelWidth);
       reference.drawImages(drawn.version);
     } else if (!view.drawn().error.empty()) {
       drawErrorOverlay(view.drawn().error);
@@ -172,6 +175,18 @@ int runViewer(const ViewerOptions& options) {
     if (!drawn.preview)
       reference.update(drawn.version, [&] { return ReferenceRequest{drawn.version, drawn.scene, drawn.frame, view.glImage()}; });
     const float unitsPerPixel = 1.0f / pixelsPerUnit;
+    // A click on the view picks the pixel under it in the frame on screen (a whole one: a click moves no camera).
+    if (keys.picked && drawn.version > 0 && !drawn.preview) {
+      const float fromLeft = (keys.pickX * pixelsPerUnit - static_cast<float>(viewRect.x)) / static_cast<float>(viewRect.width);
+      const float fromTop = keys.pickY * pixelsPerUnit / static_cast<float>(viewRect.height);
+      pickAsked = {static_cast<int>(fromLeft * static_cast<float>(drawn.frame.width)), static_cast<int>(fromTop * static_cast<float>(drawn.frame.height))};
+    }
+    if (pickAsked && drawn.version > 0 && !drawn.preview) {
+      const int x = std::clamp((*pickAsked)[0], 0, drawn.frame.width - 1), fromTop = std::clamp((*pickAsked)[1], 0, drawn.frame.height - 1);
+      pick.pick(view, x, drawn.frame.height - 1 - fromTop);
+      pickAsked.reset();
+    }
+    pick.drawMarker(drawn.version, ImVec2(static_cast<float>(viewRect.x) * unitsPerPixel, 0.0f), ImGui::GetIO().DisplaySize);
     reference.drawMainView(drawn.version, ImVec2(static_cast<float>(viewRect.x) * unitsPerPixel, 0.0f), ImGui::GetIO().DisplaySize);
 
     // Rendering: the 3D frame, then ImGui on top
@@ -193,6 +208,7 @@ int runViewer(const ViewerOptions& options) {
       std::printf("screenshot written to %s: %dx%d, %d frames, %s, frame %.1f ms (median)\n", options.batchScreenshot.c_str(), image.width(),
                   image.height(), options.frames, view.backendLine(state.backend).c_str(), drawTimes.median());
       if (options.followReference) std::printf("%s\n", reference.summary().c_str());
+      if (options.pick) pick.print();
       break;
     }
     glfwSwapBuffers(window.handle());

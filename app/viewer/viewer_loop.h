@@ -1,6 +1,8 @@
 #pragma once
 // `facet view`'s window and main loop (viewer_loop.cpp).
+#include <array>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "scene/scene.h"
@@ -23,6 +25,7 @@ struct ViewerOptions {
   FrameBackend backend = FrameBackend::Auto;  // --backend: what draws the 3D view
   bool showPanel = true;               // --no-panel: false
   int dragPreview = 2;                 // --drag-preview: ViewerState::dragPreview
+  std::optional<std::array<int, 2>> pick;  // --pick X,Y: the pixel picked once the first frame is drawn (from the top left)
   int benchOrbit = 0;                  // --bench-orbit N: orbit once in N timed frames, print the figures (orbit_bench.h), exit
 };
 

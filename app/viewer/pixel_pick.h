@@ -1,0 +1,48 @@
+#pragma once
+// The picked pixel: a click on the 3D view (a press and release without a
+// drag) asks both backends about the pixel under it: which triangle each
+// kept there and the colour each drew, side by side, and from the CPU
+// backend the whole illumination equation at it (cpu/pixel_probe.h). Shown
+// in the panel's Pixel tab, marked on the view.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include <imgui.h>
+
+#include "cpu/pixel_probe.h"
+#include "viewer/view_frame.h"
+
+namespace facet::viewer {
+
+class PixelPick {
+ public:
+  // Probes pixel (x, y) of the frame on screen (from the bottom left, in its pixels); errors are kept for the tab.
+  void pick(ViewFrame& view, int x, int y);
+  // Whether a pick arrived since the last call (the panel brings its tab forward).
+  bool takeFresh() { return std::exchange(fresh_, false); }
+  // The Pixel tab's content.
+  void drawTab(std::uint64_t version) const;
+  // The pick on stdout, as `facet render --probe` prints it (--screenshot --pick).
+  void print() const;
+  // A cross on the view at the picked pixel; view: the 3D view's corners in ImGui units.
+  void drawMarker(std::uint64_t version, ImVec2 topLeft, ImVec2 bottomRight) const;
+
+ private:
+  struct Picked {
+    std::uint64_t version = 0;
+    int width = 0, height = 0;           // of the frame it was picked in
+    PixelProbe cpu;                      // the CPU backend's answer, with every term
+    std::uint32_t glTriangle = 0;        // what OpenGL kept there (Renderer::visibleTriangles)
+    std::optional<Rgba8> glColor;        // what OpenGL drew there (none: OpenGL cannot draw the frame)
+    std::string error;
+  };
+  // Both backends kept the same triangle and drew the same colour.
+  static bool agree(const Picked& p);
+
+  std::optional<Picked> picked_;
+  bool fresh_ = false;
+};
+
+}  // namespace facet::viewer
