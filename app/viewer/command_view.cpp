@@ -23,6 +23,7 @@ struct ViewCommandOptions {
   int dragPreview = 2;
   bool noPanel = false;
   std::string pick;
+  std::vector<std::string> drops;
 };
 
 }  // namespace
@@ -47,6 +48,9 @@ Command addViewCommand(CLI::App& app) {
   command->add_option("--pick", options->pick,
                       "X,Y: pick that pixel of the 3D view (from the top left) once the first frame is drawn, as a click does; --screenshot "
                       "also prints what both backends say of it");
+  command->add_option("--drop", options->drops,
+                      "open FILE as if dropped on the window once the first frame is drawn: a .json settings file, else a scene (repeatable; for "
+                      "scripted runs)");
   command->add_flag("--no-panel", options->noPanel, "start with the panel hidden (H shows it): the 3D view takes the whole window");
   command->add_option("--drag-preview", options->dragPreview,
                       "while a drag or the wheel moves the camera, draw frames at 1/N of each side (the full frame follows when it stops); 1: always full")
@@ -73,6 +77,7 @@ Command addViewCommand(CLI::App& app) {
     view.benchOrbit = options->benchOrbit;
     view.dragPreview = options->dragPreview;
     view.showPanel = !options->noPanel;
+    view.drops = options->drops;
     if (!options->pick.empty()) view.pick = parsePixel(options->pick, "--pick");
     view.backend = options->backend == "gl" ? viewer::FrameBackend::OpenGl : options->backend == "cpu" ? viewer::FrameBackend::Cpu : viewer::FrameBackend::Auto;
     return viewer::runViewer(view);

@@ -65,8 +65,19 @@ void drawFilesTab(ViewerState& state, PanelRequests& requests) {
   ImGui::TextUnformatted("scene: a .gltf or .glb file, or builtin:NAME");
   pathField("##scene", state.scenePath);
   if (ImGui::Button("Open scene")) loadSceneFile(state, state.scenePath);
+  helpMarker("opens with the scene's own camera and lights where the settings leave them auto");
   ImGui::SameLine();
   ImGui::TextDisabled("or drop a file on the window");
+
+  if (!state.recentFiles.empty()) {
+    ImGui::TextUnformatted("recent:");
+    for (const std::string& path : state.recentFiles) {
+      if (ImGui::SmallButton(path.c_str())) {
+        openDroppedFile(state, path);
+        break;  // the list changed under the loop
+      }
+    }
+  }
 
   ImGui::Spacing();
   ImGui::Separator();
@@ -100,7 +111,7 @@ void drawHelpTab() {
       {"H", "hide / show the panel"},
       {"space", "play / pause the animation (glTF node animations, particles)"},
       {"Esc", "quit"},
-      {"drop a file", "open a .gltf or .glb scene"},
+      {"drop a file", "open a .gltf or .glb scene, or a .json settings file"},
       {"ctrl+click", "type a value into a slider"},
       {"click the view", "the pixel in both backends, and the illumination equation's terms (Pixel tab)"},
   }};

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cstdio>
 #include <thread>
+#include <utility>
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -109,6 +110,7 @@ int runViewer(const ViewerOptions& options) {
   ViewFrame view(gl, renderer, 0);
   ViewInput input;
   PixelPick pick;
+  std::vector<std::string> scriptedDrops = options.drops;
   std::optional<std::array<int, 2>> pickAsked = options.pick;
   state.backend = options.backend;
   state.dragPreview = options.dragPreview;
@@ -130,7 +132,9 @@ int runViewer(const ViewerOptions& options) {
     // Playing: time advances by the wall clock since the last iteration (at most 0.1 s, so a stall does not jump).
     if (state.playing) state.settings.time += std::min(0.1f, std::chrono::duration<float>(start - lastIteration).count());
     lastIteration = start;
-    for (const std::string& path : window.takeDroppedPaths()) loadSceneFile(state, path);
+    for (const std::string& path : window.takeDroppedPaths()) openDroppedFile(state, path);
+    if (view.drawn().version > 0)  // --drop: as if dropped once the first frame is on screen
+      for (const std::string& path : std::exchange(scriptedDrops, {})) openDroppedFile(state, path);
     window.setTitle("facet view: " + state.scene->source);
     // The panel's side of the window, in framebuffer pixels; the image takes the rest.
     const float pixelsPerUnit = ImGui::GetIO().DisplayFramebufferScale.x > 0 ? ImGui::GetIO().DisplayFramebufferScale.x : 1.0f;

@@ -4,6 +4,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "scene/scene.h"
 #include "settings/render_settings.h"
@@ -26,6 +27,7 @@ struct ViewerOptions {
   bool showPanel = true;               // --no-panel: false
   int dragPreview = 2;                 // --drag-preview: ViewerState::dragPreview
   std::optional<std::array<int, 2>> pick;  // --pick X,Y: the pixel picked once the first frame is drawn (from the top left)
+  std::vector<std::string> drops;      // --drop: files opened as if dropped on the window after the first frame
   int benchOrbit = 0;                  // --bench-orbit N: orbit once in N timed frames, print the figures (orbit_bench.h), exit
 };
 

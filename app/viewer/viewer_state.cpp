@@ -1,5 +1,7 @@
 #include "viewer/viewer_state.h"
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 
 #include <nlohmann/json.hpp>
@@ -13,9 +15,19 @@
 namespace facet::viewer {
 namespace {
 
+// How many files the Files tab lists.
+constexpr std::size_t kRecentFiles = 8;
+
 void report(ViewerState& state, std::string message, bool isError) {
+  if (isError) std::fprintf(stderr, "facet: view: %s\n", message.c_str());
   state.message = std::move(message);
   state.messageIsError = isError;
+}
+
+void remember(ViewerState& state, const std::string& path) {
+  std::erase(state.recentFiles, path);
+  state.recentFiles.insert(state.recentFiles.begin(), path);
+  if (state.recentFiles.size() > kRecentFiles) state.recentFiles.resize(kRecentFiles);
 }
 
 }  // namespace
@@ -35,6 +47,7 @@ bool loadSceneFile(ViewerState& state, const std::string& path) {
     state.settings.camera = state.startSettings.camera;
     state.settings.lightSource = state.startSettings.lightSource;
     state.settings.lights = state.startSettings.lights;
+    remember(state, path);
     report(state, "loaded " + state.scene->source + (warnings ? " (" + std::to_string(warnings) + " loader warnings)" : ""), false);
     return true;
   } catch (const Error& e) {
@@ -50,9 +63,20 @@ bool loadSceneFile(ViewerState& state, const std::string& path) {
 void loadSettings(ViewerState& state) {
   try {
     state.settings = state.startSettings = loadSettingsFile(state.settingsPath);
+    remember(state, state.settingsPath);
     report(state, "settings loaded from " + state.settingsPath, false);
   } catch (const Error& e) {
     report(state, e.what(), true);
+  }
+}
+
+void openDroppedFile(ViewerState& state, const std::string& path) {
+  if (std::filesystem::path(path).extension() == ".json") {
+    state.settingsPath = path;
+    loadSettings(state);
+  } else {
+    state.scenePath = path;
+    loadSceneFile(state, path);
   }
 }
 

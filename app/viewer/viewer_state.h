@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "image/image.h"
 #include "pipeline/view_setup.h"
@@ -41,7 +42,9 @@ struct ViewerState {
   FrameBackend backend = FrameBackend::Auto;
   int dragPreview = 2;                  // 1: full size while dragging too; at most kMaxDragPreview
 
-  std::string message;                  // the last action's outcome, shown in the panel
+  std::vector<std::string> recentFiles; // scenes and settings files opened, newest first (the Files tab)
+
+  std::string message;                  // the last action's outcome, shown in the panel (an error also on stderr)
   bool messageIsError = false;
 };
 
@@ -53,6 +56,8 @@ void setScene(ViewerState& state, std::shared_ptr<const Scene> scene);
 // camera frames the new scene, not the old one's view).
 bool loadSceneFile(ViewerState& state, const std::string& path);
 void loadSettings(ViewerState& state);
+// A file dropped on the window: a .json is a settings file, anything else a scene.
+void openDroppedFile(ViewerState& state, const std::string& path);
 void saveSettings(ViewerState& state);
 // image: the 3D frame without the panel.
 void saveScreenshot(ViewerState& state, const Image& image);

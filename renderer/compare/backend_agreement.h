@@ -8,6 +8,10 @@
 // (which the viewer's window tests call) all read it here. A case of the
 // agreement suite may allow a measured difference only with a reason
 // written in its JSON (tests/agreement/cases).
+#include <array>
+#include <string_view>
+
+#include "compare/diff_result.h"
 #include "compare/diff_thresholds.h"
 
 namespace facet {
@@ -19,6 +23,17 @@ inline DiffThresholds backendAgreement() {
   t.warnThreshold = 0.0;
   t.warnPercent = 0.0;
   return t;
+}
+
+// The verdict on two backends' images as the agreement suite gives it:
+// identical (every byte equal), within tolerance (pixels differ, none beyond
+// the thresholds compared with: a case's measured allowance), or different.
+enum class Agreement { Identical, WithinTolerance, Different, Count };
+inline constexpr std::array<std::string_view, static_cast<std::size_t>(Agreement::Count)> kAgreementNames = {"identical", "within tolerance",
+                                                                                                           "different"};
+inline Agreement agreementOf(const DiffResult& d) {
+  if (d.differingPixels == 0) return Agreement::Identical;
+  return d.status == DiffStatus::Fail ? Agreement::Different : Agreement::WithinTolerance;
 }
 
 }  // namespace facet
