@@ -24,6 +24,7 @@ struct ViewCommandOptions {
   bool noPanel = false;
   std::string pick;
   std::vector<std::string> drops;
+  std::string tab;
 };
 
 }  // namespace
@@ -51,6 +52,8 @@ Command addViewCommand(CLI::App& app) {
   command->add_option("--drop", options->drops,
                       "open FILE as if dropped on the window once the first frame is drawn: a .json settings file, else a scene (repeatable; for "
                       "scripted runs)");
+  command->add_option("--tab", options->tab, "the panel's tab shown first")
+      ->check(CLI::IsMember({"settings", "files", "reference", "pixel", "matrices", "stages", "help"}));
   command->add_flag("--no-panel", options->noPanel, "start with the panel hidden (H shows it): the 3D view takes the whole window");
   command->add_option("--drag-preview", options->dragPreview,
                       "while a drag or the wheel moves the camera, draw frames at 1/N of each side (the full frame follows when it stops); 1: always full")
@@ -78,6 +81,7 @@ Command addViewCommand(CLI::App& app) {
     view.dragPreview = options->dragPreview;
     view.showPanel = !options->noPanel;
     view.drops = options->drops;
+    view.tab = options->tab;
     if (!options->pick.empty()) view.pick = parsePixel(options->pick, "--pick");
     view.backend = options->backend == "gl" ? viewer::FrameBackend::OpenGl : options->backend == "cpu" ? viewer::FrameBackend::Cpu : viewer::FrameBackend::Auto;
     return viewer::runViewer(view);

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <string>
+#include <string_view>
+#include <utility>
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -132,7 +135,7 @@ void drawHelpTab() {
 
 // A tab whose content scrolls under the status lines, which stay.
 template <class Fn>
-void tab(const char* name, Fn&& drawContent, bool select = false) {
+void tab(const char* name, Fn&& drawContent, bool select) {
   if (!ImGui::BeginTabItem(name, nullptr, select ? ImGuiTabItemFlags_SetSelected : 0)) return;
   ImGui::BeginChild(name);
   drawContent();
@@ -142,8 +145,8 @@ void tab(const char* name, Fn&& drawContent, bool select = false) {
 
 }  // namespace
 
-PanelRequests drawControlPanel(ViewerState& state, const FrameStats& stats, ReferenceView& reference, PixelPick& pick, bool& redrawEveryFrame,
-                               float& width) {
+PanelRequests drawControlPanel(ViewerState& state, const FrameStats& stats, ReferenceView& reference, PixelPick& pick, const DrawnFrame& drawn,
+                               MatrixSelection& matrices, bool& redrawEveryFrame, float& width) {
   PanelRequests requests;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   // Docked: the left edge, the whole height; only its right edge moves, and the 3D view takes the rest.
@@ -156,11 +159,17 @@ PanelRequests drawControlPanel(ViewerState& state, const FrameStats& stats, Refe
   if (open) {
     drawStatus(state, stats, redrawEveryFrame);
     if (ImGui::BeginTabBar("tabs")) {
-      tab("Settings", [&] { drawSettingsPanel(state.settings, *state.scene, state.sphere); });
-      tab("Files", [&] { drawFilesTab(state, requests); });
-      tab("Reference", [&] { reference.drawControls(stats.version); });
-      tab("Pixel", [&] { pick.drawTab(stats.version); }, pick.takeFresh());
-      tab("Help", [] { drawHelpTab(); });
+      // --tab: brought forward once, by its name in lower case.
+      const std::string asked = std::exchange(state.openTab, {});
+      const auto opens = [&](std::string_view name) { return asked == name; };
+      tab("Settings", [&] { drawSettingsPanel(state.settings, *state.scene, state.sphere); }, opens("settings"));
+      tab("Files", [&] { drawFilesTab(state, requests); }, opens("files"));
+      tab("Reference", [&] { reference.drawControls(stats.version); }, opens("reference"));
+      const bool picked = pick.takeFresh();
+      if (picked && pick.instance()) matrices.instance = *pick.instance();  // the picked triangle's object
+      tab("Pixel", [&] { pick.drawTab(stats.version); }, picked || opens("pixel"));
+      tab("Matrices", [&] { drawMatricesTab(drawn, matrices); }, opens("matrices"));
+      tab("Help", [] { drawHelpTab(); }, opens("help"));
       ImGui::EndTabBar();
     }
   }

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 
+#include "viewer/matrices_tab.h"
 #include "viewer/pixel_pick.h"
 #include "viewer/reference_view.h"
 #include "viewer/viewer_state.h"
@@ -30,7 +31,7 @@ struct PanelRequests {
 // whole height, `width` wide (ImGui units; the user's resize of its right
 // edge comes back in it). redrawEveryFrame: the panel's checkbox (draw the
 // 3D frame even when nothing changed, to time it).
-PanelRequests drawControlPanel(ViewerState& state, const FrameStats& stats, ReferenceView& reference, PixelPick& pick, bool& redrawEveryFrame,
-                               float& width);
+PanelRequests drawControlPanel(ViewerState& state, const FrameStats& stats, ReferenceView& reference, PixelPick& pick, const DrawnFrame& drawn,
+                               MatrixSelection& matrices, bool& redrawEveryFrame, float& width);
 
 }  // namespace facet::viewer

@@ -20,6 +20,11 @@ class PixelPick {
  public:
   // Probes pixel (x, y) of the frame on screen (from the bottom left, in its pixels); errors are kept for the tab.
   void pick(ViewFrame& view, int x, int y);
+  // The instance the picked pixel's triangle belongs to, when one was picked.
+  std::optional<int> instance() const {
+    if (!picked_ || !picked_->cpu.covered) return std::nullopt;
+    return picked_->cpu.instance;
+  }
   // Whether a pick arrived since the last call (the panel brings its tab forward).
   bool takeFresh() { return std::exchange(fresh_, false); }
   // The Pixel tab's content.

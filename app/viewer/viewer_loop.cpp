@@ -110,10 +110,12 @@ int runViewer(const ViewerOptions& options) {
   ViewFrame view(gl, renderer, 0);
   ViewInput input;
   PixelPick pick;
+  MatrixSelection matrices;
   std::vector<std::string> scriptedDrops = options.drops;
   std::optional<std::array<int, 2>> pickAsked = options.pick;
   state.backend = options.backend;
   state.dragPreview = options.dragPreview;
+  state.openTab = options.tab;
 
   FrameTimes drawTimes, windowTimes;
   bool redrawEveryFrame = false;  // the panel's checkbox
@@ -158,7 +160,7 @@ int runViewer(const ViewerOptions& options) {
       const FrameStats stats{renderer.rendererName(), view.backendLine(state.backend), drawTimes.median(), windowTimes.median(),
                              state.scene->triangleCount(), static_cast<int>(drawn.frame.lights.size()), drawn.frame.shadowLayerCount,
                              drawn.version, drawn.error};
-      panel = drawControlPanel(state, stats, reference, pick, redrawEveryFrame, panelWidth);
+      panel = drawControlPanel(state, stats, reference, pick, drawn, matrices, redrawEveryFrame, panelWidth);
       reference.drawImages(drawn.version);
     } else if (!view.drawn().error.empty()) {
       drawErrorOverlay(view.drawn().error);

@@ -28,6 +28,7 @@ struct ViewerOptions {
   int dragPreview = 2;                 // --drag-preview: ViewerState::dragPreview
   std::optional<std::array<int, 2>> pick;  // --pick X,Y: the pixel picked once the first frame is drawn (from the top left)
   std::vector<std::string> drops;      // --drop: files opened as if dropped on the window after the first frame
+  std::string tab;                     // --tab: the panel's tab shown first
   int benchOrbit = 0;                  // --bench-orbit N: orbit once in N timed frames, print the figures (orbit_bench.h), exit
 };
 

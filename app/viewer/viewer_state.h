@@ -42,6 +42,7 @@ struct ViewerState {
   FrameBackend backend = FrameBackend::Auto;
   int dragPreview = 2;                  // 1: full size while dragging too; at most kMaxDragPreview
 
+  std::string openTab;                  // the panel's tab to bring forward once (--tab), then empty
   std::vector<std::string> recentFiles; // scenes and settings files opened, newest first (the Files tab)
 
   std::string message;                  // the last action's outcome, shown in the panel (an error also on stderr)
