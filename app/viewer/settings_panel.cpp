@@ -42,6 +42,44 @@ bool editFloat(const char* label, float& value, const FieldInfo& info, const cha
   return ImGui::DragFloat(label, &value, speed, lo, hi, format, kClamp);  // lo == hi == 0: unbounded
 }
 
+// What the panel calls a field: its label, then its unit when it has one,
+// "half-angle of view (degrees)". The ID after "##" is the key, so two
+// fields with the same label never share one.
+std::string shownLabel(const FieldInfo& info) {
+  std::string text(info.label);
+  if (!info.unit.empty()) text.append(" (").append(info.unit).append(")");
+  return text;
+}
+
+// The width of the widest label the panel will draw, lists' items included.
+class LabelMeasure {
+ public:
+  float widest() const { return widest_; }
+
+  template <class T>
+  void field(const FieldInfo& info, const T&) {
+    measure(info);
+  }
+  template <class Enum, std::size_t N>
+  void choice(const FieldInfo& info, const Enum&, const std::array<std::string_view, N>&) {
+    measure(info);
+  }
+  template <class Fn>
+  void group(std::string_view, Fn&& fn) {
+    fn();
+  }
+  template <class T>
+  void list(const ListInfo&, std::vector<T>&) {
+    T item;
+    visitItem(*this, item);
+  }
+
+ private:
+  void measure(const FieldInfo& info) { widest_ = std::max(widest_, ImGui::CalcTextSize(shownLabel(info).c_str()).x); }
+
+  float widest_ = 0.0f;
+};
+
 // What a list item's header says after its number: a light's kind.
 std::string itemTitle(const Light& light) { return ": " + std::string(kLightKindNames[static_cast<std::size_t>(light.kind)]); }
 std::string itemTitle(const Emitter&) { return ""; }
@@ -143,10 +181,11 @@ class PanelVisitor {
   }
 
   template <class Fn>
-  void group(std::string_view key, Fn&& fn) {
+  void group(const GroupInfo& info, Fn&& fn) {
     const std::string outer = prefix_;
-    const std::string name(key);
-    if (!ImGui::CollapsingHeader(name.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) return;
+    const std::string name(info.key);
+    const std::string header = std::string(info.label) + "###" + name;
+    if (!ImGui::CollapsingHeader(header.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) return;
     ImGui::PushID(name.c_str());
     ImGui::Indent();
     prefix_ = outer + name + ".";
@@ -162,7 +201,7 @@ class PanelVisitor {
   void list(const ListInfo& info, std::vector<T>& list) {
     const std::string outer = prefix_;
     const std::string name(info.key), item(info.item);
-    const std::string header = name + " (" + std::to_string(list.size()) + ")###" + name;
+    const std::string header = std::string(info.label) + " (" + std::to_string(list.size()) + ")###" + name;
     if (!ImGui::CollapsingHeader(header.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) return;
     ImGui::PushID(name.c_str());
     ImGui::Indent();
@@ -193,17 +232,18 @@ class PanelVisitor {
 
  private:
   const char* label(const FieldInfo& info) {
-    label_.assign(info.key);
+    label_ = shownLabel(info).append("##").append(info.key);
     return label_.c_str();
   }
 
   void changed(std::string_view key) { changedKey_ = prefix_ + std::string(key); }
 
-  // The dotted key (what --set and the JSON call it), the help, the range.
+  // The dotted key (what --set and the JSON call it), the unit, the help, the range.
   void tooltip(const FieldInfo& info) const {
     if (!ImGui::IsItemHovered()) return;
     ImGui::BeginTooltip();
     ImGui::Text("%s%.*s", prefix_.c_str(), static_cast<int>(info.key.size()), info.key.data());
+    if (!info.unit.empty()) ImGui::Text("in %.*s", static_cast<int>(info.unit.size()), info.unit.data());
     ImGui::TextUnformatted(info.help.data(), info.help.data() + info.help.size());
     if (isBounded(info)) ImGui::TextDisabled("range %g to %g; ctrl+click to type a value", info.min, info.max);
     ImGui::EndTooltip();
@@ -264,7 +304,12 @@ RenderSettings editedSettings(const RenderSettings& settings, const RenderSettin
 bool drawSettingsPanel(RenderSettings& settings, const Scene& scene, const Sphere& sphere) {
   RenderSettings shown = shownSettings(scene, settings);
   PanelVisitor visitor(sphere.radius);
-  ImGui::PushItemWidth(-ImGui::GetFontSize() * 8.5f);  // room for the longest key as a label
+  // Room on the right for the widest label, but never more than 60% of the
+  // panel: a longer label is cut at the edge (its tooltip has it all).
+  LabelMeasure measure;
+  visitSettings(measure, shown);
+  const float labelRoom = measure.widest() + ImGui::GetStyle().ItemInnerSpacing.x;
+  ImGui::PushItemWidth(-std::min(labelRoom, 0.6f * ImGui::GetContentRegionAvail().x));
   visitSettings(visitor, shown);
   ImGui::PopItemWidth();
   if (visitor.changedKey().empty()) return false;

@@ -29,12 +29,17 @@ struct TableWriter {
     *out += "| `" + prefix + std::string(f.key) + "` | `" + value + "` | " + range + " | " + std::string(f.help) + " |\n";
   }
   std::string range(const FieldInfo& f) const { return f.min == f.max ? "" : number(f.min) + " to " + number(f.max); }
+  // The range followed by the unit: "0.5 to 89.5 degrees"; the unit alone for an unbounded value.
+  std::string measured(const FieldInfo& f, const std::string& range) const {
+    if (f.unit.empty()) return range;
+    return range.empty() ? std::string(f.unit) : range + " " + std::string(f.unit);
+  }
 
-  void field(const FieldInfo& f, float v) { row(f, number(v), range(f)); }
-  void field(const FieldInfo& f, int v) { row(f, std::to_string(v), range(f)); }
+  void field(const FieldInfo& f, float v) { row(f, number(v), measured(f, range(f))); }
+  void field(const FieldInfo& f, int v) { row(f, std::to_string(v), measured(f, range(f))); }
   void field(const FieldInfo& f, bool v) { row(f, v ? "true" : "false", "true, false"); }
-  void field(const FieldInfo& f, glm::vec3 v) { row(f, vec3(v), f.min == f.max ? "" : "each " + range(f)); }
-  void field(const FieldInfo& f, const std::optional<float>& v) { row(f, v ? number(*v) : "null", "null, or " + range(f)); }
+  void field(const FieldInfo& f, glm::vec3 v) { row(f, vec3(v), measured(f, f.min == f.max ? "" : "each " + range(f))); }
+  void field(const FieldInfo& f, const std::optional<float>& v) { row(f, v ? number(*v) : "null", "null, or " + measured(f, range(f))); }
   void field(const FieldInfo& f, const std::string& v) { row(f, v.empty() ? "\"\"" : v, "a file name"); }
   template <class E, std::size_t N>
   void choice(const FieldInfo& f, E v, const std::array<std::string_view, N>& names) {
@@ -62,7 +67,7 @@ struct TableWriter {
 }  // namespace
 
 std::string settingsTable() {
-  std::string out = "| key | default | range | meaning |\n| --- | --- | --- | --- |\n";
+  std::string out = "| key | default | range and unit | meaning |\n| --- | --- | --- | --- |\n";
   RenderSettings defaults;
   TableWriter writer{"", &out};
   visitSettings(writer, defaults);
