@@ -13,7 +13,6 @@
 #include "common/atomic_file.h"
 #include "common/error.h"
 #include "common/quote.h"
-#include "compare/depth_complexity.h"
 #include "compare/heat_map.h"
 #include "compare/image_diff.h"
 #include "cpu/cpu_renderer.h"
@@ -21,6 +20,7 @@
 #include "image/png.h"
 #include "pipeline/frame_inputs.h"
 #include "ray/ray_renderer.h"
+#include "render/stage.h"
 #include "pipeline/bump_map.h"
 #include "pipeline/displacement.h"
 #include "scene/environment_map.h"
@@ -38,7 +38,7 @@ struct RenderOptions {
   std::string backend = "gl";
   std::string context = "osmesa";
   int threads = 0;
-  std::string stage = "image";  // image, or overdraw (the depth complexity)
+  std::string stage = "image";  // render/stage.h: image, overdraw, depth, shadow-map, normals or light-N
   std::string shadowReport;     // a heat map of the frame against ray casting (renderer/PIPELINE.md, section 10)
 };
 
@@ -81,21 +81,23 @@ Command addRenderCommand(CLI::App& app) {
       ->check(CLI::IsMember({"osmesa", "egl"}));
   command->add_option("--threads", options->threads, "CPU backend and ray tracer threads (0: one per core)")->check(wholeNumberIn(0, 256));
   command->add_option("--output-stage", options->stage,
-                      "image (the frame), or overdraw: the depth complexity, how many triangle fragments each pixel received before the "
-                      "depth test, as a heat map (black 0, pale yellow the busiest pixel)")
-      ->check(CLI::IsMember({"image", "overdraw"}));
+                      "what to write (renderer/PIPELINE.md, section 6, \"Stages\"): image (the frame); overdraw (the depth complexity: "
+                      "fragments per pixel before the depth test, black 0, pale yellow the busiest pixel); depth (the z-buffer's window z, "
+                      "near white to far dark grey); shadow-map (every shadow map side by side); normals (RGB = (N + 1)/2); light-N (the "
+                      "frame lit by light N alone)");
   command->add_option("--shadow-report", options->shadowReport,
                       "also ray cast the frame (ray.depth 1, the same settings) and write a heat map of where the image differs from it to "
                       "this PNG: where shadow maps are wrong (acne, peter-panning, aliasing), since rays cast exact shadows")
       ->check([](const std::string& path) { return path.empty() ? std::string("--shadow-report: an empty file name") : std::string(); });
   return [options]() {
     const auto start = std::chrono::steady_clock::now();
+    const Stage stage = parseStage(options->stage);
     const std::string output = options->common.output.empty() ? "facet.png" : options->common.output;  // -o "" never parses
     // Before loading and rendering (minutes at large sizes): a frame nobody can write is not drawn.
     checkOutputFile(output, {options->common.scenePath, options->common.settingsPath});
     if (!options->shadowReport.empty()) {
       if (options->backend == "ray") throw UsageError("--shadow-report compares a rasterizer with ray casting: use it with --backend gl, cpu or reference");
-      if (options->stage != "image") throw UsageError("--shadow-report compares images: use it with --output-stage image");
+      if (stage.kind != StageKind::Image) throw UsageError("--shadow-report compares images: use it with --output-stage image");
       checkOutputFile(options->shadowReport, {options->common.scenePath, options->common.settingsPath, output});
     }
     Scene scene = loadScene(options->common.scenePath);
@@ -111,18 +113,12 @@ Command addRenderCommand(CLI::App& app) {
 #if FACET_HAVE_GL
     if (options->backend == "gl") refuseCpuOnlyFrame(frame);  // before the driver is loaded
 #endif
+    checkStage(frame, stage);
     ProgressBar progress("ray tracing");  // drawn on a terminal only
     std::unique_ptr<Renderer> renderer = makeRenderer(*options, progress);
     RenderResult result;
-    DepthComplexity complexity;
     try {
-      if (options->stage == "overdraw") {
-        const std::vector<std::uint32_t> counts = renderer->fragmentCounts(scene, frame);
-        complexity = depthComplexityOf(counts);
-        result.image = depthComplexityImage(counts, frame.width, frame.height);
-      } else {
-        result = renderer->render(scene, frame);
-      }
+      result = renderStage(*renderer, scene, frame, stage);
     } catch (const OutOfMemory&) {
       throw;
     } catch (const std::bad_alloc&) {
@@ -148,10 +144,6 @@ Command addRenderCommand(CLI::App& app) {
       std::printf("volume: %s (marching cubes)\n", countOf(added.isoTriangles, "iso-surface triangle").c_str());
     std::printf("backend: %s\n", renderer->description().c_str());
     for (const PassTiming& t : result.timings) std::printf("  %-28s %9.2f ms\n", t.pass.c_str(), t.milliseconds);
-    if (options->stage == "overdraw")
-      std::printf("depth complexity: %llu fragments over %llu of %lld pixels, %.2f per covered pixel, at most %u\n",
-                  static_cast<unsigned long long>(complexity.fragments), static_cast<unsigned long long>(complexity.covered),
-                  static_cast<long long>(frame.width) * frame.height, complexity.meanPerCovered(), complexity.max);
     for (const std::string& note : result.notes) std::printf("%s\n", note.c_str());
     if (shadowDiff)
       std::printf("shadow report: %lld pixels differ from ray casting, %lld by more than 1 level, at most %d; heat map written to %s\n",

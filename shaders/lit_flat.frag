@@ -21,6 +21,9 @@ flat in vec3 backSpecular;
 in vec4 st;  // TEXCOORD_0 in xy, TEXCOORD_1 in zw
 in vec4 vertexColor;
 in vec3 modelPoint;
+#if FACET_NORMAL_OUTPUT
+flat in vec3 faceNormal;  // the normals stage
+#endif
 
 
 void main() {
@@ -28,6 +31,10 @@ void main() {
   Illumination I = gl_FrontFacing ? Illumination(frontDiffuse, frontSpecular) : Illumination(backDiffuse, backSpecular);
   vec4 O = baseColorAt(t, vertexColor, modelPoint);
   if (!alphaKept(O.a)) discard;  // alpha mask (a no-op unless FACET_MASKED)
+#if FACET_NORMAL_OUTPUT
+  writeNormal(gl_FrontFacing ? faceNormal : -faceNormal);  // the normals stage: the side lit, unlit materials too
+  return;
+#endif
   if (unlit) {  // KHR_materials_unlit: O_d itself, through the fog
     writeLit(fogged(O.rgb), O.a);
     return;

@@ -32,6 +32,9 @@ flat out vec3 backSpecular;
 out vec4 st;                 // a texture still varies O_d per pixel: TEXCOORD_0 in xy, TEXCOORD_1 in zw
 out vec4 vertexColor;        // and so do vertex colours
 out vec3 modelPoint;      // and procedural textures
+#if FACET_NORMAL_OUTPUT
+flat out vec3 faceNormal;    // the normals stage: N, which the fragment negates on a back face
+#endif
 
 vec3 modelPosition(uint v) {
   return vec3(positions[3u * v], positions[3u * v + 1u], positions[3u * v + 2u]);
@@ -50,6 +53,9 @@ void main() {
   vec3 p1 = worldPosition(indices[first + 1]);
   vec3 p2 = worldPosition(indices[first + 2]);
   vec3 N = normalize3(cross3(p1 - p0, p2 - p0));
+#if FACET_NORMAL_OUTPUT
+  faceNormal = N;
+#endif
   precise vec3 centre = (p0 + p1 + p2) / 3.0;  // the centroid (`centroid` is a GLSL keyword)
   vec3 V = viewVector(centre);
   CourseMaterial summed = summedMaterial();

@@ -2,12 +2,20 @@
 // an opaque fragment writes (C, 1) into the linear colour buffer; a blended
 // one (FACET_BLENDED) reads the buffer at its pixel (EXT_shader_framebuffer_fetch,
 // which sees every earlier fragment there in primitive order) and blends into
-// it by the frame's equation (FACET_PREMULTIPLIED). Mirror: renderer/cpu/lit_pass.cpp.
+// it by the frame's equation (FACET_PREMULTIPLIED). With FACET_NORMAL_OUTPUT
+// (the normals stage, never blended) the fragment writes (N, 1), the normal
+// it is shaded with, instead. Mirror: renderer/cpu/lit_pass.cpp.
 #if FACET_BLENDED
 layout(location = 0) inout vec4 color;
 uniform bool additiveBlend;  // the material adds its light (the additive equation)
 #else
 layout(location = 0) out vec4 color;
+#endif
+
+#if FACET_NORMAL_OUTPUT && !FACET_BLENDED
+void writeNormal(vec3 N) {
+  color = vec4(N, 1.0);
+}
 #endif
 
 void writeLit(vec3 lit, float alpha) {

@@ -40,6 +40,10 @@ void main() {
   if (!gl_FrontFacing) N = -N;  // two-sided lighting: a back face is drawn only where it is not culled
   vec4 O = baseColorAt(t, vertexColor, modelPoint);
   if (!alphaKept(O.a)) discard;  // alpha mask (a no-op unless FACET_MASKED)
+#if FACET_NORMAL_OUTPUT
+  writeNormal(N);  // the normals stage: N as lit below, unlit materials too
+  return;
+#endif
   if (unlit) {  // KHR_materials_unlit: O_d itself, through the fog
     writeLit(fogged(O.rgb), O.a);
     return;

@@ -19,6 +19,7 @@
 #include "cpu/thread_pool.h"
 #include "pipeline/frame_checks.h"
 #include "pipeline/shadow_pass_key.h"
+#include "pipeline/stage_frames.h"
 
 namespace facet {
 namespace {
@@ -96,12 +97,44 @@ class CpuRenderer final : public Renderer {
   }
 
   std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) override {
-    return perPixel(scene, frame, [&](std::vector<std::uint32_t>& ids, ColorBuffer& unused) { cpu::litPass(pool_, buffers_, scene, frame, maps_, unused, &ids); });
+    return perPixel(scene, frame, [&](std::vector<std::uint32_t>& ids, ColorBuffer& unused) {
+      cpu::litPass(pool_, buffers_, scene, frame, maps_, unused, {.triangleIds = &ids});
+    });
   }
 
   std::vector<std::uint32_t> fragmentCounts(const Scene& scene, const FrameInputs& frame) override {
-    return perPixel(scene, frame,
-                    [&](std::vector<std::uint32_t>& counts, ColorBuffer& unused) { cpu::litPass(pool_, buffers_, scene, frame, maps_, unused, nullptr, &counts); });
+    return perPixel(scene, frame, [&](std::vector<std::uint32_t>& counts, ColorBuffer& unused) {
+      cpu::litPass(pool_, buffers_, scene, frame, maps_, unused, {.fragmentCounts = &counts});
+    });
+  }
+
+  // The lit pass of the frame at the pixel centres (one pass, whatever its samples), keeping its z-buffer.
+  std::vector<float> depthBuffer(const Scene& scene, const FrameInputs& frame) override {
+    check_(scene, frame);
+    cpu::prepareFrame(pool_, buffers_, scene, frame);
+    RenderResult maps;
+    shadowPasses(scene, frame, maps);
+    color_.reset(frame.width, frame.height, glm::vec4(0.0f));
+    cpu::litPass(pool_, buffers_, scene, frame, maps_, color_, {.keepDepth = true});
+    return buffers_.depth;
+  }
+
+  ShadowMapTexels shadowMaps(const Scene& scene, const FrameInputs& frame) override {
+    check_(scene, frame);
+    if (frame.shadowLayerCount == 0) return {};
+    cpu::prepareFrame(pool_, buffers_, scene, frame);
+    RenderResult unused;
+    shadowPasses(scene, frame, unused);  // or the maps kept from an earlier frame with the same pass 1
+    return {maps_.size, maps_.layers, maps_.depth};
+  }
+
+  std::vector<glm::vec4> normals(const Scene& scene, const FrameInputs& frame) override {
+    const FrameInputs drawn = normalsFrame(frame);
+    check_(scene, drawn);
+    cpu::prepareFrame(pool_, buffers_, scene, drawn);  // no shadow pass: the frame has no lights
+    color_.reset(drawn.width, drawn.height, glm::vec4(0.0f));
+    cpu::litPass(pool_, buffers_, scene, drawn, maps_, color_, {.normals = true});
+    return {color_.data(), color_.data() + static_cast<std::size_t>(drawn.width) * static_cast<std::size_t>(drawn.height)};
   }
 
  private:

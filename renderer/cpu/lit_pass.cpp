@@ -54,10 +54,13 @@ LaneMaterial<float> vertexMaterial(const CourseMaterial& material, const Mesh& m
 
 // The fragment stage of one shading mode: no branch on the mode per pixel.
 // It shades the pixels of `box` (within tile r) where `ids` (the tile's, row
-// by row) names a triangle, and writes (colour, 1) there into `color`.
+// by row) names a triangle, and writes (colour, 1) there into `color`; with
+// `normals`, (N, 1) of the normal shading reads there instead (the normals
+// stage: flat's triangle normal, which the bins hold in their illumination's
+// place, or Phong's and pbr's bent, normalized and two-sided normal).
 template <ShadingMode kMode>
 void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, WorkerBins::TileScratch& scratch, const std::uint32_t* ids,
-               const TileRect& r, const TileRect& box, ColorBuffer& color) {
+               const TileRect& r, const TileRect& box, ColorBuffer& color, bool normals) {
   const int tx0 = box.x0, ty0 = box.y0, tx1 = box.x1, ty1 = box.y1;
   constexpr VaryingLayout layout = varyingLayout(kMode);
   std::uint32_t current = kNoTriangle;
@@ -104,7 +107,8 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
       if constexpr (kMode == ShadingMode::Phong) {
         // Four pixels of one untextured, uncoloured triangle in a row: interpolation on four lanes, straight into the batch.
         const std::uint32_t* row = &ids[(py - r.y0) * kTileSize + (px - r.x0)];
-        if (!texture && !colored && !procedural && !normalMap && !bumpable && !emissiveMap && !foggy && px + 3 <= tx1 && row[1] == id && row[2] == id && row[3] == id) {
+        if (!normals && !texture && !colored && !procedural && !normalMap && !bumpable && !emissiveMap && !foggy && px + 3 <= tx1 && row[1] == id &&
+            row[2] == id && row[3] == id) {
           const __m128 w = in->inverseW4(px, py);
           const __m128 P[3] = {in->varying4(0, px, py, w), in->varying4(1, px, py, w), in->varying4(2, px, py, w)};
           const __m128 N[3] = {in->varying4(3, px, py, w), in->varying4(4, px, py, w), in->varying4(5, px, py, w)};
@@ -120,6 +124,28 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
       // A texture coordinate set at the pixel, and its quad derivatives (ds/dx, dt/dx, ds/dy, dt/dy).
       const auto stAt = [&](int set) { return glm::vec2(v[layout.texcoord(set)], v[layout.texcoord(set) + 1]); };
       const auto derivativesAt = [&](int set) { return in->quadDerivatives(layout.texcoord(set), px, py); };
+      // Phong and pbr: the interpolated normal, bent by a normal texture (whose result is normalized as the
+      // interpolated one is) and by the bump map; the caller normalizes it.
+      const auto bentNormal = [&] {
+        glm::vec3 n(0.0f);
+        if constexpr (kMode == ShadingMode::Pbr || kMode == ShadingMode::Phong) {
+          n = {v[3], v[4], v[5]};
+          const glm::vec4 tangent{v[layout.tangent], v[layout.tangent + 1], v[layout.tangent + 2], v[layout.tangent + 3]};
+          if (normalMap) n = normalMapped(*normalMap, *material, normalize3(n), tangent, stAt(material->normalMap.set), derivativesAt(material->normalMap.set));
+          if (bumpable) n = bumped(*frame.bump.map, frame.bump.scale, normalize3(n), tangent, stAt(0));
+        }
+        return n;
+      };
+      if (normals) {  // the normals stage: N as shading reads it, two-sided; Gouraud frames arrive as Phong ones (normalsFrame)
+        glm::vec3 N(0.0f);
+        if constexpr (kMode == ShadingMode::Flat) N = (back ? flat[1] : flat[0]).diffuse;
+        else if constexpr (kMode == ShadingMode::Pbr || kMode == ShadingMode::Phong) {
+          const glm::vec3 unit = normalize3(bentNormal());
+          N = back ? -unit : unit;
+        }
+        color.at(px, py) = glm::vec4(N, 1.0f);
+        continue;
+      }
       // The pixel's eye depth d, for fog.
       const float depth = foggy ? eyeDepth(frame, in->oneOverWAt(px, py), in->depthAt(px, py)) : 0.0f;
       // k_e·E with an emissive texture (the course's modes, PIPELINE.md section 5).
@@ -136,16 +162,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         continue;
       }
       glm::vec3 lit;
-      glm::vec3 interpolatedNormal(0.0f);
-      if constexpr (kMode == ShadingMode::Pbr || kMode == ShadingMode::Phong) {
-        interpolatedNormal = {v[3], v[4], v[5]};
-        // A normal texture bends the unit interpolated normal; the result is normalized as the interpolated one is.
-        const glm::vec4 tangent{v[layout.tangent], v[layout.tangent + 1], v[layout.tangent + 2], v[layout.tangent + 3]};
-        if (normalMap)
-          interpolatedNormal = normalMapped(*normalMap, *material, normalize3(interpolatedNormal), tangent, stAt(material->normalMap.set),
-                                            derivativesAt(material->normalMap.set));
-        if (bumpable) interpolatedNormal = bumped(*frame.bump.map, frame.bump.scale, normalize3(interpolatedNormal), tangent, stAt(0));
-      }
+      const glm::vec3 interpolatedNormal = bentNormal();
       if constexpr (kMode == ShadingMode::Pbr) {
         const glm::vec3 P{v[0], v[1], v[2]};
         const glm::vec3 unit = normalize3(interpolatedNormal);
@@ -207,12 +224,12 @@ void gatherVisible(const std::vector<WorkerBins>& workers, const PolygonNumberin
 
 // Shading in the frame's mode.
 void shadeIn(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, WorkerBins::TileScratch& scratch, const std::uint32_t* ids,
-             const TileRect& r, const TileRect& box, ColorBuffer& color) {
+             const TileRect& r, const TileRect& box, ColorBuffer& color, bool normals = false) {
   switch (frame.shading) {
-    case ShadingMode::Pbr: shadeTile<ShadingMode::Pbr>(scene, frame, maps, scratch, ids, r, box, color); break;
-    case ShadingMode::Phong: shadeTile<ShadingMode::Phong>(scene, frame, maps, scratch, ids, r, box, color); break;
-    case ShadingMode::Gouraud: shadeTile<ShadingMode::Gouraud>(scene, frame, maps, scratch, ids, r, box, color); break;
-    default: shadeTile<ShadingMode::Flat>(scene, frame, maps, scratch, ids, r, box, color); break;
+    case ShadingMode::Pbr: shadeTile<ShadingMode::Pbr>(scene, frame, maps, scratch, ids, r, box, color, normals); break;
+    case ShadingMode::Phong: shadeTile<ShadingMode::Phong>(scene, frame, maps, scratch, ids, r, box, color, normals); break;
+    case ShadingMode::Gouraud: shadeTile<ShadingMode::Gouraud>(scene, frame, maps, scratch, ids, r, box, color, normals); break;
+    default: shadeTile<ShadingMode::Flat>(scene, frame, maps, scratch, ids, r, box, color, normals); break;
   }
 }
 
@@ -256,7 +273,11 @@ void blendTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
 }  // namespace
 
 void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, ColorBuffer& color,
-             std::vector<std::uint32_t>* triangleIds, std::vector<std::uint32_t>* fragmentCounts) {
+             const LitPassOutput& output) {
+  std::vector<std::uint32_t>* const triangleIds = output.triangleIds;
+  std::vector<std::uint32_t>* const fragmentCounts = output.fragmentCounts;
+  const bool normals = output.normals && !triangleIds && !fragmentCounts;
+  if (normals && frame.shading == ShadingMode::Gouraud) throw Error("the normals stage draws a Gouraud frame as normalsFrame makes it (Phong)");
   const VaryingLayout layout = varyingLayout(frame.shading);
   const float halfWidth = 0.5f * static_cast<float>(frame.width), halfHeight = 0.5f * static_cast<float>(frame.height);
   PassVertices& v = buffers.vertices;
@@ -318,7 +339,14 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
     out[0] = illuminate(frame, maps, lit, centroid, N, V);
     out[1] = !drawn.cullBackFaces ? illuminate(frame, maps, lit, centroid, -N, V) : Illumination{};
   };
-  const FlatIllumination flat = flatLighting;  // refers to the lambda above, which outlives the pass
+  // The normals stage: the bins hold the triangle's normal, N and -N, in its illumination's diffuse place.
+  const auto flatNormal = [&](std::uint32_t, const std::uint32_t (&vertex)[3], Illumination (&out)[2]) {
+    const glm::vec3 p0 = v.world[vertex[0]], p1 = v.world[vertex[1]], p2 = v.world[vertex[2]];
+    const glm::vec3 N = normalize3(cross3(p1 - p0, p2 - p0));
+    out[0] = {N, glm::vec3(0.0f)};
+    out[1] = {-N, glm::vec3(0.0f)};
+  };
+  const FlatIllumination flat = normals ? FlatIllumination(flatNormal) : FlatIllumination(flatLighting);  // the lambdas outlive the pass
   const TileGrid grid = TileGrid::over(frame.width, frame.height);
   // The painter's algorithm bins (and so draws) the triangles in its order, back to front.
   const bool painter = frame.hsr == HiddenSurface::Painter;
@@ -336,7 +364,7 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
     order.insert(order.end(), frame.transparentOrder.begin(), frame.transparentOrder.end());
     if (order.size() != v.firstTriangle.back())
       throw Error("transparency: the frame's order has " + std::to_string(order.size()) + " triangles, the scene " + std::to_string(v.firstTriangle.back()));
-    if (!triangleIds && !fragmentCounts) buffers.fragments.reset(frame.width, frame.height, glm::vec4(0.0f));
+    if (!triangleIds && !fragmentCounts && !normals) buffers.fragments.reset(frame.width, frame.height, glm::vec4(0.0f));
   }
   const std::uint32_t* order = painter ? frame.paintersOrder.data() : blending ? buffers.submission.data() : nullptr;
   forEachRange(pool, v.firstTriangle.back(), [&](std::size_t begin, std::size_t end, int w) {
@@ -349,7 +377,7 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
   if (scanline) scanlineVisibility(pool, buffers.workers, v, scene, frame, numbering.emplace(buffers.workers), buffers.visible);
 
   // Segments and points, drawn after every opaque triangle (not in the triangle-id pass).
-  if (triangleIds || fragmentCounts) buffers.lines.clear();
+  if (triangleIds || fragmentCounts || normals) buffers.lines.clear();
   else setUpLines(scene, frame, v, layout.color, buffers.lines);
 
   // Tiles: visibility (z-buffer, triangle order), then shading of what is visible, then lines and points.
@@ -358,7 +386,7 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
   std::size_t fullestTile = 0;
   for (int tile = 0; tile < grid.count(); ++tile) fullestTile = std::max(fullestTile, trianglesInTile(buffers.workers, tile));
   for (WorkerBins& bins : buffers.workers) bins.tile.triangles.reserve(fullestTile), bins.tile.blended.reserve(fullestTile);
-  const bool keepDepth = frame.volume.placed && !triangleIds && !fragmentCounts;
+  const bool keepDepth = (frame.volume.placed || output.keepDepth) && !triangleIds && !fragmentCounts && !normals;
   if (keepDepth) buffers.depth.assign(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 1.0f);
   forEachTile(pool, grid, [&](int worker, int tile, const TileRect& r) {
     if (trianglesInTile(buffers.workers, tile) == 0 && buffers.lines.empty()) return;
@@ -432,9 +460,9 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
         }
       return;
     }
-    shadeIn(scene, frame, maps, scratch, scratch.id, r, r, color);
+    shadeIn(scene, frame, maps, scratch, scratch.id, r, r, color, normals);
     drawLines(frame, buffers.lines, r, painter ? nullptr : scratch.depth, kTileSize, color);  // the painter has no depth to test
-    if (!scratch.blended.empty()) blendTile(scene, frame, maps, layout, scratch, r, buffers.fragments, color);
+    if (!scratch.blended.empty() && !normals) blendTile(scene, frame, maps, layout, scratch, r, buffers.fragments, color);
     if (keepDepth)
       for (int py = r.y0; py <= r.y1; ++py)
         std::copy_n(scratch.depth + (py - r.y0) * kTileSize, r.x1 - r.x0 + 1,

@@ -33,18 +33,29 @@ void prepareFrame(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, c
 void shadowPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const FrameInputs& frame, const FrameLight& light, int face,
                 ShadowMaps& maps);
 
+// What a lit pass writes besides the image, or in its place.
+struct LitPassOutput {
+  // Which triangle each pixel keeps (Renderer::visibleTriangles; width ×
+  // height, bottom row first), in place of the colour buffer, which is left alone.
+  std::vector<std::uint32_t>* triangleIds = nullptr;
+  // The fragments each pixel receives before any test (Renderer::fragmentCounts;
+  // width × height, bottom row first, zeroed by the caller), and nothing else.
+  std::vector<std::uint32_t>* fragmentCounts = nullptr;
+  // The normals stage (Renderer::normals, a frame from pipeline/stage_frames.h's
+  // normalsFrame): (N, 1) in place of each opaque pixel's colour, in a colour
+  // buffer the caller cleared to 0; no lines, points or blended triangles.
+  bool normals = false;
+  // FrameBuffers::depth holds the z-buffer after the frame (opaque triangles,
+  // then lines and points); volume ray casting keeps it too.
+  bool keepDepth = false;
+};
+
 // Pass 2: z-buffer and shading into the linear colour buffer `color`
 // (cleared by the caller to the background). Only the fragment that ends up in a pixel is shaded: a
 // tile's triangles are first resolved with the z-buffer (LESS, in triangle
 // order) to the last one that passed the test at each pixel, the one whose
 // colour the pixel keeps; shading is a function of triangle and pixel alone.
-// With triangleIds (width × height, bottom row first), the pass writes
-// which triangle each pixel keeps instead (Renderer::visibleTriangles) and
-// leaves the colour buffer alone.
-// With fragmentCounts (width × height, bottom row first, zeroed by the
-// caller), the pass counts the fragments each pixel receives before any
-// test (Renderer::fragmentCounts) and does nothing else.
 void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, ColorBuffer& color,
-             std::vector<std::uint32_t>* triangleIds = nullptr, std::vector<std::uint32_t>* fragmentCounts = nullptr);
+             const LitPassOutput& output = {});
 
 }  // namespace facet::cpu

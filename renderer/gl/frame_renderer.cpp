@@ -14,6 +14,7 @@
 #include "common/error.h"
 #include "gl/shader_variant.h"
 #include "pipeline/antialiasing.h"
+#include "pipeline/stage_frames.h"
 
 namespace facet::gl {
 namespace {
@@ -55,8 +56,8 @@ using Clock = std::chrono::steady_clock;
 // visits adds one or two; past this the cache starts over.
 constexpr std::size_t kMaxLitPrograms = 32;
 
-std::string litProgramKey(const FrameInputs& frame, DrawVariant variant) {
-  return std::to_string(static_cast<int>(frame.shading)) + "\n" + litShaderDefines(frame, variant);
+std::string litProgramKey(const FrameInputs& frame, DrawVariant variant, LitOutput output) {
+  return std::to_string(static_cast<int>(frame.shading)) + "\n" + litShaderDefines(frame, variant, output);
 }
 
 double millisecondsSince(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
@@ -78,14 +79,13 @@ void GlFrameRenderer::uploadScene(const Scene& scene) {
   checkError("scene upload");
 }
 
-std::vector<PassTiming> GlFrameRenderer::drawFrame(const Scene& scene, const FrameInputs& frame) {
+void GlFrameRenderer::beginFrame(const Scene& scene, const FrameInputs& frame, LitOutput output, std::vector<PassTiming>& timings) {
   facet::refuseCpuOnlyFrame(frame);
   if (frame.hsr == HiddenSurface::Painter) painters_.prepare(gl_, scene, frame, frame.paintersOrder);
   if (!frame.transparentOrder.empty()) transparent_.prepare(gl_, scene, frame, frame.transparentOrder);
-  std::vector<PassTiming> timings;
   gl_.glFinish();
   Clock::time_point start = Clock::now();
-  if (preparePrograms(frame)) {
+  if (preparePrograms(frame, output)) {
     timings.push_back({"shader compile + link", millisecondsSince(start)});
     start = Clock::now();
   }
@@ -115,8 +115,13 @@ std::vector<PassTiming> GlFrameRenderer::drawFrame(const Scene& scene, const Fra
     checkError("the shadow pass");
     mapsDrawn_ = ShadowPassKey(scene, frame);
     timings.push_back({shadowPassName(frame, false), millisecondsSince(start)});
-    start = Clock::now();
   }
+}
+
+std::vector<PassTiming> GlFrameRenderer::drawFrame(const Scene& scene, const FrameInputs& frame) {
+  std::vector<PassTiming> timings;
+  beginFrame(scene, frame, LitOutput::Color, timings);
+  Clock::time_point start = Clock::now();
   if (frame.samples.empty()) {
     litPass(frame);
     gl_.glFinish();
@@ -153,6 +158,49 @@ Image GlFrameRenderer::readImage() const {
   gl_.glReadPixels(0, 0, image.width(), image.height(), GL_RGBA, GL_UNSIGNED_BYTE, image.data());
   checkError("the read-back");
   return image;
+}
+
+std::vector<float> GlFrameRenderer::drawDepth(const Scene& scene, const FrameInputs& frame) {
+  FrameInputs centred = frame;  // one pass at the pixel centres: the z-buffer the last sample left is not the frame's
+  centred.samples.clear();
+  drawFrame(scene, centred);
+  std::vector<float> depth(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height));
+  gl_.glBindFramebuffer(GL_READ_FRAMEBUFFER, target_.framebuffer());
+  gl_.glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  gl_.glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  gl_.glReadPixels(0, 0, frame.width, frame.height, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());  // bottom row first, as facet stores rows
+  checkError("the depth read-back");
+  return depth;
+}
+
+ShadowMapTexels GlFrameRenderer::readShadowMaps(const Scene& scene, const FrameInputs& frame) {
+  if (frame.shadowLayerCount == 0) return {};
+  std::vector<PassTiming> timings;
+  beginFrame(scene, frame, LitOutput::Color, timings);
+  ShadowMapTexels maps{frame.shadows.mapSize, frame.shadowLayerCount, {}};
+  const std::size_t perLayer = static_cast<std::size_t>(maps.size) * static_cast<std::size_t>(maps.size);
+  maps.texels.resize(perLayer * static_cast<std::size_t>(maps.layers));
+  gl_.glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  gl_.glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  for (int layer = 0; layer < maps.layers; ++layer)  // a layer at a time: the byte count of one call is a GLsizei
+    gl_.glGetTextureSubImage(shadowMaps_.texture(), 0, 0, 0, layer, maps.size, maps.size, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
+                             static_cast<GLsizei>(perLayer * sizeof(float)), maps.texels.data() + perLayer * static_cast<std::size_t>(layer));
+  checkError("the shadow-map read-back");
+  return maps;
+}
+
+std::vector<glm::vec4> GlFrameRenderer::drawNormals(const Scene& scene, const FrameInputs& frame) {
+  const FrameInputs drawn = normalsFrame(frame);
+  std::vector<PassTiming> timings;
+  beginFrame(scene, drawn, LitOutput::Normal, timings);  // no shadow pass: the frame has no lights
+  litPass(drawn, LitOutput::Normal);
+  std::vector<glm::vec4> normals(static_cast<std::size_t>(drawn.width) * static_cast<std::size_t>(drawn.height));
+  gl_.glBindFramebuffer(GL_READ_FRAMEBUFFER, target_.framebuffer());
+  gl_.glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  gl_.glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  gl_.glReadPixels(0, 0, drawn.width, drawn.height, GL_RGBA, GL_FLOAT, normals.data());
+  checkError("the normals pass");
+  return normals;
 }
 
 std::vector<std::uint32_t> GlFrameRenderer::drawTriangleIds(const Scene& scene, const FrameInputs& frame) {
@@ -293,23 +341,25 @@ void GlFrameRenderer::setCulling(bool cull) {
   else gl_.glDisable(GL_CULL_FACE);
 }
 
-bool GlFrameRenderer::preparePrograms(const FrameInputs& frame) {
+bool GlFrameRenderer::preparePrograms(const FrameInputs& frame, LitOutput output) {
   bool compiled = false;
   const bool shadows = frame.shadowLayerCount > 0;
   bool needed[DrawVariant::kCount] = {};  // some draw of the frame needs the variant
   for (const FrameInstance& instance : frame.instances)
-    if (scene_.mesh(instance.mesh).indexCount > 0) needed[drawVariant(frame, instance).index()] = true;
+    if (scene_.mesh(instance.mesh).indexCount > 0 &&
+        (output == LitOutput::Color || !frame.materials[static_cast<std::size_t>(instance.material)].blended))  // normals: opaque draws only
+      needed[drawVariant(frame, instance).index()] = true;
   if (litPrograms_.size() + static_cast<std::size_t>(std::count(std::begin(needed), std::end(needed), true)) > kMaxLitPrograms) litPrograms_.clear();
   for (int v = 0; v < DrawVariant::kCount; ++v) {
     if (!needed[v]) continue;
     const DrawVariant variant = DrawVariant::of(v);
-    const std::string key = litProgramKey(frame, variant);
+    const std::string key = litProgramKey(frame, variant, output);
     if (litPrograms_.count(key)) continue;
     if (frame.shading == ShadingMode::Flat && getInteger(gl_, GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS) < kMeshStorageBuffers)
       throw Error("OpenGL: flat shading reads the mesh from " + std::to_string(kMeshStorageBuffers) +
                   " storage buffers in the vertex shader; this driver allows " + std::to_string(getInteger(gl_, GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS)));
     const auto& stages = kLitStages[static_cast<std::size_t>(frame.shading)];
-    ShaderProgram program = buildProgram(gl_, {stages[0], stages[1]}, litShaderDefines(frame, variant));
+    ShaderProgram program = buildProgram(gl_, {stages[0], stages[1]}, litShaderDefines(frame, variant, output));
     const auto at = [&](const char* name) { return uniformLocation(gl_, program, name); };
     litPrograms_.emplace(key, LitProgram{.clipFromModel = at("clipFromModel"),
                                          .worldFromModel = at("worldFromModel"),
@@ -405,7 +455,7 @@ void GlFrameRenderer::shadowPass(const FrameInputs& frame) {
   }
 }
 
-void GlFrameRenderer::litPass(const FrameInputs& frame) {
+void GlFrameRenderer::litPass(const FrameInputs& frame, LitOutput output) {
   target_.resize(gl_, frame.width, frame.height);
   gl_.glBindFramebuffer(GL_FRAMEBUFFER, target_.framebuffer());
   gl_.glViewport(0, 0, frame.width, frame.height);
@@ -414,18 +464,24 @@ void GlFrameRenderer::litPass(const FrameInputs& frame) {
   gl_.glClearNamedFramebufferfv(target_.framebuffer(), GL_DEPTH, 0, &farDepth);
 
   // The background over every pixel, through the same encoding as lit pixels; depth stays 1.
+  // The normals stage: 0 where no triangle is kept.
   gl_.glDisable(GL_DEPTH_TEST);
   gl_.glDisable(GL_CULL_FACE);
   gl_.glBindTextureUnit(kEnvironmentUnit, scene_.environment());
   gl_.glBindTextureUnit(kBumpMapUnit, frame.bump.map ? scene_.bumpMap() : 0);
-  gl_.glUseProgram(backgroundProgram_->id());
-  gl_.glProgramUniform2f(backgroundProgram_->id(), backgroundViewportSize_, static_cast<float>(frame.width),
-                         static_cast<float>(frame.height));
-  gl_.glProgramUniform1f(backgroundProgram_->id(), backgroundAlpha_, frame.backgroundAlpha);
-  gl_.glProgramUniform1i(backgroundProgram_->id(), backgroundPremultiplied_, frame.blending == Blending::Premultiplied ? 1 : 0);
-  gl_.glProgramUniform2f(backgroundProgram_->id(), backgroundSampleOffset_, frame.sampleOffset.x, frame.sampleOffset.y);
-  gl_.glBindVertexArray(emptyVertexArray_.id());
-  gl_.glDrawArrays(GL_TRIANGLES, 0, 3);
+  if (output == LitOutput::Normal) {
+    const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    gl_.glClearNamedFramebufferfv(target_.framebuffer(), GL_COLOR, 0, none);
+  } else {
+    gl_.glUseProgram(backgroundProgram_->id());
+    gl_.glProgramUniform2f(backgroundProgram_->id(), backgroundViewportSize_, static_cast<float>(frame.width),
+                           static_cast<float>(frame.height));
+    gl_.glProgramUniform1f(backgroundProgram_->id(), backgroundAlpha_, frame.backgroundAlpha);
+    gl_.glProgramUniform1i(backgroundProgram_->id(), backgroundPremultiplied_, frame.blending == Blending::Premultiplied ? 1 : 0);
+    gl_.glProgramUniform2f(backgroundProgram_->id(), backgroundSampleOffset_, frame.sampleOffset.x, frame.sampleOffset.y);
+    gl_.glBindVertexArray(emptyVertexArray_.id());
+    gl_.glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
 
   // The painter's algorithm: no depth test and no depth writes, triangles in its order (PIPELINE.md, section 6).
   const bool painter = frame.hsr == HiddenSurface::Painter;
@@ -435,7 +491,7 @@ void GlFrameRenderer::litPass(const FrameInputs& frame) {
   gl_.glCullFace(GL_BACK);
   gl_.glBindTextureUnit(kShadowMapsUnit, frame.shadowLayerCount > 0 ? shadowMaps_.texture() : 0);
   const LitProgram* programs[DrawVariant::kCount];
-  for (int v = 0; v < DrawVariant::kCount; ++v) programs[v] = litProgram(frame, DrawVariant::of(v));
+  for (int v = 0; v < DrawVariant::kCount; ++v) programs[v] = litProgram(frame, DrawVariant::of(v), output);
   GLuint current = 0;
   const auto draw = [&](const FrameInstance& instance, const PainterRun* run) {
     if (scene_.mesh(instance.mesh).indexCount == 0) return;
@@ -450,6 +506,7 @@ void GlFrameRenderer::litPass(const FrameInputs& frame) {
   else
     for (const FrameInstance& instance : frame.instances)
       if (!frame.materials[static_cast<std::size_t>(instance.material)].blended) draw(instance, nullptr);
+  if (output == LitOutput::Normal) return;  // lines and points have no normal, blended surfaces write no depth
   drawLines(frame);
   if (frame.transparentOrder.empty()) return;
   // Transparency (PIPELINE.md, section 7): the blended triangles back to front, depth-tested, no depth writes;
@@ -517,8 +574,8 @@ void GlFrameRenderer::resolvePass(const FrameInputs& frame, GLuint source, bool 
   gl_.glBindTextureUnit(kResolveUnit, 0);  // the colour buffer is the next frame's target
 }
 
-const GlFrameRenderer::LitProgram* GlFrameRenderer::litProgram(const FrameInputs& frame, DrawVariant variant) const {
-  const auto found = litPrograms_.find(litProgramKey(frame, variant));
+const GlFrameRenderer::LitProgram* GlFrameRenderer::litProgram(const FrameInputs& frame, DrawVariant variant, LitOutput output) const {
+  const auto found = litPrograms_.find(litProgramKey(frame, variant, output));
   return found == litPrograms_.end() ? nullptr : &found->second;
 }
 

@@ -57,6 +57,17 @@ class GlFrameRenderer {
   // a 32-bit float (exact to 2^24).
   std::vector<std::uint32_t> drawFragmentCounts(const FrameInputs& frame);
 
+  // The lit pass's z-buffer after the frame drawn at the pixel centres
+  // (Renderer::depthBuffer): its DEPTH_COMPONENT32F attachment read as float.
+  std::vector<float> drawDepth(const Scene& scene, const FrameInputs& frame);
+
+  // Pass 1's depth array texture (Renderer::shadowMaps), drawn unless it holds this frame's maps already.
+  ShadowMapTexels readShadowMaps(const Scene& scene, const FrameInputs& frame);
+
+  // The normals stage (Renderer::normals): normalsFrame's lit pass with the
+  // FACET_NORMAL_OUTPUT programs, opaque triangles only, read back as float.
+  std::vector<glm::vec4> drawNormals(const Scene& scene, const FrameInputs& frame);
+
   // The framebuffer drawFrame resolves into (colour attachment 0, RGBA8), for a viewer to blit from.
   GLuint framebuffer() const { return resolved_.framebuffer(); }
 
@@ -85,10 +96,14 @@ class GlFrameRenderer {
     ShaderProgram program;
   };
 
+  // What every pass of a frame starts with: the painter's and the blended
+  // triangles' index buffers, the programs, the uniform blocks, the GL
+  // conventions, and pass 1 unless its maps are kept; its timings appended.
+  void beginFrame(const Scene& scene, const FrameInputs& frame, LitOutput output, std::vector<PassTiming>& timings);
   // Compiles what the frame needs and has not been compiled yet; true when it compiled anything.
-  bool preparePrograms(const FrameInputs& frame);
-  // The lit program of `frame` for draws of `variant`; null when not prepared.
-  const LitProgram* litProgram(const FrameInputs& frame, DrawVariant variant) const;
+  bool preparePrograms(const FrameInputs& frame, LitOutput output);
+  // The lit program of `frame` for draws of `variant` writing `output`; null when not prepared.
+  const LitProgram* litProgram(const FrameInputs& frame, DrawVariant variant, LitOutput output) const;
   // What the instance's draw reads: a base colour texture, vertex colours.
   DrawVariant drawVariant(const FrameInputs& frame, const FrameInstance& instance) const;
   // What the shadow pass and the triangle-id pass draw `instance` with: only an alpha mask changes them.
@@ -105,7 +120,9 @@ class GlFrameRenderer {
   // Back-face culling as the instance asks (FrameInstance::cullBackFaces).
   void setCulling(bool cull);
   void shadowPass(const FrameInputs& frame);
-  void litPass(const FrameInputs& frame);
+  // The background, the opaque triangles, lines and points, then the blended
+  // triangles; LitOutput::Normal: the opaque triangles alone, over 0.
+  void litPass(const FrameInputs& frame, LitOutput output = LitOutput::Color);
   // The instance's triangles, or those of one painter's run (null: all, in the mesh's order).
   void drawInstance(const LitProgram& lit, const FrameInputs& frame, const FrameInstance& instance, bool flat, const PainterRun* run = nullptr);
   // The mesh's triangles through its vertex array, or one painter's run of them.

@@ -59,6 +59,7 @@ namespace facet::gl {
   X(PFNGLGETSHADERINFOLOGPROC, glGetShaderInfoLog)                            \
   X(PFNGLGETSHADERIVPROC, glGetShaderiv)                                      \
   X(PFNGLGETSTRINGPROC, glGetString)                                          \
+  X(PFNGLGETTEXTURESUBIMAGEPROC, glGetTextureSubImage)                        \
   X(PFNGLGETUNIFORMBLOCKINDEXPROC, glGetUniformBlockIndex)                    \
   X(PFNGLGETUNIFORMINDICESPROC, glGetUniformIndices)                          \
   X(PFNGLGETUNIFORMLOCATIONPROC, glGetUniformLocation)                        \

@@ -43,6 +43,24 @@ class GlFrames {
     return frameRenderer_.drawFragmentCounts(frame);
   }
 
+  std::vector<float> depthBuffer(const Scene& scene, const FrameInputs& frame) {
+    check_(scene, frame);
+    upload(scene);
+    return frameRenderer_.drawDepth(scene, frame);
+  }
+
+  ShadowMapTexels shadowMaps(const Scene& scene, const FrameInputs& frame) {
+    check_(scene, frame);
+    upload(scene);
+    return frameRenderer_.readShadowMaps(scene, frame);
+  }
+
+  std::vector<glm::vec4> normals(const Scene& scene, const FrameInputs& frame) {
+    check_(scene, frame);
+    upload(scene);
+    return frameRenderer_.drawNormals(scene, frame);
+  }
+
   gl::GlFrameRenderer& frameRenderer() { return frameRenderer_; }
   const gl::GlFrameRenderer& frameRenderer() const { return frameRenderer_; }
 
@@ -94,6 +112,21 @@ class HeadlessGlRenderer final : public Renderer {
     return frames_->fragmentCounts(scene, frame);
   }
 
+  std::vector<float> depthBuffer(const Scene& scene, const FrameInputs& frame) override {
+    context_->makeCurrent();
+    return frames_->depthBuffer(scene, frame);
+  }
+
+  ShadowMapTexels shadowMaps(const Scene& scene, const FrameInputs& frame) override {
+    context_->makeCurrent();
+    return frames_->shadowMaps(scene, frame);
+  }
+
+  std::vector<glm::vec4> normals(const Scene& scene, const FrameInputs& frame) override {
+    context_->makeCurrent();
+    return frames_->normals(scene, frame);
+  }
+
  private:
   std::unique_ptr<gl::HeadlessContext> context_;
   std::unique_ptr<GlFrames> frames_;
@@ -109,6 +142,9 @@ class CurrentContextGlRenderer final : public WindowGlRenderer {
     return frames_.visibleTriangles(scene, frame);
   }
   std::vector<std::uint32_t> fragmentCounts(const Scene& scene, const FrameInputs& frame) override { return frames_.fragmentCounts(scene, frame); }
+  std::vector<float> depthBuffer(const Scene& scene, const FrameInputs& frame) override { return frames_.depthBuffer(scene, frame); }
+  ShadowMapTexels shadowMaps(const Scene& scene, const FrameInputs& frame) override { return frames_.shadowMaps(scene, frame); }
+  std::vector<glm::vec4> normals(const Scene& scene, const FrameInputs& frame) override { return frames_.normals(scene, frame); }
   unsigned framebuffer() const override { return frames_.frameRenderer().framebuffer(); }
   const std::string& rendererName() const override { return frames_.frameRenderer().rendererName(); }
 

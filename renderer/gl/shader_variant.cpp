@@ -33,12 +33,13 @@ std::string drawVariantDefines(DrawVariant variant) {
 
 std::string fogDefine(const FrameInputs& frame) { return "#define FACET_FOG " + std::to_string(static_cast<int>(frame.fog.mode)) + "\n"; }
 
-std::string litShaderDefines(const FrameInputs& frame, DrawVariant variant) {
+std::string litShaderDefines(const FrameInputs& frame, DrawVariant variant, LitOutput output) {
   // A blended draw reads the colour buffer in its fragment shader (lit_output.glsl); the
   // directive comes first, before any declaration, and only the fragment stage uses it.
   std::string d = variant.blended ? "#extension GL_EXT_shader_framebuffer_fetch : enable\n" : "";
   d += drawVariantDefines(variant);
   if (variant.blended) d += "#define FACET_PREMULTIPLIED " + std::string(frame.blending == Blending::Premultiplied ? "1" : "0") + "\n";
+  d += "#define FACET_NORMAL_OUTPUT " + std::string(output == LitOutput::Normal ? "1" : "0") + "\n";
   d += "#define FACET_ENVIRONMENT " + std::string(frame.environment.map ? "1" : "0") + "\n";
   d += "#define FACET_PBR " + std::string(frame.shading == ShadingMode::Pbr ? "1" : "0") + "\n";
   d += fogDefine(frame);

@@ -43,9 +43,15 @@ std::string drawVariantDefines(DrawVariant variant);
 // "#define FACET_FOG m": the frame's fog mode (fog.glsl), for the lit and the line programs.
 std::string fogDefine(const FrameInputs& frame);
 
+// What a lit program writes: the fragment's colour, or the normal it is
+// shaded with (FACET_NORMAL_OUTPUT: the normals stage, renderer/PIPELINE.md
+// section 6, "Stages"; never for a blended draw).
+enum class LitOutput { Color, Normal };
+
 // The #define lines (one per macro, each ending in a newline) of the lit
-// programs for `frame`, for draws of `variant`. Equal strings mean the same
-// program, so the text is also the key of the renderer's program cache.
-std::string litShaderDefines(const FrameInputs& frame, DrawVariant variant);
+// programs for `frame`, for draws of `variant`, writing `output`. Equal
+// strings mean the same program, so the text is also the key of the
+// renderer's program cache.
+std::string litShaderDefines(const FrameInputs& frame, DrawVariant variant, LitOutput output = LitOutput::Color);
 
 }  // namespace facet::gl

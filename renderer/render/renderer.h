@@ -5,6 +5,9 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec4.hpp>
+
+#include "common/error.h"
 #include "image/image.h"
 #include "pipeline/frame_inputs.h"
 #include "scene/scene.h"
@@ -14,6 +17,15 @@ namespace facet {
 struct PassTiming {
   std::string pass;       // "shadow pass (light 0)", "lit pass", "read-back", ...
   double milliseconds = 0;
+};
+
+// Pass 1's output of a frame (Renderer::shadowMaps): every shadow map, one
+// layer per light face in FrameLight::shadowLayer order (the lights in
+// order; a point light's faces +x, -x, +y, -y, +z, -z).
+struct ShadowMapTexels {
+  int size = 0;               // S: each layer is S×S texels
+  int layers = 0;             // FrameInputs::shadowLayerCount
+  std::vector<float> texels;  // layer after layer, each bottom row first; window z, 1 where nothing was drawn
 };
 
 struct RenderResult {
@@ -42,6 +54,28 @@ class Renderer {
   // rasterizer, before any depth or alpha test, after clipping and culling.
   // width × height counts, bottom row first.
   virtual std::vector<std::uint32_t> fragmentCounts(const Scene& scene, const FrameInputs& frame) = 0;
+
+  // The stages of a frame (renderer/PIPELINE.md, section 6, "Stages"; the
+  // viewer's and `render --output-stage`'s pictures of them come from
+  // render/stage.h). A backend that does not draw one throws facet::Error
+  // naming the stage and itself: the ray tracer and the readable reference
+  // keep these defaults.
+  //
+  // The lit pass's z-buffer after the frame, at the pixel centres (the
+  // samples of anti-aliasing are not drawn): width × height window z, bottom
+  // row first, the value the LESS test kept (lines and points included), 1
+  // where nothing was drawn.
+  virtual std::vector<float> depthBuffer(const Scene& /*scene*/, const FrameInputs& /*frame*/) { throw notDrawn("depth"); }
+  // The frame's shadow maps as pass 1 draws them (the maps a renderer keeps
+  // across frames, pipeline/shadow_pass_key.h, when they are this frame's).
+  virtual ShadowMapTexels shadowMaps(const Scene& /*scene*/, const FrameInputs& /*frame*/) { throw notDrawn("shadow-map"); }
+  // The normal each pixel is shaded with (renderer/PIPELINE.md, section 6,
+  // "Stages"), at the pixel centres: width × height (N, 1), world space,
+  // bottom row first; (0, 0, 0, 0) where no opaque triangle was kept.
+  virtual std::vector<glm::vec4> normals(const Scene& /*scene*/, const FrameInputs& /*frame*/) { throw notDrawn("normals"); }
+
+ protected:
+  Error notDrawn(const std::string& stage) const { return Error("the " + stage + " stage is not drawn by " + description()); }
 };
 
 }  // namespace facet
