@@ -9,6 +9,11 @@
 // same bytes as the CPU's z-buffer, and the two backends' depth complexity
 // (Renderer::fragmentCounts) must be equal at every pixel. A case may allow a measured difference only by naming it:
 //   "allow": {"maxDifference": LEVELS, "maxPixels": N, "reason": "why"}
+// A case may name a stage of the frame (render/stage.h) instead of the image:
+//   "stage": "depth" | "shadow-map" | "normals" | "light-N" | "overdraw"
+// whose images are compared as the frame's are, and whose data (the window z
+// of the z-buffer and of the shadow maps, the normals' floats) must be equal
+// bit for bit.
 //
 //   facet_agreement --cases DIR --golden DIR --out DIR [--update-goldens] [--context osmesa|egl]
 //
@@ -20,6 +25,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -43,6 +49,7 @@
 #include "scene/environment_map.h"
 #include "scene/load_scene.h"
 #include "pipeline/scene_additions.h"
+#include "render/stage.h"
 #include "settings/settings_json.h"
 
 namespace fs = std::filesystem;
@@ -65,6 +72,7 @@ struct Case {
   std::string note;
   RenderSettings settings;
   std::optional<Allowance> allow;
+  Stage stage;  // the image unless the case names another
 };
 
 Case readCase(const fs::path& file) {
@@ -110,8 +118,17 @@ Case readCase(const fs::path& file) {
       throw Error(file.string() + ": 'allow' needs a reason, maxDifference in 1..255 and maxPixels of at least 1");
     c.allow = allow;
   }
+  if (j.contains("stage")) {
+    if (!j["stage"].is_string()) throw Error(file.string() + ": 'stage': expected a string such as \"depth\"");
+    try {
+      c.stage = parseStage(j["stage"].get<std::string>());
+    } catch (const Error& e) {
+      throw Error(file.string() + ": 'stage': " + e.what());
+    }
+  }
   for (const auto& [key, value] : j.items())
-    if (key != "scene" && key != "note" && key != "settings" && key != "settingsFile" && key != "allow") throw Error(file.string() + ": '" + key + "': unknown key");
+    if (key != "scene" && key != "note" && key != "settings" && key != "settingsFile" && key != "allow" && key != "stage")
+      throw Error(file.string() + ": '" + key + "': unknown key");
   return c;
 }
 
@@ -157,6 +174,28 @@ long triangleMismatches(const std::vector<std::uint32_t>& a, const std::vector<s
 
 bool passes(const ComparedFiles& compared) { return compared.diffCase.verdict == Verdict::Pass; }
 
+// Values whose bits differ (every value when the sizes differ).
+template <class T>
+long bitMismatches(const std::vector<T>& a, const std::vector<T>& b) {
+  if (a.size() != b.size()) return static_cast<long>(std::max(a.size(), b.size()));
+  long count = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) count += std::memcmp(&a[i], &b[i], sizeof(T)) != 0;
+  return count;
+}
+
+// The stage's data from both backends, bit for bit: window z, shadow-map texels, normals. 0 for the other stages.
+long stageDataMismatches(Stage stage, Renderer& gl, Renderer& cpu, const Scene& scene, const FrameInputs& frame) {
+  switch (stage.kind) {
+    case StageKind::Depth: return bitMismatches(gl.depthBuffer(scene, frame), cpu.depthBuffer(scene, frame));
+    case StageKind::Normals: return bitMismatches(gl.normals(scene, frame), cpu.normals(scene, frame));
+    case StageKind::ShadowMap: {
+      const ShadowMapTexels a = gl.shadowMaps(scene, frame), b = cpu.shadowMaps(scene, frame);
+      return a.size != b.size || a.layers != b.layers ? static_cast<long>(std::max(a.texels.size(), b.texels.size()) + 1) : bitMismatches(a.texels, b.texels);
+    }
+    default: return 0;
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -199,12 +238,13 @@ int main(int argc, char** argv) {
       const FrameInputs frame = buildFrameInputs(scene, c.settings);
       const DiffThresholds thresholds = thresholdsOf(c);
       const auto t0 = std::chrono::steady_clock::now();
-      const Image glImage = gl->render(scene, frame).image;
+      const Image glImage = renderStage(*gl, scene, frame, c.stage).image;
       const auto t1 = std::chrono::steady_clock::now();
-      const Image cpuImage = cpu->render(scene, frame).image;
+      const Image cpuImage = renderStage(*cpu, scene, frame, c.stage).image;
       const auto t2 = std::chrono::steady_clock::now();
       long covered = 0;
       const long mismatches = triangleMismatches(gl->visibleTriangles(scene, frame), cpu->visibleTriangles(scene, frame), covered);
+      const long dataMismatches = stageDataMismatches(c.stage, *gl, *cpu, scene, frame);
       if (covered == 0) {  // lines, points and blended surfaces keep no triangle: what they drew is what differs from the frame without them
         FrameInputs empty = frame;
         empty.instances.clear();
@@ -244,11 +284,13 @@ int main(int argc, char** argv) {
         RenderSettings rows = c.settings;
         rows.hsr = HiddenSurface::Scanline;
         const FrameInputs rowFrame = buildFrameInputs(scene, rows);
-        const Image rowImage = cpu->render(scene, rowFrame).image;
+        const Image rowImage = renderStage(*cpu, scene, rowFrame, c.stage).image;
         long unused = 0;
         long differing = triangleMismatches(cpu->visibleTriangles(scene, rowFrame), cpu->visibleTriangles(scene, frame), unused);
-        for (int y = 0; y < cpuImage.height(); ++y)
-          for (int x = 0; x < cpuImage.width(); ++x) differing += !(rowImage.at(x, y) == cpuImage.at(x, y));
+        if (rowImage.width() != cpuImage.width() || rowImage.height() != cpuImage.height()) differing += 1;
+        else
+          for (int y = 0; y < cpuImage.height(); ++y)
+            for (int x = 0; x < cpuImage.width(); ++x) differing += !(rowImage.at(x, y) == cpuImage.at(x, y));
         scanlineOk = differing == 0;
         scanline = scanlineOk ? "same" : std::to_string(differing);
         ++scanlineCases;
@@ -263,7 +305,8 @@ int main(int argc, char** argv) {
         countsEqual += countMismatches == 0 ? 1 : 0;
       }
 
-      const bool ok = mismatches == 0 && covered > 0 && d.status != DiffStatus::Fail && goldenOk && scanlineOk && countMismatches == 0;
+      const bool ok =
+          mismatches == 0 && covered > 0 && d.status != DiffStatus::Fail && goldenOk && scanlineOk && countMismatches == 0 && dataMismatches == 0;
       (ok ? passed : failed) += 1;
       identical += d.differingPixels == 0 ? 1 : 0;
       coverageIdentical += mismatches == 0 ? 1 : 0;
@@ -273,11 +316,15 @@ int main(int argc, char** argv) {
       }
       const double msGl = std::chrono::duration<double, std::milli>(t1 - t0).count();
       const double msCpu = std::chrono::duration<double, std::milli>(t2 - t1).count();
-      const std::string size = std::to_string(frame.width) + "x" + std::to_string(frame.height);
+      const std::string size = std::to_string(cpuImage.width()) + "x" + std::to_string(cpuImage.height());
       std::printf("%-34s %9s %9ld %9lld %5d %7s %8s %4.0f/%-4.0f %s%s\n", c.name.c_str(), size.c_str(), mismatches,
                   static_cast<long long>(d.differingPixels), d.maxDifference, goldenVerdict.c_str(), scanline.c_str(), msGl, msCpu, ok ? "pass" : "FAIL",
                   covered == 0 ? " (nothing drawn)"
                   : countMismatches ? (" (fragment counts differ at " + std::to_string(countMismatches) + " pixels)").c_str()
+                  : dataMismatches  ? (" (" + stageName(c.stage) + ": " + std::to_string(dataMismatches) + " values differ in their bits)").c_str()
+                  : c.stage.kind == StageKind::Depth || c.stage.kind == StageKind::ShadowMap || c.stage.kind == StageKind::Normals
+                      ? (" (stage " + stageName(c.stage) + ", its data bit for bit)").c_str()
+                  : c.stage.kind != StageKind::Image ? (" (stage " + stageName(c.stage) + ")").c_str()
                                     : (c.allow ? " (allowed: " + c.allow->reason + ")" : std::string()).c_str());
 
       const ComparedFiles pair = compareFiles(c.name, cpuPath, glPath, thresholds);

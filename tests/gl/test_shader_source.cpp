@@ -121,6 +121,26 @@ TEST_CASE("every shader file is embedded, and every program of the backend compi
   }
 }
 
+TEST_CASE("the normals stage's lit programs compile and link: flat, Phong and pbr, each draw variant that is not blended") {
+  // FACET_NORMAL_OUTPUT (renderer/PIPELINE.md, section 6, "Stages"); Gouraud frames are drawn as Phong ones.
+  test::GlHarness harness;
+  const Scene scene = makeDefaultScene();
+  std::vector<int> variants = {0, DrawVariant::kCount - 1 - DrawVariant{.blended = true}.index()};  // none, and every one but blending
+  for (int bit = 1; bit < DrawVariant::kCount / 2; bit <<= 1) variants.push_back(bit);
+  for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Phong, ShadingMode::Pbr}) {
+    RenderSettings settings;
+    settings.shading = mode;
+    const FrameInputs frame = buildFrameInputs(scene, settings);
+    const std::string stages = mode == ShadingMode::Flat ? "lit_flat" : "lit_phong";
+    for (const int variant : variants) {
+      const std::string defines = litShaderDefines(frame, DrawVariant::of(variant), LitOutput::Normal);
+      INFO(stages, "\n", defines);
+      CHECK(defines.find("#define FACET_NORMAL_OUTPUT 1\n") != std::string::npos);
+      CHECK_NOTHROW(buildProgram(harness.gl, {stages + ".vert", stages + ".frag"}, defines));
+    }
+  }
+}
+
 TEST_CASE("a shader that does not compile: facet::Error names the file and line, with the driver's log") {
   test::GlHarness harness;
   const std::map<std::string, std::string, std::less<>> files = {
