@@ -67,16 +67,10 @@ PixelProbe probePixel(const Scene& scene, const FrameInputs& frame, int x, int y
   if (!probe.covered) return probe;
 
   // The triangle: instances in order, each mesh's triangles in order.
-  std::uint32_t first = 0;
-  for (std::size_t i = 0; i < frame.instances.size(); ++i) {
-    const auto count = static_cast<std::uint32_t>(scene.meshes[static_cast<std::size_t>(frame.instances[i].mesh)].indices.size() / 3);
-    if (probe.triangle - 1 < first + count) {
-      probe.instance = static_cast<int>(i);
-      probe.meshTriangle = probe.triangle - 1 - first;
-      break;
-    }
-    first += count;
-  }
+  const std::vector<std::size_t> first = firstTriangles(scene, frame);
+  const std::size_t instanceIndex = instanceOfTriangle(first, probe.triangle - 1);
+  probe.instance = static_cast<int>(instanceIndex);
+  probe.meshTriangle = static_cast<std::uint32_t>(probe.triangle - 1 - first[instanceIndex]);
   const FrameInstance& instance = frame.instances[static_cast<std::size_t>(probe.instance)];
   const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
   const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];

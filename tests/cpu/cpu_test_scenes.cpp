@@ -23,6 +23,15 @@ Scene groundScene(int subdivisions, glm::vec3 baseColor) {
   return scene;
 }
 
+Scene occluderScene() {
+  Scene scene = groundScene(8, {0.8f, 0.8f, 0.8f});
+  Mesh cube = makeCube();
+  cube.material = 0;
+  scene.meshes.push_back(cube);
+  scene.instances.push_back({1, translation({0, 0.8f, 0}) * scaling(glm::vec3(0.3f))});
+  return scene;
+}
+
 RenderSettings topDownSettings(int size) {
   RenderSettings s;
   s.width = s.height = size;

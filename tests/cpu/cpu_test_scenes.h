@@ -11,6 +11,9 @@ namespace facet::test {
 // The square [-2,2]² of the plane y = 0, cut into n×n quads, one material.
 Scene groundScene(int subdivisions, glm::vec3 baseColor);
 
+// groundScene(8, grey) plus a cube of half-size 0.3 centred 0.8 above the origin (its underside 0.5 above the ground).
+Scene occluderScene();
+
 // Looks straight down -y from (0, 10, 0) with a parallel box of width 4,
 // image size×size: pixel (px, py) centre sees world x = (px+0.5)·4/size - 2,
 // z = 2 - (py+0.5)·4/size (image up is world -z).

@@ -104,11 +104,7 @@ TEST_CASE("a probed pixel of the ground: P, N, V, L, H and every term of the ill
 }
 
 TEST_CASE("a probed pixel in a cube's shadow: the texel read, the depth in it, the depth compared and the bias") {
-  Scene scene = groundScene(8, {0.8f, 0.8f, 0.8f});
-  Mesh cube = makeCube();
-  cube.material = 0;
-  scene.meshes.push_back(cube);
-  scene.instances.push_back({1, translation({0, 0.8f, 0}) * scaling(glm::vec3(0.3f))});
+  const Scene scene = occluderScene();
   Light light;
   light.kind = LightKind::Point;
   light.position = {0.0f, 3.0f, 0.0f};

@@ -22,16 +22,6 @@ namespace {
 
 constexpr int kSize = 96;
 
-// Ground plus a cube of half-size 0.3 floating 0.5 above the origin.
-Scene occluderScene() {
-  Scene scene = groundScene(8, {0.8f, 0.8f, 0.8f});
-  Mesh cube = makeCube();
-  cube.material = 0;
-  scene.meshes.push_back(cube);
-  scene.instances.push_back({1, translation({0, 0.8f, 0}) * scaling(glm::vec3(0.3f))});
-  return scene;
-}
-
 RenderSettings shadowSettings(LightKind kind) {
   Light light;
   light.kind = kind;
