@@ -5,6 +5,8 @@
 
 #include "command_line.h"
 #include "commands.h"
+#include "common/error.h"
+#include "render/stage.h"
 #include "scene/load_scene.h"
 #include "viewer/viewer_loop.h"
 
@@ -25,6 +27,9 @@ struct ViewCommandOptions {
   std::string pick;
   std::vector<std::string> drops;
   std::string tab;
+  std::string stage;
+  std::string stageSource = "gl";
+  bool compareStages = false;
 };
 
 }  // namespace
@@ -54,6 +59,12 @@ Command addViewCommand(CLI::App& app) {
                       "scripted runs)");
   command->add_option("--tab", options->tab, "the panel's tab shown first")
       ->check(CLI::IsMember({"settings", "files", "reference", "pixel", "matrices", "stages", "help"}));
+  command->add_option("--stage", options->stage,
+                      "show a stage over the 3D view, as render --output-stage names it: image, overdraw, depth, shadow-map, normals, light-N");
+  command->add_option("--stage-source", options->stageSource, "the stage from gl, cpu, or the heat map of their difference")
+      ->check(CLI::IsMember({"gl", "cpu", "difference"}));
+  command->add_flag("--compare-stages", options->compareStages,
+                    "--screenshot also draws every stage of the frame with both backends and prints how many pixels differ in each");
   command->add_flag("--no-panel", options->noPanel, "start with the panel hidden (H shows it): the 3D view takes the whole window");
   command->add_option("--drag-preview", options->dragPreview,
                       "while a drag or the wheel moves the camera, draw frames at 1/N of each side (the full frame follows when it stops); 1: always full")
@@ -82,6 +93,18 @@ Command addViewCommand(CLI::App& app) {
     view.showPanel = !options->noPanel;
     view.drops = options->drops;
     view.tab = options->tab;
+    view.stage = options->stage;
+    view.stageSource = options->stageSource == "cpu" ? viewer::StageSource::Cpu
+                       : options->stageSource == "difference" ? viewer::StageSource::Difference : viewer::StageSource::OpenGl;
+    view.compareStages = options->compareStages;
+    if (!view.stage.empty()) {  // a name it does not read is a usage error before the window opens, naming this command's option
+      try {
+        parseStage(view.stage);
+      } catch (const UsageError& e) {
+        const std::string message = e.what(), asked = "--output-stage";
+        throw UsageError(message.rfind(asked, 0) == 0 ? "--stage" + message.substr(asked.size()) : message);
+      }
+    }
     if (!options->pick.empty()) view.pick = parsePixel(options->pick, "--pick");
     view.backend = options->backend == "gl" ? viewer::FrameBackend::OpenGl : options->backend == "cpu" ? viewer::FrameBackend::Cpu : viewer::FrameBackend::Auto;
     return viewer::runViewer(view);

@@ -145,8 +145,8 @@ void tab(const char* name, Fn&& drawContent, bool select) {
 
 }  // namespace
 
-PanelRequests drawControlPanel(ViewerState& state, const FrameStats& stats, ReferenceView& reference, PixelPick& pick, const DrawnFrame& drawn,
-                               MatrixSelection& matrices, bool& redrawEveryFrame, float& width) {
+PanelRequests drawControlPanel(ViewerState& state, const FrameStats& stats, ReferenceView& reference, PixelPick& pick, ViewFrame& view,
+                               StageView& stages, MatrixSelection& matrices, bool& redrawEveryFrame, float& width) {
   PanelRequests requests;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   // Docked: the left edge, the whole height; only its right edge moves, and the 3D view takes the rest.
@@ -168,7 +168,8 @@ PanelRequests drawControlPanel(ViewerState& state, const FrameStats& stats, Refe
       const bool picked = pick.takeFresh();
       if (picked && pick.instance()) matrices.instance = *pick.instance();  // the picked triangle's object
       tab("Pixel", [&] { pick.drawTab(stats.version); }, picked || opens("pixel"));
-      tab("Matrices", [&] { drawMatricesTab(drawn, matrices); }, opens("matrices"));
+      tab("Stages", [&] { stages.drawTab(view); }, opens("stages"));
+      tab("Matrices", [&] { drawMatricesTab(view.drawn(), matrices); }, opens("matrices"));
       tab("Help", [] { drawHelpTab(); }, opens("help"));
       ImGui::EndTabBar();
     }

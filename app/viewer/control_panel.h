@@ -7,6 +7,7 @@
 
 #include "viewer/matrices_tab.h"
 #include "viewer/pixel_pick.h"
+#include "viewer/stage_view.h"
 #include "viewer/reference_view.h"
 #include "viewer/viewer_state.h"
 
@@ -31,7 +32,7 @@ struct PanelRequests {
 // whole height, `width` wide (ImGui units; the user's resize of its right
 // edge comes back in it). redrawEveryFrame: the panel's checkbox (draw the
 // 3D frame even when nothing changed, to time it).
-PanelRequests drawControlPanel(ViewerState& state, const FrameStats& stats, ReferenceView& reference, PixelPick& pick, const DrawnFrame& drawn,
-                               MatrixSelection& matrices, bool& redrawEveryFrame, float& width);
+PanelRequests drawControlPanel(ViewerState& state, const FrameStats& stats, ReferenceView& reference, PixelPick& pick, ViewFrame& view,
+                               StageView& stages, MatrixSelection& matrices, bool& redrawEveryFrame, float& width);
 
 }  // namespace facet::viewer

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "common/error.h"
+#include "pipeline/triangle_coverage.h"
 
 namespace facet::viewer {
 
@@ -19,16 +20,26 @@ void PixelPick::pick(ViewFrame& view, int x, int y) {
     p.cpu = probePixel(*drawn.scene, drawn.frame, x, y);
     const std::size_t pixel = static_cast<std::size_t>(y) * static_cast<std::size_t>(drawn.frame.width) + static_cast<std::size_t>(x);
     p.glTriangle = view.glRenderer().visibleTriangles(*drawn.scene, drawn.frame)[pixel];
+    view.invalidate();  // the triangle ids went through OpenGL's framebuffers
     const Image gl = view.glImage();
     if (!gl.empty()) p.glColor = gl.at(x, y);
+    if (p.cpu.covered) {
+      const SingleTriangle single = singleTriangle(*drawn.scene, drawn.frame, p.cpu.triangle);
+      const std::vector<std::uint32_t> counts = view.cpuRenderer().fragmentCounts(single.scene, single.frame);
+      const std::vector<std::uint32_t> kept = view.cpuRenderer().visibleTriangles(*drawn.scene, drawn.frame);
+      p.glCoversTheSame = view.glRenderer().fragmentCounts(single.scene, single.frame) == counts;
+      for (std::size_t i = 0; i < counts.size(); ++i) p.covered += counts[i] != 0, p.kept += counts[i] != 0 && kept[i] == p.cpu.triangle;
+      p.coverage = coverageImage(counts, kept, p.cpu.triangle, drawn.frame.width, drawn.frame.height);
+    }
   } catch (const Error& e) {
     p.error = e.what();
   }
+  coverageTexture_->upload(p.coverage);
   picked_ = std::move(p);
   fresh_ = true;
 }
 
-void PixelPick::drawTab(std::uint64_t version) const {
+void PixelPick::drawTab(std::uint64_t version) {
   if (!picked_) {
     ImGui::TextWrapped("Click a pixel of the 3D view: both backends say which triangle they kept there and what they drew, and the CPU "
                        "backend every term of the illumination equation.");
@@ -64,6 +75,10 @@ void PixelPick::drawTab(std::uint64_t version) const {
   }
   ImGui::TextColored(agree(p) ? ImVec4(0.55f, 0.85f, 0.55f, 1.0f) : ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s",
                      agree(p) ? "the backends agree here" : "the backends differ here");
+  if (p.cpu.covered) {
+    ImGui::Text("coverage: %d pixel centres, %d kept; OpenGL %s", p.covered, p.kept, p.glCoversTheSame ? "covers the same" : "covers others");
+    ImGui::Checkbox("show the triangle's coverage (yellow: kept, orange: hidden)", &showCoverage_);
+  }
   ImGui::Separator();
   ImGui::PushTextWrapPos(0.0f);
   for (const std::string& line : describeProbe(p.cpu)) ImGui::TextUnformatted(line.c_str());
@@ -80,7 +95,14 @@ void PixelPick::print() const {
   if (p.glColor)
     std::printf("OpenGL: triangle %u, drawn %d %d %d; CPU: triangle %u, drawn %d %d %d: %s\n", p.glTriangle, p.glColor->r, p.glColor->g,
                 p.glColor->b, p.cpu.triangle, p.cpu.drawn.r, p.cpu.drawn.g, p.cpu.drawn.b, agree(p) ? "the backends agree" : "the backends differ");
+  if (p.cpu.covered)
+    std::printf("coverage: %d pixel centres, %d kept; OpenGL %s\n", p.covered, p.kept, p.glCoversTheSame ? "covers the same" : "covers others");
   for (const std::string& line : describeProbe(picked_->cpu)) std::printf("%s\n", line.c_str());
+}
+
+void PixelPick::drawCoverage(std::uint64_t version, ImVec2 topLeft, ImVec2 bottomRight) const {
+  if (!showCoverage_ || !picked_ || picked_->version != version || coverageTexture_->empty()) return;
+  ImGui::GetBackgroundDrawList()->AddImage(coverageTexture_->id(), topLeft, bottomRight, kTopLeftUv, kBottomRightUv, IM_COL32(255, 255, 255, 200));
 }
 
 void PixelPick::drawMarker(std::uint64_t version, ImVec2 topLeft, ImVec2 bottomRight) const {

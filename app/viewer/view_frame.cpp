@@ -1,6 +1,7 @@
 #include "viewer/view_frame.h"
 
 #include <algorithm>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -64,6 +65,7 @@ bool ViewFrame::drawIfChanged(const ViewerState& state, bool preview, bool force
   const bool onCpu = drawsOnCpu(state.backend);
   // Everything the frame depends on: the scene, the backend and the settings (the size included).
   const std::string key = std::to_string(state.sceneSerial) + (onCpu ? " cpu " : " gl ") + settingsToJson(settings).dump();
+  if (std::exchange(redraw_, false)) force = true;
   if (key == drawn_.key && !force) return false;
   try {
     std::shared_ptr<const Scene> scene = sceneFor(state);

@@ -51,6 +51,13 @@ class ViewFrame {
   bool drawIfChanged(const ViewerState& state, bool preview, bool force);
   const DrawnFrame& drawn() const { return drawn_; }
   WindowGlRenderer& glRenderer() { return glRenderer_; }
+  Renderer& cpuRenderer() { return *cpuRenderer_; }
+  // OpenGL drew something else into its framebuffer (a stage, triangle
+  // ids): when it draws the view, the next drawIfChanged draws the same
+  // frame again, under the same version.
+  void invalidate() {
+    if (!drawn_.onCpu) redraw_ = true;
+  }
 
   // The OpenGL image of the frame on screen, for the reference's comparison:
   // the one on screen, or drawn by OpenGL now when the CPU drew it.
@@ -70,6 +77,7 @@ class ViewFrame {
   ImageTexture cpuTexture_;  // the CPU frame, for the blit
   bool softwareGl_;          // GL_RENDERER names Mesa's llvmpipe or softpipe
   DrawnFrame drawn_;
+  bool redraw_ = false;      // invalidate()
   Image glImage_;            // glImage()'s, for drawn_.version
   std::uint64_t glImageVersion_ = 0;
   std::shared_ptr<const Scene> environmentBase_, withEnvironment_;

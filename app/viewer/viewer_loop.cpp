@@ -27,6 +27,7 @@
 #include "viewer/orbit_bench.h"
 #include "viewer/pixel_pick.h"
 #include "viewer/reference_view.h"
+#include "viewer/stage_view.h"
 #include "viewer/view_frame.h"
 #include "viewer/view_input.h"
 #include "viewer/viewer_gl.h"
@@ -109,8 +110,10 @@ int runViewer(const ViewerOptions& options) {
   ReferenceView reference(gl.gl, referenceThreads(), options.followReference, options.rayReference);
   ViewFrame view(gl, renderer, 0);
   ViewInput input;
-  PixelPick pick;
+  PixelPick pick(gl.gl);
   MatrixSelection matrices;
+  StageView stages(gl.gl);
+  if (!options.stage.empty()) stages.choose(options.stage, options.stageSource);
   std::vector<std::string> scriptedDrops = options.drops;
   std::optional<std::array<int, 2>> pickAsked = options.pick;
   state.backend = options.backend;
@@ -160,7 +163,7 @@ int runViewer(const ViewerOptions& options) {
       const FrameStats stats{renderer.rendererName(), view.backendLine(state.backend), drawTimes.median(), windowTimes.median(),
                              state.scene->triangleCount(), static_cast<int>(drawn.frame.lights.size()), drawn.frame.shadowLayerCount,
                              drawn.version, drawn.error};
-      panel = drawControlPanel(state, stats, reference, pick, drawn, matrices, redrawEveryFrame, panelWidth);
+      panel = drawControlPanel(state, stats, reference, pick, view, stages, matrices, redrawEveryFrame, panelWidth);
       reference.drawImages(drawn.version);
     } else if (!view.drawn().error.empty()) {
       drawErrorOverlay(view.drawn().error);
@@ -192,6 +195,9 @@ int runViewer(const ViewerOptions& options) {
       pick.pick(view, x, drawn.frame.height - 1 - fromTop);
       pickAsked.reset();
     }
+    stages.update(view);
+    stages.drawMainView(ImVec2(static_cast<float>(viewRect.x) * unitsPerPixel, 0.0f), ImGui::GetIO().DisplaySize);
+    pick.drawCoverage(drawn.version, ImVec2(static_cast<float>(viewRect.x) * unitsPerPixel, 0.0f), ImGui::GetIO().DisplaySize);
     pick.drawMarker(drawn.version, ImVec2(static_cast<float>(viewRect.x) * unitsPerPixel, 0.0f), ImGui::GetIO().DisplaySize);
     reference.drawMainView(drawn.version, ImVec2(static_cast<float>(viewRect.x) * unitsPerPixel, 0.0f), ImGui::GetIO().DisplaySize);
 
@@ -209,12 +215,17 @@ int runViewer(const ViewerOptions& options) {
     }
     // --screenshot: after `frames` frames (and the reference, when asked for), before the swap
     if (batch && --framesLeft <= 0 && (!options.followReference || reference.isFinal(drawn.version))) {
-      const Image image = options.screenshotWithPanel ? readWindow(gl, width, height) : drawn.image;
+      // The 3D view: the frame, or the stage shown over it.
+      const Image image = options.screenshotWithPanel ? readWindow(gl, width, height) : stages.shownImage().empty() ? drawn.image : stages.shownImage();
       writePng(options.batchScreenshot, image);
       std::printf("screenshot written to %s: %dx%d, %d frames, %s, frame %.1f ms (median)\n", options.batchScreenshot.c_str(), image.width(),
                   image.height(), options.frames, view.backendLine(state.backend).c_str(), drawTimes.median());
       if (options.followReference) std::printf("%s\n", reference.summary().c_str());
       if (options.pick) pick.print();
+      if (options.compareStages) {
+        stages.compareAll(view);
+        for (const std::string& line : stages.comparisonLines()) std::printf("%s\n", line.c_str());
+      }
       break;
     }
     glfwSwapBuffers(window.handle());

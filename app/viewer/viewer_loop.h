@@ -8,6 +8,7 @@
 
 #include "scene/scene.h"
 #include "settings/render_settings.h"
+#include "viewer/stage_view.h"
 #include "viewer/viewer_state.h"
 
 namespace facet::viewer {
@@ -28,6 +29,9 @@ struct ViewerOptions {
   int dragPreview = 2;                 // --drag-preview: ViewerState::dragPreview
   std::optional<std::array<int, 2>> pick;  // --pick X,Y: the pixel picked once the first frame is drawn (from the top left)
   std::vector<std::string> drops;      // --drop: files opened as if dropped on the window after the first frame
+  std::string stage;                   // --stage: the stage shown over the view (render/stage.h names); empty: the frame
+  StageSource stageSource = StageSource::OpenGl;  // --stage-source
+  bool compareStages = false;          // --compare-stages: --screenshot also compares every stage between the backends
   std::string tab;                     // --tab: the panel's tab shown first
   int benchOrbit = 0;                  // --bench-orbit N: orbit once in N timed frames, print the figures (orbit_bench.h), exit
 };
