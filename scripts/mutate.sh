@@ -64,7 +64,7 @@ run() {
         [ ${#names} -lt 160 ] && names="$names${names:+; }$test"
       fi
     done < <(sed -n 's/^[[:space:]]*[0-9]* - \(.*\) (\(Failed\|SEGFAULT\|Subprocess aborted\|Timeout\|Exception\|Child aborted\|Not Run\|\*\*\*.*\))$/\1/p' "$log"
-             sed -n 's/^\([a-z0-9+-]*\)  *[0-9]*x[0-9]*  *[0-9]*  *[0-9]*  *[0-9]*  *[A-Za-z-]*  *[0-9]*\/[0-9]*  *FAIL.*$/agreement:\1/p' "$log")
+             sed -n 's/^\([a-z0-9+-]*\)  *[0-9]*x[0-9]*  *[0-9]*  *[0-9]*  *[0-9]*  *[A-Za-z-]*  *[A-Za-z0-9-]*  *[0-9]*\/[0-9]*  *FAIL.*$/agreement:\1/p' "$log")
   else
     failing="build" cases="-" named=1 names="the build fails"
   fi
