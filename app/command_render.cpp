@@ -1,5 +1,6 @@
 // facet render: one frame of a scene with the OpenGL backend, the CPU
 // backend, the CPU backend's readable reference or the ray tracer, to a PNG.
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -8,6 +9,7 @@
 #include <string>
 
 #include "command_line.h"
+#include "cpu/pixel_probe.h"
 #include "progress_bar.h"
 #include "commands.h"
 #include "common/atomic_file.h"
@@ -40,6 +42,7 @@ struct RenderOptions {
   int threads = 0;
   std::string stage = "image";  // render/stage.h: image, overdraw, depth, shadow-map, normals or light-N
   std::string shadowReport;     // a heat map of the frame against ray casting (renderer/PIPELINE.md, section 10)
+  std::string probe;            // X,Y: explain that pixel (cpu/pixel_probe.h)
 };
 
 // The frame's settings as ray casting draws them to compare a rasterized frame with: primary and
@@ -85,6 +88,9 @@ Command addRenderCommand(CLI::App& app) {
                       "fragments per pixel before the depth test, black 0, pale yellow the busiest pixel); depth (the z-buffer's window z, "
                       "near white to far dark grey); shadow-map (every shadow map side by side); normals (RGB = (N + 1)/2); light-N (the "
                       "frame lit by light N alone)");
+  command->add_option("--probe", options->probe,
+                      "X,Y: also explain that pixel (from the top left): the triangle kept there, its weights, P, N, V, each light's terms "
+                      "and shadow test, by the CPU backend's functions, and the pixel this backend drew");
   command->add_option("--shadow-report", options->shadowReport,
                       "also ray cast the frame (ray.depth 1, the same settings) and write a heat map of where the image differs from it to "
                       "this PNG: where shadow maps are wrong (acne, peter-panning, aliasing), since rays cast exact shadows")
@@ -92,6 +98,8 @@ Command addRenderCommand(CLI::App& app) {
   return [options]() {
     const auto start = std::chrono::steady_clock::now();
     const Stage stage = parseStage(options->stage);
+    std::optional<std::array<int, 2>> probe;
+    if (!options->probe.empty()) probe = parsePixel(options->probe, "--probe");
     const std::string output = options->common.output.empty() ? "facet.png" : options->common.output;  // -o "" never parses
     // Before loading and rendering (minutes at large sizes): a frame nobody can write is not drawn.
     checkOutputFile(output, {options->common.scenePath, options->common.settingsPath});
@@ -114,6 +122,8 @@ Command addRenderCommand(CLI::App& app) {
     if (options->backend == "gl") refuseCpuOnlyFrame(frame);  // before the driver is loaded
 #endif
     checkStage(frame, stage);
+    if (probe && ((*probe)[0] >= frame.width || (*probe)[1] >= frame.height))
+      throw UsageError("--probe " + options->probe + ": outside the " + std::to_string(frame.width) + "x" + std::to_string(frame.height) + " frame");
     ProgressBar progress("ray tracing");  // drawn on a terminal only
     std::unique_ptr<Renderer> renderer = makeRenderer(*options, progress);
     RenderResult result;
@@ -151,6 +161,14 @@ Command addRenderCommand(CLI::App& app) {
                   options->shadowReport.c_str());
     std::printf("  %-28s %9.2f ms\n", "total (process)", total);
     std::printf("image written to %s\n", output.c_str());
+    if (probe) {
+      const int x = (*probe)[0], y = frame.height - 1 - (*probe)[1];
+      if (stage.kind == StageKind::Image) {
+        const Rgba8 drawn = result.image.at(x, y);
+        std::printf("probe: %s drew %d %d %d\n", options->backend.c_str(), drawn.r, drawn.g, drawn.b);
+      }
+      for (const std::string& line : describeProbe(probePixel(scene, frame, x, y))) std::printf("probe: %s\n", line.c_str());
+    }
     return 0;
   };
 }
