@@ -252,6 +252,7 @@ struct BenchOptions {
   int startupRuns = 5;
   bool memory = true;
   std::string outDir;         // CPU (and GL) images of the last frame, per scene
+  bool keepShadowMaps = false;  // time frames that keep the maps drawn before (an orbit in the viewer)
   bool callgrind = false;     // instrument frames only; one scene, one backend
   std::string child;          // internal: "scene:backend", print VmHWM
 };
@@ -283,7 +284,10 @@ int runCallgrindMode(const BenchOptions& o, int width, int height) {
   for (int i = 0; i < o.warmup; ++i) (void)renderer->render(b.scene, frame);
   CALLGRIND_ZERO_STATS;
   CALLGRIND_START_INSTRUMENTATION;
-  for (int i = 0; i < o.frames; ++i) (void)renderer->render(b.scene, frame);
+  for (int i = 0; i < o.frames; ++i) {
+    if (!o.keepShadowMaps) renderer->forgetShadowMaps();
+    (void)renderer->render(b.scene, frame);
+  }
   CALLGRIND_STOP_INSTRUMENTATION;
   std::printf("callgrind: %s on %s, %d frame(s) instrumented\n", o.scenes.front().c_str(), o.backends.front().c_str(), o.frames);
   return 0;
@@ -310,6 +314,8 @@ Command addBenchCommand(CLI::App& app) {
   command->add_flag("!--no-memory", o->memory, "skip the per-backend peak-memory child processes");
   command->add_option("--out", o->outDir, "write each backend's last frame per scene as DIR/<scene>-<backend>.png")
       ->check(CLI::ExistingDirectory);
+  command->add_flag("--keep-shadow-maps", o->keepShadowMaps,
+                    "time frames that keep the shadow maps drawn before, as a viewer orbit does (default: every frame draws its maps, as `render` does)");
   command->add_flag("--callgrind", o->callgrind, "instrument the timed frames only (run under valgrind --tool=callgrind --instr-atstart=no)");
   command->add_option("--child", o->child, "internal: scene:backend, print VmHWM")->group("");
   return [o]() {
@@ -355,6 +361,7 @@ Command addBenchCommand(CLI::App& app) {
       for (int i = 0; i < o->frames; ++i)
         for (std::size_t r = 0; r < renderers.size(); ++r) {
           if (skip[r]) continue;
+          if (!o->keepShadowMaps) renderers[r]->forgetShadowMaps();
           const auto start = Clock::now();
           last[r] = renderers[r]->render(b.scene, frame);
           ms[r].push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());

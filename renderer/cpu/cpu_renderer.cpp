@@ -128,6 +128,8 @@ class CpuRenderer final : public Renderer {
     return {maps_.size, maps_.layers, maps_.depth};
   }
 
+  void forgetShadowMaps() override { mapsDrawn_ = {}; }
+
   std::vector<glm::vec4> normals(const Scene& scene, const FrameInputs& frame) override {
     const FrameInputs drawn = normalsFrame(frame);
     check_(scene, drawn);

@@ -45,6 +45,9 @@ class GlFrameRenderer {
   // `scene` is the uploaded one (the painter's algorithm reads its indices).
   std::vector<PassTiming> drawFrame(const Scene& scene, const FrameInputs& frame);
 
+  // The next frame draws its shadow maps (Renderer::forgetShadowMaps).
+  void forgetShadowMaps() { mapsDrawn_ = {}; }
+
   // The last frame's RGBA8 pixels, bottom row first as glReadPixels gives them.
   Image readImage() const;
 

@@ -31,6 +31,8 @@ class GlFrames {
     return result;
   }
 
+  void forgetShadowMaps() { frameRenderer_.forgetShadowMaps(); }
+
   std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) {
     check_(scene, frame);
     upload(scene);
@@ -102,6 +104,8 @@ class HeadlessGlRenderer final : public Renderer {
     return frames_->render(scene, frame);
   }
 
+  void forgetShadowMaps() override { frames_->forgetShadowMaps(); }
+
   std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) override {
     context_->makeCurrent();
     return frames_->visibleTriangles(scene, frame);
@@ -138,6 +142,7 @@ class CurrentContextGlRenderer final : public WindowGlRenderer {
 
   std::string description() const override { return "gl: " + frames_.frameRenderer().rendererName() + " in the window's context"; }
   RenderResult render(const Scene& scene, const FrameInputs& frame) override { return frames_.render(scene, frame); }
+  void forgetShadowMaps() override { frames_.forgetShadowMaps(); }
   std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) override {
     return frames_.visibleTriangles(scene, frame);
   }

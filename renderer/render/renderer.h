@@ -74,6 +74,12 @@ class Renderer {
   // bottom row first; (0, 0, 0, 0) where no opaque triangle was kept.
   virtual std::vector<glm::vec4> normals(const Scene& /*scene*/, const FrameInputs& /*frame*/) { throw notDrawn("normals"); }
 
+  // Forgets the shadow maps kept from earlier frames (pipeline/shadow_pass_key.h):
+  // the next frame draws its maps, as a one-frame `facet render` does. What
+  // `facet bench` calls before each timed frame, so that a backend that keeps
+  // its maps is timed on the same work as one that does not.
+  virtual void forgetShadowMaps() {}
+
  protected:
   Error notDrawn(const std::string& stage) const { return Error("the " + stage + " stage is not drawn by " + description()); }
 };
