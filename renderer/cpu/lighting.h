@@ -95,10 +95,40 @@ F specularTerm(const Vec3Of<F>& N, const Vec3Of<F>& L, const Vec3Of<F>& V, F shi
   return power(maxZero(dot3(N, H)), shininess);
 }
 
-// Where world point P reads a light's shadow maps: the face, the map
-// coordinates (u, v, z) after the divide by w, the texel (tx, ty) holding
-// (u, v), and the bias = max(b_slope·(1 - N·L), b_min). `outside`: P counts
-// as lit without a read (behind the light's eye, beyond its far plane).
+// Where world point P reads one face of a light's shadow maps, on one lane or
+// four: the map coordinates (u, v, z) after the divide by w, the bias =
+// max(b_slope·(1 - N·L), b_min), and the texel (tx, ty) holding (u, v).
+// `inside`: P is read (in front of the light's eye, not beyond its far
+// plane); elsewhere P counts as lit and the other fields mean nothing.
+template <class F>
+struct ShadowCoordinates {
+  MaskOf<F> inside;
+  F u, v, z, bias;
+  IntOf<F> tx, ty;
+};
+template <class F>
+ShadowCoordinates<F> shadowCoordinates(const glm::mat4& shadowFromWorld, int size, const ShadowSettings& shadows, const Vec3Of<F>& P,
+                                       const Vec3Of<F>& N, const Vec3Of<F>& L) {
+  const glm::mat4& m = shadowFromWorld;
+  // transformPoint (vertex_math.h), one row at a time: ((m0·x + m1·y) + m2·z) + m3
+  const auto row = [&](int r) { return ((F(m[0][r]) * P.x + F(m[1][r]) * P.y) + F(m[2][r]) * P.z) + F(m[3][r]); };
+  const F sx = row(0), sy = row(1), sz = row(2), sw = row(3);
+  ShadowCoordinates<F> at;
+  at.u = sx / sw, at.v = sy / sw, at.z = sz / sw;
+  at.inside = both(both(sw > F(0.0f), at.z <= F(1.0f)), both(at.u <= at.u, at.v <= at.v));  // x ≤ x: not NaN
+  // Far outside the map every texel is outside too; the clamp (NaN to -1)
+  // keeps the texel index an int without changing which texels a point inside reads.
+  const F uc = select(at.u > F(-1.0f), select(at.u < F(2.0f), at.u, F(2.0f)), F(-1.0f));
+  const F vc = select(at.v > F(-1.0f), select(at.v < F(2.0f), at.v, F(2.0f)), F(-1.0f));
+  const F slope = F(shadows.biasSlope) * (F(1.0f) - dot3(N, L));
+  at.bias = select(slope > F(shadows.biasMin), slope, F(shadows.biasMin));
+  at.tx = truncateToInt(floorOf(uc * F(static_cast<float>(size))));
+  at.ty = truncateToInt(floorOf(vc * F(static_cast<float>(size))));
+  return at;
+}
+
+// Where world point P reads a light's shadow maps: the face, its layer, and
+// shadowCoordinates there. `outside`: P counts as lit without a read.
 struct ShadowLookup {
   bool outside = true;
   int face = 0, layer = 0;
@@ -110,41 +140,38 @@ inline ShadowLookup shadowLookup(const ShadowMaps& maps, const FrameLight& light
   ShadowLookup at;
   at.face = light.light.kind == LightKind::Point ? cubeFace(P - light.light.position) : 0;
   at.layer = light.shadowLayer + at.face;
-  const glm::vec4 s = transformPoint(light.shadowFromWorld[static_cast<std::size_t>(at.face)], P);
-  if (!(s.w > 0.0f)) return at;
-  at.u = s.x / s.w, at.v = s.y / s.w, at.z = s.z / s.w;
-  if (!(at.z <= 1.0f) || std::isnan(at.u) || std::isnan(at.v)) return at;
-  at.outside = false;
-  // Far outside the map every texel is outside too; the clamp keeps the texel
-  // index an int without changing which texels a point inside reads.
-  const float uc = at.u < -1.0f ? -1.0f : (at.u > 2.0f ? 2.0f : at.u);
-  const float vc = at.v < -1.0f ? -1.0f : (at.v > 2.0f ? 2.0f : at.v);
-  const float slope = shadows.biasSlope * (1.0f - dot3(N, L));
-  at.bias = slope > shadows.biasMin ? slope : shadows.biasMin;
-  at.tx = static_cast<int>(std::floor(uc * static_cast<float>(maps.size)));
-  at.ty = static_cast<int>(std::floor(vc * static_cast<float>(maps.size)));
+  const ShadowCoordinates<float> c =
+      shadowCoordinates<float>(light.shadowFromWorld[static_cast<std::size_t>(at.face)], maps.size, shadows, P, N, L);
+  at.outside = !c.inside;
+  at.u = c.u, at.v = c.v, at.z = c.z, at.bias = c.bias, at.tx = c.tx, at.ty = c.ty;
   return at;
+}
+
+// PCF's count: of the (2r+1)² texels of `layer` around (tx, ty), those not in
+// shadow (!(zb > depth), zb = z - bias). Outside the map counts as lit; a
+// point light's cube has no outside: a tap beyond its face's edge reads the edge texel.
+inline int pcfLitCount(const ShadowMaps& maps, int layer, int tx, int ty, float zb, int r, bool cube) {
+  const int size = maps.size;
+  int lit = 0;
+  for (int dy = -r; dy <= r; ++dy)
+    for (int dx = -r; dx <= r; ++dx) {
+      const int x = cube ? std::clamp(tx + dx, 0, size - 1) : tx + dx, y = cube ? std::clamp(ty + dy, 0, size - 1) : ty + dy;
+      if (x < 0 || y < 0 || x >= size || y >= size) ++lit;
+      else if (!(zb > maps.texelFetch(layer, x, y))) ++lit;
+    }
+  return lit;
 }
 
 // S of one light at world point P: PCF over (2r+1)² texels of the light's
 // map around shadowLookup's texel, a texel in shadow when z - bias > depth.
-// Outside the map (or beyond its far plane) counts as lit. A point light's
-// cube has no outside: a tap beyond its face's edge reads the edge texel.
-// One pixel at a time: texel reads do not go into lanes.
+// Outside the map (or beyond its far plane) counts as lit.
 inline float shadowFactor(const ShadowMaps& maps, const FrameLight& light, const ShadowSettings& shadows, glm::vec3 P, glm::vec3 N,
                           glm::vec3 L) {
   if (!light.hasShadowMap) return 1.0f;
   const ShadowLookup at = shadowLookup(maps, light, shadows, P, N, L);
   if (at.outside) return 1.0f;
-  const int size = maps.size, r = shadows.pcfRadius;
-  const bool cube = light.light.kind == LightKind::Point;
-  int lit = 0;
-  for (int dy = -r; dy <= r; ++dy)
-    for (int dx = -r; dx <= r; ++dx) {
-      const int x = cube ? std::clamp(at.tx + dx, 0, size - 1) : at.tx + dx, y = cube ? std::clamp(at.ty + dy, 0, size - 1) : at.ty + dy;
-      if (x < 0 || y < 0 || x >= size || y >= size) ++lit;
-      else if (!(at.z - at.bias > maps.texelFetch(at.layer, x, y))) ++lit;
-    }
+  const int r = shadows.pcfRadius;
+  const int lit = pcfLitCount(maps, at.layer, at.tx, at.ty, at.z - at.bias, r, light.light.kind == LightKind::Point);
   return static_cast<float>(lit) / static_cast<float>((2 * r + 1) * (2 * r + 1));
 }
 
@@ -154,20 +181,72 @@ inline float shadowFactorLanes(const ShadowMaps& maps, const FrameLight& light, 
   return shadowFactor(maps, light, shadows, P, N, L);
 }
 #if defined(__SSE2__)
+// pcfLitCount four texels of a row at a time, for a window wholly inside the
+// map with room for its last four-texel load (pcfFitsRows says when).
+inline int pcfLitCountRows(const ShadowMaps& maps, int layer, int tx, int ty, float zb, int r) {
+  const __m128 z = _mm_set1_ps(zb);
+  const float* texels = maps.depth.data() + static_cast<std::size_t>(layer) * static_cast<std::size_t>(maps.size) * static_cast<std::size_t>(maps.size);
+  int lit = 0;
+  for (int y = ty - r; y <= ty + r; ++y) {
+    const float* row = texels + static_cast<std::size_t>(y) * static_cast<std::size_t>(maps.size);
+    for (int x = tx - r; x <= tx + r; x += 4) {
+      const int n = std::min(4, tx + r + 1 - x);
+      const int notShadowed = _mm_movemask_ps(_mm_cmpngt_ps(z, _mm_loadu_ps(row + x)));  // !(zb > depth), NaN included
+      lit += __builtin_popcount(static_cast<unsigned>(notShadowed) & ((1u << n) - 1u));
+    }
+  }
+  return lit;
+}
+inline bool pcfFitsRows(int size, int tx, int ty, int r) {
+  const int loads = (2 * r + 1 + 3) / 4;
+  return tx - r >= 0 && tx - r + 4 * loads <= size && ty - r >= 0 && ty + r < size;
+}
+
+// Four lanes: the face of each lane; where the active lanes share one, the
+// coordinates on four lanes and the window's rows four texels at a time;
+// the same reads and comparisons as shadowFactor, so the same S to the bit.
 inline Float4 shadowFactorLanes(const ShadowMaps& maps, const FrameLight& light, const ShadowSettings& shadows, const Vec3x4& P, const Vec3x4& N,
                                 const Vec3x4& L, Mask4 active) {
   if (!light.hasShadowMap) return Float4(1.0f);
-  alignas(16) float p[3][4], n[3][4], l[3][4], S[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-  const Vec3x4* from[3] = {&P, &N, &L};
-  float (*to[3])[4] = {p, n, l};
-  for (int v = 0; v < 3; ++v) {
-    _mm_store_ps(to[v][0], from[v]->x.v);
-    _mm_store_ps(to[v][1], from[v]->y.v);
-    _mm_store_ps(to[v][2], from[v]->z.v);
-  }
+  alignas(16) float p[3][4], S[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+  _mm_store_ps(p[0], P.x.v);
+  _mm_store_ps(p[1], P.y.v);
+  _mm_store_ps(p[2], P.z.v);
   const int lanes = laneBits(active);
+  const bool cube = light.light.kind == LightKind::Point;
+  int face = -1;
+  bool oneFace = true;
   for (int k = 0; k < 4; ++k)
-    if (lanes & (1 << k)) S[k] = shadowFactor(maps, light, shadows, {p[0][k], p[1][k], p[2][k]}, {n[0][k], n[1][k], n[2][k]}, {l[0][k], l[1][k], l[2][k]});
+    if (lanes & (1 << k)) {
+      const int f = cube ? cubeFace(glm::vec3(p[0][k], p[1][k], p[2][k]) - light.light.position) : 0;
+      oneFace = oneFace && (face < 0 || f == face);
+      face = f;
+    }
+  const int r = shadows.pcfRadius, size = maps.size;
+  const float taps = static_cast<float>((2 * r + 1) * (2 * r + 1));
+  if (!oneFace) {
+    alignas(16) float n[3][4], l[3][4];
+    _mm_store_ps(n[0], N.x.v), _mm_store_ps(n[1], N.y.v), _mm_store_ps(n[2], N.z.v);
+    _mm_store_ps(l[0], L.x.v), _mm_store_ps(l[1], L.y.v), _mm_store_ps(l[2], L.z.v);
+    for (int k = 0; k < 4; ++k)
+      if (lanes & (1 << k))
+        S[k] = shadowFactor(maps, light, shadows, {p[0][k], p[1][k], p[2][k]}, {n[0][k], n[1][k], n[2][k]}, {l[0][k], l[1][k], l[2][k]});
+    return Float4(_mm_load_ps(S));
+  }
+  const ShadowCoordinates<Float4> at = shadowCoordinates<Float4>(light.shadowFromWorld[static_cast<std::size_t>(face)], size, shadows, P, N, L);
+  alignas(16) float zb[4];
+  alignas(16) std::int32_t tx[4], ty[4];
+  _mm_store_ps(zb, (at.z - at.bias).v);
+  _mm_store_si128(reinterpret_cast<__m128i*>(tx), at.tx.v);
+  _mm_store_si128(reinterpret_cast<__m128i*>(ty), at.ty.v);
+  const int read = lanes & laneBits(at.inside);
+  const int layer = light.shadowLayer + face;
+  for (int k = 0; k < 4; ++k)
+    if (read & (1 << k)) {
+      const int lit = pcfFitsRows(size, tx[k], ty[k], r) ? pcfLitCountRows(maps, layer, tx[k], ty[k], zb[k], r)
+                                                         : pcfLitCount(maps, layer, tx[k], ty[k], zb[k], r, cube);
+      S[k] = static_cast<float>(lit) / taps;
+    }
   return Float4(_mm_load_ps(S));
 }
 #endif

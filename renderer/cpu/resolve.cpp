@@ -11,13 +11,18 @@ void resolve(ThreadPool& pool, const ColorBuffer& buffer, Blending holding, int 
   image = Image(buffer.width(), buffer.height());
   const auto width = static_cast<std::size_t>(buffer.width());
   const auto count = static_cast<float>(samples);
+  const SrgbTables& tables = srgbTables();
+  const bool plain = samples == 1 && holding != Blending::Premultiplied;  // the opaque frame's case: the colour as held
   forEachRange(pool, static_cast<std::size_t>(buffer.height()), [&](std::size_t begin, std::size_t end, int) {
+    const glm::vec4* in = buffer.data();
+    Rgba8* out = image.data();
+    if (plain) {
+      for (std::size_t i = begin * width; i < end * width; ++i) out[i] = encodePixel4(tables, &in[i].r);
+      return;
+    }
     for (std::size_t i = begin * width; i < end * width; ++i) {
-      const glm::vec4 linear = unstored(samples == 1 ? buffer.data()[i] : buffer.data()[i] / count, holding);
-      Rgba8& out = image.data()[i];
-      std::uint8_t levels[4];
-      encodeLevels4(&linear.r, levels);  // four at a time; the fourth, alpha, is not light
-      out = {levels[0], levels[1], levels[2], alphaLevel(linear.a)};
+      const glm::vec4 linear = unstored(samples == 1 ? in[i] : in[i] / count, holding);
+      out[i] = encodePixel4(tables, &linear.r);
     }
   });
 }

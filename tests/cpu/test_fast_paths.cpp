@@ -77,14 +77,14 @@ TEST_CASE("sRGB buckets: encodeLevel equals the thresholds' binary search for ev
   for (float c : {0.0f, -0.0f, -1.0f, 1.0f, 2.0f, std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
                   std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::denorm_min()})
     CHECK(encodeLevel(c) == formula(c));
-  // encodeLevels4 (the clamp and bucket on four lanes) against encodeLevel, over a stride of all float bit patterns.
+  // encodePixel4 (the clamp, bucket and alpha level on four lanes) against encodePixel, over a stride of all float bit patterns.
   std::uint64_t mismatches4 = 0;
+  const SrgbTables& tables = srgbTables();
   for (std::uint64_t bits = 0; bits <= 0xffffffffu; bits += 4 * 4099) {
     float four[4];
-    std::uint8_t out[4];
     for (int k = 0; k < 4; ++k) four[k] = std::bit_cast<float>(static_cast<std::uint32_t>(bits + static_cast<std::uint64_t>(k) * 4099));
-    cpu::encodeLevels4(four, out);
-    for (int k = 0; k < 4; ++k) mismatches4 += out[k] != encodeLevel(four[k]);
+    const Rgba8 got = cpu::encodePixel4(tables, four), want = encodePixel(glm::vec4(four[0], four[1], four[2], four[3]));
+    mismatches4 += got.r != want.r || got.g != want.g || got.b != want.b || got.a != want.a;
   }
   CHECK(mismatches4 == 0);
 }
@@ -157,9 +157,13 @@ TEST_CASE("Phong batch: four lanes at a time give the bits of illuminate<float>,
   const Scene scene = makeDefaultScene();
   std::mt19937 random(12345);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f), coordinate(-3.0f, 3.0f);
+  // PCF radius 0, 1 (one four-texel load a row) and 2 (two): the shadow lookups' row loads and their per-texel fallback.
+  for (int pcfRadius : {1, 0, 2})
   for (SpecularModel model : {SpecularModel::BlinnPhong, SpecularModel::Phong})
     for (bool perspective : {true, false}) {
+      if (pcfRadius != 1 && (model != SpecularModel::BlinnPhong || !perspective)) continue;
       RenderSettings s;
+      s.shadows.pcfRadius = pcfRadius;
       s.specular = model;
       s.camera.projection = perspective ? ProjectionKind::Perspective : ProjectionKind::Parallel;
       s.shadows.mapSize = 64;
@@ -203,6 +207,7 @@ TEST_CASE("Phong batch: four lanes at a time give the bits of illuminate<float>,
       batch.flush();
       CAPTURE(static_cast<int>(model));
       CAPTURE(perspective);
+      CAPTURE(pcfRadius);
       int differing = 0;
       for (int i = 0; i < kPixels; ++i) differing += std::memcmp(&batched.at(i, 0), &scalar.at(i, 0), sizeof(glm::vec4)) == 0 ? 0 : 1;  // to the bit
       CHECK(differing == 0);
