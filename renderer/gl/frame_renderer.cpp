@@ -14,6 +14,7 @@
 #include "common/error.h"
 #include "gl/shader_variant.h"
 #include "pipeline/antialiasing.h"
+#include "pipeline/clip_volume.h"
 #include "pipeline/stage_frames.h"
 
 namespace facet::gl {
@@ -439,12 +440,13 @@ void GlFrameRenderer::shadowPass(const FrameInputs& frame) {
       for (const FrameInstance& instance : frame.instances) {
         const MeshBuffers& mesh = scene_.mesh(instance.mesh);
         if (mesh.indexCount == 0 || !frame.materials[static_cast<std::size_t>(instance.material)].castsShadow) continue;
+        const glm::mat4& lightClipFromWorld = light.frustum.clipFromWorld[static_cast<std::size_t>(face)];
+        if (clipVolumeMisses(lightClipFromWorld * instance.worldFromModel, mesh.bounds)) continue;  // draws nothing on this face
         const DrawVariant variant = maskVariant(frame, instance);
         const DepthProgram& depth = depthPrograms_.at(variant.index());
         const GLuint program = depth.program.id();
         gl_.glUseProgram(program);
-        gl_.glProgramUniformMatrix4fv(program, depth.lightClipFromWorld, 1, GL_FALSE,
-                                      glm::value_ptr(light.frustum.clipFromWorld[static_cast<std::size_t>(face)]));
+        gl_.glProgramUniformMatrix4fv(program, depth.lightClipFromWorld, 1, GL_FALSE, glm::value_ptr(lightClipFromWorld));
         gl_.glProgramUniformMatrix4fv(program, depth.worldFromModel, 1, GL_FALSE, glm::value_ptr(instance.worldFromModel));
         if (variant.masked)
           setBaseColorUniforms(program, depth.alpha, frame.materials[static_cast<std::size_t>(instance.material)], variant.textured);

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "common/error.h"
+#include "pipeline/clip_volume.h"
 
 namespace facet::gl {
 namespace {
@@ -42,6 +43,7 @@ MeshBuffers uploadMesh(const GlFunctions& gl, const Mesh& mesh) {
   if ((triangles == 0 && segments == 0 && points == 0) || mesh.positions.empty()) return buffers;  // nothing to draw; GL refuses empty storage
   if (mesh.normals.size() != mesh.positions.size()) return {};  // checkScene refuses it; no frame draws it
   buffers.positions = uploadBuffer(gl, mesh.positions);
+  buffers.bounds = meshBounds(mesh);
   buffers.normals = uploadBuffer(gl, mesh.normals);
   if (mesh.texcoords.size() == mesh.positions.size()) buffers.texcoords = uploadBuffer(gl, mesh.texcoords);
   if (mesh.texcoords1.size() == mesh.positions.size()) buffers.texcoords1 = uploadBuffer(gl, mesh.texcoords1);

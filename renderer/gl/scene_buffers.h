@@ -26,6 +26,7 @@ struct MeshBuffers {
   GlObject indices;      // three per triangle; also a storage buffer for lit_flat.vert
   GlObject vertexArray;  // the attributes above and the index buffer
   GLsizei indexCount = 0;  // whole triangles only
+  Bounds bounds;           // of the positions, model space: pass 1 skips a face's draw that cannot reach it (pipeline/clip_volume.h)
   GlObject lineIndices, pointIndices;          // two per segment, one per point
   GlObject lineVertexArray, pointVertexArray;  // the attributes with those as index buffers
   GLsizei lineIndexCount = 0, pointCount = 0;
