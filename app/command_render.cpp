@@ -125,7 +125,14 @@ Command addRenderCommand(CLI::App& app) {
     if (probe && ((*probe)[0] >= frame.width || (*probe)[1] >= frame.height))
       throw UsageError("--probe " + options->probe + ": outside the " + std::to_string(frame.width) + "x" + std::to_string(frame.height) + " frame");
     ProgressBar progress("ray tracing");  // drawn on a terminal only
+    // Where the time to the first PNG goes besides the passes: reading the scene, the renderer's start-up (GL: the context), the PNG.
+    const auto millisecondsSince = [](std::chrono::steady_clock::time_point t) {
+      return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+    };
+    const double loading = millisecondsSince(start);
+    const auto startup = std::chrono::steady_clock::now();
     std::unique_ptr<Renderer> renderer = makeRenderer(*options, progress);
+    const double startingUp = millisecondsSince(startup);
     RenderResult result;
     try {
       result = renderStage(*renderer, scene, frame, stage);
@@ -142,7 +149,9 @@ Command addRenderCommand(CLI::App& app) {
       shadowDiff = compareImages(rays, result.image, DiffThresholds{});
       writePng(options->shadowReport, heatMap(rays, result.image, DiffThresholds{}));
     }
+    const auto writing = std::chrono::steady_clock::now();
     writePng(output, result.image);
+    const double written = millisecondsSince(writing);
     const double total = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
     std::printf("rendered %s: %s, %dx%d, %s shading, %s, shadows %s\n", scene.source.c_str(), countOf(scene.triangleCount(), "triangle").c_str(),
@@ -153,13 +162,16 @@ Command addRenderCommand(CLI::App& app) {
     if (added.isosurface)
       std::printf("volume: %s (marching cubes)\n", countOf(added.isoTriangles, "iso-surface triangle").c_str());
     std::printf("backend: %s\n", renderer->description().c_str());
+    std::printf("  %-28s %9.2f ms\n", "scene and frame inputs", loading);
+    std::printf("  %-28s %9.2f ms\n", options->backend == "gl" ? "context and driver start-up" : "renderer start-up", startingUp);
     for (const PassTiming& t : result.timings) std::printf("  %-28s %9.2f ms\n", t.pass.c_str(), t.milliseconds);
+    std::printf("  %-28s %9.2f ms\n", "PNG encode and write", written);
     for (const std::string& note : result.notes) std::printf("%s\n", note.c_str());
     if (shadowDiff)
       std::printf("shadow report: %lld pixels differ from ray casting, %lld by more than 1 level, at most %d; heat map written to %s\n",
                   static_cast<long long>(shadowDiff->differingPixels), static_cast<long long>(shadowDiff->failingPixels), shadowDiff->maxDifference,
                   options->shadowReport.c_str());
-    std::printf("  %-28s %9.2f ms\n", "total (process)", total);
+    std::printf("  %-28s %9.2f ms\n", "total (command)", total);
     std::printf("image written to %s\n", output.c_str());
     if (probe) {
       const int x = (*probe)[0], y = frame.height - 1 - (*probe)[1];

@@ -17,7 +17,7 @@ packages=(
   xvfb xauth             # the viewer's tests run in a virtual X server
   assimp-testmodels      # real glTF 2.0 files (well-formed and broken) for the tests
   libteem-dev            # NRRD volumes (teem is the format's reference library)
-  zlib1g-dev             # zlib.h: the gzFile type of teem's gzip stream, which the NRRD reader closes itself
+  zlib1g-dev             # zlib: PNG writing (image/png.cpp), and the gzFile type of teem's gzip stream, which the NRRD reader closes itself
   libnifti2-dev          # NIfTI-1 volumes (the NIfTI group's niftiio)
   python3-nibabel        # a small anatomical MRI (nibabel/tests/data/anatomical.nii) the volume tests read
   libembree-dev          # Intel Embree 3: the peer facet bench measures the ray tracer's BVH against

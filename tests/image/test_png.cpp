@@ -66,7 +66,7 @@ std::string refusal(const std::string& bytes) {
   return "";
 }
 
-// A valid 3x2 RGBA file from the writer (stb_image_write: its own CRCs), with a tEXt chunk.
+// A valid 3x2 RGBA file from the writer (its own CRCs), with a tEXt chunk.
 std::string validPng() {
   const std::vector<std::uint8_t> written = encodePng(Image(3, 2, {10, 20, 30, 255}), "t.png");
   std::string bytes(written.begin(), written.end());
