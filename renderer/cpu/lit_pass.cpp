@@ -15,6 +15,7 @@
 #include "cpu/alpha_mask.h"
 #include "cpu/binning.h"
 #include "cpu/blending.h"
+#include "cpu/depth_rows.h"
 #include "cpu/fog.h"
 #include "cpu/bump_mapping.h"
 #include "cpu/interpolation.h"
@@ -427,13 +428,19 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
                               return;
                             }
                             if (!material.masked && !painter) {
-                              rasterizeBlocks(t.snapped, box, [&](int px, int py) {
-                                const float z = interpolation.depthAt(px, py);
-                                const int k = (py - r.y0) * kTileSize + (px - r.x0);
-                                if (!(z < scratch.depth[k])) return;  // LESS
-                                scratch.depth[k] = z;
-                                scratch.id[k] = id;
-                              });
+                              rasterizeBlocks(
+                                  t.snapped, box,
+                                  [&](int px, int py) {
+                                    const float z = interpolation.depthAt(px, py);
+                                    const int k = (py - r.y0) * kTileSize + (px - r.x0);
+                                    if (!(z < scratch.depth[k])) return;  // LESS
+                                    scratch.depth[k] = z;
+                                    scratch.id[k] = id;
+                                  },
+                                  [&](int x0, int x1, int py) {
+                                    const int k = (py - r.y0) * kTileSize + (x0 - r.x0);
+                                    lessRow(interpolation.depthPlane(), x0, x1, py, &scratch.depth[k], &scratch.id[k], id);
+                                  });
                               return;
                             }
                             // Alpha mask: the fragment's alpha decides before it writes depth (alpha_mask.h).

@@ -4,6 +4,7 @@
 
 #include "cpu/alpha_mask.h"
 #include "cpu/binning.h"
+#include "cpu/depth_rows.h"
 #include "cpu/interpolation.h"
 #include "cpu/passes.h"
 #include "cpu/texture_sampling.h"
@@ -70,11 +71,17 @@ void shadowPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, con
                             const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
                             if (!material.castsShadow) return;
                             if (!masksShadow(material)) {
-                              rasterizeBlocks(t.snapped, box, [&](int px, int py) {
-                                const float z = interpolation.depthAt(px, py);
-                                float& stored = depth[static_cast<std::size_t>(py) * static_cast<std::size_t>(size) + static_cast<std::size_t>(px)];
-                                if (z < stored) stored = z;
-                              });
+                              const auto texel = [&](int px, int py) {
+                                return depth + static_cast<std::size_t>(py) * static_cast<std::size_t>(size) + static_cast<std::size_t>(px);
+                              };
+                              rasterizeBlocks(
+                                  t.snapped, box,
+                                  [&](int px, int py) {
+                                    const float z = interpolation.depthAt(px, py);
+                                    float& stored = *texel(px, py);
+                                    if (z < stored) stored = z;
+                                  },
+                                  [&](int x0, int x1, int py) { lessRow(interpolation.depthPlane(), x0, x1, py, texel(x0, py), nullptr, 0); });
                               return;
                             }
                             const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];

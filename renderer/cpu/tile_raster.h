@@ -34,8 +34,12 @@ void forEachTriangleInTile(const std::vector<WorkerBins>& workers, const PassVer
     }
 }
 
-template <class Fragment>
-void rasterizeBlocks(const SnappedTriangle& t, const PixelBox& box, Fragment&& fragment) {
+// fragment(px, py) for each covered pixel of the box, except that a row of
+// a block wholly inside the triangle goes to span(x0, x1, py) at once (the
+// depth tests run it four pixels at a time: depth_rows.h). The pixels of one
+// triangle are distinct, so the order they come in changes nothing.
+template <class Fragment, class Span>
+void rasterizeBlocks(const SnappedTriangle& t, const PixelBox& box, Fragment&& fragment, Span&& span) {
   EdgeFunction edges[3];
   edgeFunctions(t, edges);
   std::int64_t c[3], sx[3], sy[3];  // value at pixel (0, 0), step per pixel in x and in y
@@ -61,8 +65,7 @@ void rasterizeBlocks(const SnappedTriangle& t, const PixelBox& box, Fragment&& f
       }
       if (outside) continue;
       if (inside) {
-        for (int py = y0; py <= y1; ++py)
-          for (int px = x0; px <= x1; ++px) fragment(px, py);
+        for (int py = y0; py <= y1; ++py) span(x0, x1, py);
         continue;
       }
       for (int py = y0; py <= y1; ++py) {
@@ -79,6 +82,13 @@ void rasterizeBlocks(const SnappedTriangle& t, const PixelBox& box, Fragment&& f
       }
     }
   }
+}
+
+template <class Fragment>
+void rasterizeBlocks(const SnappedTriangle& t, const PixelBox& box, Fragment&& fragment) {
+  rasterizeBlocks(t, box, fragment, [&](int x0, int x1, int py) {
+    for (int px = x0; px <= x1; ++px) fragment(px, py);
+  });
 }
 
 }  // namespace facet::cpu

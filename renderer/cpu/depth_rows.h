@@ -1,0 +1,45 @@
+#pragma once
+// The LESS depth test over a run of pixels of one row of one triangle, four
+// pixels at a time where SSE2 is there: each lane's window z is depthAt's
+// (planeAt4: the same two fused multiply-adds; minps then maxps: the same
+// clamp, NaN to 1), compared and written as the one-pixel test does. For
+// the runs rasterizeBlocks hands over whole (tile_raster.h).
+#include <cstdint>
+
+#include "cpu/plane_equations.h"
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+namespace facet::cpu {
+
+// Pixels x0..x1 of row py: where depthAt(z, px, py) < depth[px - x0], that
+// depth takes it, and ids[px - x0] takes `id` when ids is not null.
+inline void lessRow(const Plane& z, int x0, int x1, int py, float* depth, std::uint32_t* ids, std::uint32_t id) {
+  int px = x0;
+#if defined(__SSE2__)
+  const __m128 one = _mm_set1_ps(1.0f), zero = _mm_setzero_ps();
+  const __m128i idLanes = _mm_set1_epi32(static_cast<int>(id));
+  for (; px + 3 <= x1; px += 4) {
+    const __m128 w = _mm_max_ps(_mm_min_ps(planeAt4(z, px, py), one), zero);
+    float* d = depth + (px - x0);
+    const __m128 stored = _mm_loadu_ps(d);
+    const __m128 less = _mm_cmplt_ps(w, stored);
+    if (_mm_movemask_ps(less) == 0) continue;
+    _mm_storeu_ps(d, _mm_or_ps(_mm_and_ps(less, w), _mm_andnot_ps(less, stored)));
+    if (!ids) continue;
+    auto* i = reinterpret_cast<__m128i*>(ids + (px - x0));
+    const __m128i mask = _mm_castps_si128(less);
+    _mm_storeu_si128(i, _mm_or_si128(_mm_and_si128(mask, idLanes), _mm_andnot_si128(mask, _mm_loadu_si128(i))));
+  }
+#endif
+  for (; px <= x1; ++px) {
+    const float w = depthAt(z, px, py);
+    if (!(w < depth[px - x0])) continue;
+    depth[px - x0] = w;
+    if (ids) ids[px - x0] = id;
+  }
+}
+
+}  // namespace facet::cpu
