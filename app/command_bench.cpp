@@ -6,14 +6,16 @@
 //   [SECTION] Memory
 //   [SECTION] The command
 //
-// In one process, for each scene, both backends render `--warmup` frames,
-// then `--frames` frames alternately (cpu, gl, cpu, gl, ...) so background
-// load hits both alike; a frame is one Renderer::render call (GL: scene
-// upload, both passes and the read-back of the image). Peak memory is the
-// VmHWM of a child process (this executable, `bench --child ...`) that builds
-// one scene and renders it with one backend, so each backend's figure is its
-// own. `--callgrind` renders one scene with one backend with callgrind's
-// instrumentation switched on around the frames only.
+// In one process, for each scene, every backend renders `--warmup` frames,
+// then `--frames` frames alternately (cpu, gl, lean, cpu, gl, lean, ...) so
+// background load hits them alike; a frame is one Renderer::render call (GL:
+// scene upload, both passes and the read-back of the image). `lean` is
+// llvmpipe with the plainest programs that draw the same picture
+// (bench_lean_gl.h), a floor for what the gl column's contract costs. Peak
+// memory is the VmHWM of a child process (this executable, `bench --child
+// ...`) that builds one scene and renders it with one backend, so each
+// backend's figure is its own. `--callgrind` renders one scene with one
+// backend with callgrind's instrumentation switched on around the frames only.
 #include <unistd.h>
 
 #include <algorithm>
@@ -42,6 +44,7 @@
 #include "commands.h"
 #include "sample_summary.h"
 #include "common/error.h"
+#include "compare/image_diff.h"
 #include "cpu/cpu_renderer.h"
 #include "ray/ray_renderer.h"
 #include "image/png.h"
@@ -51,6 +54,7 @@
 #include "scene/default_scene.h"
 #include "scene/primitives.h"
 #if FACET_HAVE_GL
+#include "bench_lean_gl.h"
 #include "gl/gl_renderer.h"
 #endif
 
@@ -241,7 +245,7 @@ long statusKilobytes(const char* key) {
 struct BenchOptions {
   std::vector<std::string> scenes;
 #if FACET_HAVE_GL
-  std::vector<std::string> backends{"cpu", "gl"};
+  std::vector<std::string> backends{"cpu", "gl", "lean"};
 #else
   std::vector<std::string> backends{"cpu"};  // a build without OpenGL measures the CPU alone
 #endif
@@ -251,7 +255,7 @@ struct BenchOptions {
   std::string size = "1920x1080";
   int startupRuns = 5;
   bool memory = true;
-  std::string outDir;         // CPU (and GL) images of the last frame, per scene
+  std::string outDir;         // each backend's image of the last frame, per scene
   bool keepShadowMaps = false;  // time frames that keep the maps drawn before (an orbit in the viewer)
   bool callgrind = false;     // instrument frames only; one scene, one backend
   std::string child;          // internal: "scene:backend", print VmHWM
@@ -262,8 +266,40 @@ std::unique_ptr<Renderer> makeBackend(const std::string& backend, int threads) {
   if (backend == "ray") return makeRayRenderer(threads);
 #if FACET_HAVE_GL
   if (backend == "gl") return makeGlRenderer(GlContextKind::OsMesa);
+  if (backend == "lean") return makeLeanGlRenderer();
 #endif
   throw Error("bench: backend '" + backend + "' is not available in this build");
+}
+
+// Why `backend` does not draw the frame (a line of the table), or empty.
+std::string skipNote(const std::string& backend, const Scene& scene, const FrameInputs& frame) {
+#if FACET_HAVE_GL
+  if (backend == "lean") {
+    const std::string why = leanUnsupported(scene, frame);
+    return why.empty() ? std::string() : "lean: no minimal program for this scene (" + why + ")";
+  }
+#else
+  (void)scene;
+#endif
+  // OpenGL does not ray cast volumes; the CPU backend alone draws that scene.
+  if (frame.volume.placed && backend != "cpu") {
+    char line[64];
+    std::snprintf(line, sizeof line, "%-4s does not ray cast volumes", backend.c_str());
+    return line;
+  }
+  return {};
+}
+
+// The lean peer drew the scene the CPU rasterizer drew: their mean difference
+// (R, G, B, 8-bit levels) and the share of pixels where a channel differs by
+// more than 16 levels. Small but not zero: the lean shader's maths is not facet's.
+void printLeanAgainstCpu(const Image& cpu, const Image& lean) {
+  DiffThresholds over16;
+  over16.failThreshold = 16.0 / 255.0;
+  over16.failPercent = 100.0;
+  const DiffResult d = compareImages(cpu, lean, over16);
+  const double mean = (d.channels[0].mean + d.channels[1].mean + d.channels[2].mean) / 3.0;
+  std::printf("  lean vs cpu: mean difference %.3f levels, %.3f %% of pixels differ by more than 16 levels\n", mean, d.failingPercent);
 }
 
 int runChildMode(const BenchOptions& o, int width, int height) {
@@ -302,12 +338,13 @@ Command addBenchCommand(CLI::App& app) {
       ->delimiter(',')
       ->check(CLI::IsMember(allSceneNames()));
   command->add_option("--backends", o->backends,
-                      "cpu,gl (default both), and ray: the ray tracer's frame, its rays by kind and its BVH, against Embree where built with it")
+                      "cpu,gl,lean (default all three): lean is llvmpipe with minimal shaders, bench only; and ray: the ray tracer's frame, "
+                      "its rays by kind and its BVH, against Embree where built with it")
       ->delimiter(',')
-      ->check(CLI::IsMember({"cpu", "gl", "ray"}));
+      ->check(CLI::IsMember({"cpu", "gl", "lean", "ray"}));
   command->add_option("--frames", o->frames, "timed frames per backend and scene")->check(wholeNumberIn(1, 1000));
   command->add_option("--warmup", o->warmup, "untimed frames first")->check(wholeNumberIn(0, 100));
-  command->add_option("--threads", o->threads, "threads of both backends (LP_NUM_THREADS for llvmpipe)")->check(wholeNumberIn(1, 256));
+  command->add_option("--threads", o->threads, "threads of every backend (LP_NUM_THREADS for llvmpipe)")->check(wholeNumberIn(1, 256));
   command->add_option("--size", o->size, "image size WxH");
   command->add_option("--startup-runs", o->startupRuns, "runs of `facet render` per backend for the time to the first PNG (0: skip)")
       ->check(CLI::Range(0, 100));
@@ -350,9 +387,12 @@ Command addBenchCommand(CLI::App& app) {
         base.volume = b.scene.volume;
       }
       const FrameInputs frame = buildFrameInputs(b.scene, b.settings);
-      // OpenGL does not ray cast volumes; the CPU backend alone draws that scene.
+      std::vector<std::string> skipped(renderers.size());
       std::vector<char> skip(renderers.size(), 0);
-      for (std::size_t r = 0; r < renderers.size(); ++r) skip[r] = frame.volume.placed && o->backends[r] != "cpu";
+      for (std::size_t r = 0; r < renderers.size(); ++r) {
+        skipped[r] = skipNote(o->backends[r], b.scene, frame);
+        skip[r] = !skipped[r].empty();
+      }
       const double triangles = static_cast<double>(b.scene.triangleCount());
       std::vector<std::vector<double>> ms(renderers.size()), upload(renderers.size());
       std::vector<RenderResult> last(renderers.size());
@@ -373,14 +413,18 @@ Command addBenchCommand(CLI::App& app) {
       std::printf("\n%s: %.0f triangles, %s shading, %zu light(s), %d shadow map(s) of %d²\n", name.c_str(), triangles,
                   std::string(kShadingModeNames[static_cast<std::size_t>(frame.shading)]).c_str(), frame.lights.size(), frame.shadowLayerCount,
                   frame.shadowLayerCount > 0 ? frame.shadows.mapSize : 0);
-      std::printf("  %-4s %10s %31s %8s %8s %11s %7s\n", "", "ms/frame", "min..max (q1..q3)", "Mtri/s", "peak MB", "ms -upload", "vs gl");
-      double glMedian = 0;
-      for (std::size_t r = 0; r < renderers.size(); ++r)
+      std::printf("  %-4s %10s %31s %8s %8s %11s %7s %8s\n", "", "ms/frame", "min..max (q1..q3)", "Mtri/s", "peak MB", "ms -upload", "vs gl",
+                  "vs lean");
+      double glMedian = 0, leanMedian = 0;
+      for (std::size_t r = 0; r < renderers.size(); ++r) {
+        if (skip[r]) continue;
         if (o->backends[r] == "gl") glMedian = summarize(ms[r]).median;
+        if (o->backends[r] == "lean") leanMedian = summarize(ms[r]).median;
+      }
       printAdditions(added, summarize(adding).median, frame);
       for (std::size_t r = 0; r < renderers.size(); ++r) {
         if (skip[r]) {
-          std::printf("  %-4s does not ray cast volumes\n", o->backends[r].c_str());
+          std::printf("  %s\n", skipped[r].c_str());
           continue;
         }
         const Summary s = summarize(ms[r]);
@@ -396,17 +440,28 @@ Command addBenchCommand(CLI::App& app) {
             if (std::sscanf(out.c_str(), "%ld %ld", &before, &after) == 2) peakMb = static_cast<double>(after) / 1024.0;
           }
         }
-        char ratio[32] = "";
+        char ratio[32] = "", leanRatio[32] = "";
         if (glMedian > 0 && o->backends[r] != "gl") std::snprintf(ratio, sizeof ratio, "%.2f", s.median / glMedian);
+        if (leanMedian > 0 && o->backends[r] != "lean") std::snprintf(leanRatio, sizeof leanRatio, "%.2f", s.median / leanMedian);
         char spread[64];
         std::snprintf(spread, sizeof spread, "%.1f..%.1f (%.1f..%.1f)", s.min, s.max, s.q1, s.q3);
-        std::printf("  %-4s %10.2f %31s %8.2f %8.0f %11.2f %7s\n", o->backends[r].c_str(), s.median, spread, triangles / (s.median * 1e3),
-                    peakMb, summarize(net).median, ratio);
+        char row[256];
+        std::snprintf(row, sizeof row, "  %-4s %10.2f %31s %8.2f %8.0f %11.2f %7s %8s", o->backends[r].c_str(), s.median, spread,
+                      triangles / (s.median * 1e3), peakMb, summarize(net).median, ratio, leanRatio);
+        std::string line = row;
+        line.erase(line.find_last_not_of(' ') + 1);  // a blank ratio column leaves no trailing spaces
+        std::printf("%s\n", line.c_str());
         if (!o->outDir.empty()) writePng(o->outDir + "/" + name + "-" + o->backends[r] + ".png", last[r].image);
         for (const std::string& note : last[r].notes)
           if (note.rfind("volume ray casting", 0) == 0)
             std::printf("       %s; %.3g samples a second\n", note.c_str(), rayCastSamples(note) / (s.median * 1e-3));
       }
+      const auto drawn = [&](const char* backend) -> const RenderResult* {
+        for (std::size_t r = 0; r < renderers.size(); ++r)
+          if (o->backends[r] == backend && !skip[r]) return &last[r];
+        return nullptr;
+      };
+      if (const RenderResult *cpu = drawn("cpu"), *lean = drawn("lean"); cpu && lean) printLeanAgainstCpu(cpu->image, lean->image);
       if (std::find(o->backends.begin(), o->backends.end(), "ray") != o->backends.end()) printRayRates(b.scene, frame, o->threads, o->frames);
       std::fflush(stdout);
     }
@@ -415,6 +470,10 @@ Command addBenchCommand(CLI::App& app) {
       std::printf("\ntime to the first PNG: `facet render -o PNG --backend B` (default scene, default settings), %d runs\n", o->startupRuns);
       const std::string png = "/tmp/facet-bench-startup-" + std::to_string(getpid()) + ".png";
       for (const std::string& backend : o->backends) {
+        if (backend == "lean") {
+          std::printf("  lean  bench only: `facet render` has no lean backend\n");
+          continue;
+        }
         std::vector<double> runs;
         for (int i = 0; i < o->startupRuns; ++i) {
           const auto start = Clock::now();

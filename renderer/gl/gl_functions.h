@@ -21,6 +21,8 @@ namespace facet::gl {
   X(PFNGLBINDVERTEXARRAYPROC, glBindVertexArray)                              \
   X(PFNGLBLENDEQUATIONPROC, glBlendEquation)                                  \
   X(PFNGLBLENDFUNCPROC, glBlendFunc)                                          \
+  X(PFNGLBLENDFUNCSEPARATEPROC, glBlendFuncSeparate)                          \
+  X(PFNGLBLITNAMEDFRAMEBUFFERPROC, glBlitNamedFramebuffer)                    \
   X(PFNGLCHECKNAMEDFRAMEBUFFERSTATUSPROC, glCheckNamedFramebufferStatus)      \
   X(PFNGLCLEARNAMEDFRAMEBUFFERFVPROC, glClearNamedFramebufferfv)              \
   X(PFNGLCLEARNAMEDFRAMEBUFFERUIVPROC, glClearNamedFramebufferuiv)            \
@@ -73,6 +75,7 @@ namespace facet::gl {
   X(PFNGLNAMEDFRAMEBUFFERTEXTURELAYERPROC, glNamedFramebufferTextureLayer)    \
   X(PFNGLNAMEDFRAMEBUFFERTEXTUREPROC, glNamedFramebufferTexture)              \
   X(PFNGLNAMEDRENDERBUFFERSTORAGEPROC, glNamedRenderbufferStorage)            \
+  X(PFNGLNAMEDRENDERBUFFERSTORAGEMULTISAMPLEPROC, glNamedRenderbufferStorageMultisample) \
   X(PFNGLPIXELSTOREIPROC, glPixelStorei)                                      \
   X(PFNGLPROGRAMUNIFORM1FPROC, glProgramUniform1f)                            \
   X(PFNGLPROGRAMUNIFORM1IPROC, glProgramUniform1i)                            \
@@ -81,6 +84,7 @@ namespace facet::gl {
   X(PFNGLPROGRAMUNIFORM2FPROC, glProgramUniform2f)                            \
   X(PFNGLPROGRAMUNIFORM1UIPROC, glProgramUniform1ui)                          \
   X(PFNGLPROGRAMUNIFORM3FVPROC, glProgramUniform3fv)                          \
+  X(PFNGLPROGRAMUNIFORM4FVPROC, glProgramUniform4fv)                          \
   X(PFNGLPROGRAMUNIFORMMATRIX3FVPROC, glProgramUniformMatrix3fv)              \
   X(PFNGLPROGRAMUNIFORMMATRIX4FVPROC, glProgramUniformMatrix4fv)              \
   X(PFNGLREADPIXELSPROC, glReadPixels)                                        \
