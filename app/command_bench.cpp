@@ -395,6 +395,8 @@ Command addBenchCommand(CLI::App& app) {
       }
       const double triangles = static_cast<double>(b.scene.triangleCount());
       std::vector<std::vector<double>> ms(renderers.size()), upload(renderers.size());
+      // Each backend's passes in the order it runs them, with their times over the frames: where its frame goes.
+      std::vector<std::vector<std::pair<std::string, std::vector<double>>>> passes(renderers.size());
       std::vector<RenderResult> last(renderers.size());
       for (std::size_t r = 0; r < renderers.size(); ++r)
         for (int i = 0; i < o->warmup && !skip[r]; ++i) (void)renderers[r]->render(b.scene, frame);
@@ -406,8 +408,12 @@ Command addBenchCommand(CLI::App& app) {
           last[r] = renderers[r]->render(b.scene, frame);
           ms[r].push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
           double up = 0;
-          for (const PassTiming& t : last[r].timings)
+          for (const PassTiming& t : last[r].timings) {
             if (t.pass == "scene upload") up = t.milliseconds;
+            auto at = std::find_if(passes[r].begin(), passes[r].end(), [&](const auto& p) { return p.first == t.pass; });
+            if (at == passes[r].end()) at = passes[r].insert(passes[r].end(), {t.pass, {}});
+            at->second.push_back(t.milliseconds);
+          }
           upload[r].push_back(up);
         }
       std::printf("\n%s: %.0f triangles, %s shading, %zu light(s), %d shadow map(s) of %d²\n", name.c_str(), triangles,
@@ -451,6 +457,13 @@ Command addBenchCommand(CLI::App& app) {
         std::string line = row;
         line.erase(line.find_last_not_of(' ') + 1);  // a blank ratio column leaves no trailing spaces
         std::printf("%s\n", line.c_str());
+        std::string split;
+        for (const auto& [pass, times] : passes[r]) {
+          char part[96];
+          std::snprintf(part, sizeof part, "%s%s %.1f", split.empty() ? "" : ", ", pass.c_str(), summarize(times).median);
+          split += part;
+        }
+        if (!split.empty()) std::printf("       passes, median ms: %s\n", split.c_str());
         if (!o->outDir.empty()) writePng(o->outDir + "/" + name + "-" + o->backends[r] + ".png", last[r].image);
         for (const std::string& note : last[r].notes)
           if (note.rfind("volume ray casting", 0) == 0)
