@@ -21,7 +21,7 @@ Bounds box(glm::vec3 lo, glm::vec3 hi) {
 
 bool insideClip(const glm::vec4& c) { return -c.w <= c.x && c.x <= c.w && -c.w <= c.y && c.y <= c.w && 0.0f <= c.z && c.z <= c.w; }
 
-TEST_CASE("Clip volume: a box beyond one plane misses; one across the volume, or entering it further away, does not") {
+TEST_CASE("Clip volume: a box beyond one plane misses, one across the volume or entering it further away does not") {
   // GL's zero-to-one perspective: 90°, near 1, far 10, looking down -z.
   const glm::mat4 clip = glm::perspectiveRH_ZO(glm::radians(90.0f), 1.0f, 1.0f, 10.0f);
   CHECK(!clipVolumeMisses(clip, box({-1, -1, -5}, {1, 1, -4})));             // in front, inside
