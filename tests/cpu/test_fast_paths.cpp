@@ -16,6 +16,7 @@
 #include <doctest/doctest.h>
 
 #include "cpu/cpu_renderer.h"
+#include "cpu/depth_rows.h"
 #include "cpu/lighting.h"
 #include "cpu/phong_batch.h"
 #include "cpu/resolve.h"
@@ -216,4 +217,25 @@ TEST_CASE("Phong batch: four lanes at a time give the bits of illuminate<float>,
       for (int i = 0; i < kPixels; ++i) levels.insert(encodeLevel(scalar.at(i, 0).r));
       CHECK(levels.size() > 100);
     }
+}
+
+TEST_CASE("Depth rows: lessRow's four-lane test writes the depths and ids the one-pixel test writes") {
+  std::mt19937 random(31);
+  std::uniform_real_distribution<float> unit(-0.2f, 1.2f), slope(-0.01f, 0.01f);
+  for (int trial = 0; trial < 500; ++trial) {
+    const cpu::Plane z{unit(random), slope(random), slope(random)};
+    const int x0 = trial % 13, x1 = x0 + trial % 29, py = trial % 7;
+    float fast[64], plain[64];
+    std::uint32_t fastIds[64], plainIds[64];
+    for (int i = 0; i < 64; ++i) fast[i] = plain[i] = unit(random), fastIds[i] = plainIds[i] = 7;
+    if (trial % 11 == 0) fast[3] = plain[3] = std::numeric_limits<float>::quiet_NaN();  // a NaN depth keeps nothing out: !(z < NaN)
+    for (int px = x0; px <= x1; px += 3) fast[px - x0] = plain[px - x0] = cpu::depthAt(z, px, py);  // equal depths: LESS keeps the first
+    cpu::lessRow(z, x0, x1, py, fast, fastIds, 9);
+    for (int px = x0; px <= x1; ++px) {
+      const float d = cpu::depthAt(z, px, py);
+      if (d < plain[px - x0]) plain[px - x0] = d, plainIds[px - x0] = 9;
+    }
+    CHECK(std::memcmp(fast, plain, sizeof fast) == 0);
+    CHECK(std::memcmp(fastIds, plainIds, sizeof fastIds) == 0);
+  }
 }
