@@ -2,24 +2,25 @@
 // side, on the same scenes at the same thread count.
 //
 // Index of this file
-//   [SECTION] Memory
+//   [SECTION] Figures of the stages the settings add
 //   [SECTION] The command
 //
 // In one process, for each scene, both backends render `--warmup` frames,
 // then `--frames` frames alternately (cpu, gl, cpu, gl, ...) so background
 // load hits both alike; a frame is one Renderer::render call (GL: scene
-// upload, both passes and the read-back of the image). Peak memory is the
-// VmHWM of a child process (this executable, `bench --child ...`) that builds
-// one scene and renders it with one backend, so each backend's figure is its
-// own. `--callgrind` renders one scene with one backend with callgrind's
-// instrumentation switched on around the frames only.
+// upload, both passes and the read-back of the image). Peak memory is that
+// of a child process (this executable, `bench --child ...`) that builds one
+// scene and renders it with one backend, so each backend's figure is its
+// own: wait4's ru_maxrss, measured for every scene before this process
+// builds any (bench_memory.h). `--callgrind` renders one scene with one
+// backend with callgrind's instrumentation switched on around the frames
+// only.
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -32,6 +33,7 @@
 #define CALLGRIND_ZERO_STATS
 #endif
 
+#include "bench_memory.h"
 #include "bench_scenes.h"
 #include "child_process.h"
 #include "command_line.h"
@@ -71,17 +73,6 @@ void printAdditions(const SceneAdditions& added, double milliseconds, const Fram
   if (frame.volume.placed) std::printf("  volume: placed in %.2f ms (median)\n", milliseconds);
 }
 
-// [SECTION] Memory
-
-long statusKilobytes(const char* key) {
-  std::ifstream in("/proc/self/status");
-  std::string line;
-  const std::string prefix = std::string(key) + ":";
-  while (std::getline(in, line))
-    if (line.rfind(prefix, 0) == 0) return std::atol(line.c_str() + prefix.size());
-  return -1;
-}
-
 // [SECTION] The command
 
 struct BenchOptions {
@@ -99,7 +90,7 @@ struct BenchOptions {
   bool memory = true;
   std::string outDir;         // CPU (and GL) images of the last frame, per scene
   bool callgrind = false;     // instrument frames only; one scene, one backend
-  std::string child;          // internal: "scene:backend", print VmHWM
+  std::string child;          // internal: "scene:backend", render, print nothing
 };
 
 std::unique_ptr<Renderer> makeBackend(const std::string& backend, int threads) {
@@ -111,14 +102,20 @@ std::unique_ptr<Renderer> makeBackend(const std::string& backend, int threads) {
   throw Error("bench: backend '" + backend + "' is not available in this build");
 }
 
+// OpenGL does not ray cast volumes; the CPU backend alone draws that scene.
+bool skips(const FrameInputs& frame, const std::string& backend) { return frame.volume.placed && backend != "cpu"; }
+
+// What the parent measures (wait4) is this process's peak: it prints nothing.
 int runChildMode(const BenchOptions& o, int width, int height) {
-  const std::size_t colon = o.child.find(':');
-  const BenchScene b = makeBenchScene(o.child.substr(0, colon), width, height);
+  const std::size_t colon = o.child.rfind(':');
+  const std::string backend = o.child.substr(colon + 1);
+  BenchScene b = makeBenchScene(o.child.substr(0, colon), width, height);
+  SceneAdditions added;
+  b.settings = addVolumeAndParticles(b.scene, b.settings, added, o.threads);
   const FrameInputs frame = buildFrameInputs(b.scene, b.settings);
-  const long before = statusKilobytes("VmHWM");
-  std::unique_ptr<Renderer> renderer = makeBackend(o.child.substr(colon + 1), o.threads);
+  if (skips(frame, backend)) return 1;
+  std::unique_ptr<Renderer> renderer = makeBackend(backend, o.threads);
   for (int i = 0; i < std::max(1, o.warmup + 1); ++i) (void)renderer->render(b.scene, frame);
-  std::printf("%ld %ld\n", before, statusKilobytes("VmHWM"));
   return 0;
 }
 
@@ -157,7 +154,7 @@ Command addBenchCommand(CLI::App& app) {
   command->add_option("--out", o->outDir, "write each backend's last frame per scene as DIR/<scene>-<backend>.png")
       ->check(CLI::ExistingDirectory);
   command->add_flag("--callgrind", o->callgrind, "instrument the timed frames only (run under valgrind --tool=callgrind --instr-atstart=no)");
-  command->add_option("--child", o->child, "internal: scene:backend, print VmHWM")->group("");
+  command->add_option("--child", o->child, "internal: scene:backend, render for the parent's peak memory")->group("");
   return [o]() {
     // llvmpipe reads LP_NUM_THREADS when its screen is created: before any context.
     setenv("LP_NUM_THREADS", std::to_string(o->threads).c_str(), 1);
@@ -166,15 +163,22 @@ Command addBenchCommand(CLI::App& app) {
     if (o->scenes.empty()) o->scenes = allSceneNames();
     if (!o->child.empty()) return runChildMode(*o, width, height);
     if (o->callgrind) return runCallgrindMode(*o, width, height);
+    const std::string self = selfPath();
+    // Peak memory first, while this process is small (bench_memory.h).
+    std::vector<std::vector<double>> peakMb(o->scenes.size(), std::vector<double>(o->backends.size(), -1.0));
+    for (std::size_t s = 0; s < o->scenes.size() && o->memory; ++s)
+      for (std::size_t r = 0; r < o->backends.size(); ++r)
+        peakMb[s][r] = benchChildPeakMegabytes(
+            {"--child", o->scenes[s] + ":" + o->backends[r], "--threads", std::to_string(o->threads), "--size", o->size, "--warmup", "1"});
 
     std::vector<std::unique_ptr<Renderer>> renderers;
     for (const std::string& backend : o->backends) renderers.push_back(makeBackend(backend, o->threads));
     std::printf("facet bench: %dx%d, %d thread(s), %d warm-up + %d timed frames per backend, alternating\n", width, height, o->threads,
                 o->warmup, o->frames);
     for (std::size_t r = 0; r < renderers.size(); ++r) std::printf("  %-4s %s\n", o->backends[r].c_str(), renderers[r]->description().c_str());
-    const std::string self = selfPath();
 
-    for (const std::string& name : o->scenes) {
+    for (std::size_t sceneIndex = 0; sceneIndex < o->scenes.size(); ++sceneIndex) {
+      const std::string& name = o->scenes[sceneIndex];
       BenchScene b = makeBenchScene(name, width, height);
       // What the settings add (particles, a volume's mesh or sprites), timed over the frames as its own stage.
       // The first run reads the volume (kept for the others) and is not timed.
@@ -192,7 +196,7 @@ Command addBenchCommand(CLI::App& app) {
       const FrameInputs frame = buildFrameInputs(b.scene, b.settings);
       // OpenGL does not ray cast volumes; the CPU backend alone draws that scene.
       std::vector<char> skip(renderers.size(), 0);
-      for (std::size_t r = 0; r < renderers.size(); ++r) skip[r] = frame.volume.placed && o->backends[r] != "cpu";
+      for (std::size_t r = 0; r < renderers.size(); ++r) skip[r] = skips(frame, o->backends[r]);
       const double triangles = static_cast<double>(b.scene.triangleCount());
       std::vector<std::vector<double>> ms(renderers.size()), upload(renderers.size());
       std::vector<RenderResult> last(renderers.size());
@@ -225,22 +229,12 @@ Command addBenchCommand(CLI::App& app) {
         const Summary s = summarize(ms[r]);
         std::vector<double> net;
         for (std::size_t i = 0; i < ms[r].size(); ++i) net.push_back(ms[r][i] - upload[r][i]);
-        double peakMb = -1;
-        if (o->memory) {
-          std::string out;
-          if (runChild({self, "bench", "--child", name + ":" + o->backends[r], "--threads", std::to_string(o->threads), "--size", o->size,
-                        "--warmup", "1"},
-                       &out) == 0) {
-            long before = 0, after = 0;
-            if (std::sscanf(out.c_str(), "%ld %ld", &before, &after) == 2) peakMb = static_cast<double>(after) / 1024.0;
-          }
-        }
         char ratio[32] = "";
         if (glMedian > 0 && o->backends[r] != "gl") std::snprintf(ratio, sizeof ratio, "%.2f", s.median / glMedian);
         char spread[64];
         std::snprintf(spread, sizeof spread, "%.1f..%.1f (%.1f..%.1f)", s.min, s.max, s.q1, s.q3);
         std::printf("  %-4s %10.2f %31s %8.2f %8.0f %11.2f %7s\n", o->backends[r].c_str(), s.median, spread, triangles / (s.median * 1e3),
-                    peakMb, summarize(net).median, ratio);
+                    peakMb[sceneIndex][r], summarize(net).median, ratio);
         if (!o->outDir.empty()) writePng(o->outDir + "/" + name + "-" + o->backends[r] + ".png", last[r].image);
         for (const std::string& note : last[r].notes)
           if (note.rfind("volume ray casting", 0) == 0)
