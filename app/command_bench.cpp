@@ -14,7 +14,7 @@
 // own: wait4's ru_maxrss, measured for every scene before this process
 // builds any (bench_memory.h). `--callgrind` renders one scene with one
 // backend with callgrind's instrumentation switched on around the frames
-// only.
+// only. `--sweep` (bench_sweep.h) grows triangles, pixels and lights instead.
 #include <unistd.h>
 
 #include <algorithm>
@@ -35,6 +35,7 @@
 
 #include "bench_memory.h"
 #include "bench_scenes.h"
+#include "bench_sweep.h"
 #include "child_process.h"
 #include "command_line.h"
 #include "bench_rays.h"
@@ -90,7 +91,8 @@ struct BenchOptions {
   bool memory = true;
   std::string outDir;         // CPU (and GL) images of the last frame, per scene
   bool callgrind = false;     // instrument frames only; one scene, one backend
-  std::string child;          // internal: "scene:backend", render, print nothing
+  std::string child;          // internal: "scene:backend" (with --sweep "axis=point:backend"), render, print nothing
+  SweepOptions sweep;
 };
 
 std::unique_ptr<Renderer> makeBackend(const std::string& backend, int threads) {
@@ -109,7 +111,7 @@ bool skips(const FrameInputs& frame, const std::string& backend) { return frame.
 int runChildMode(const BenchOptions& o, int width, int height) {
   const std::size_t colon = o.child.rfind(':');
   const std::string backend = o.child.substr(colon + 1);
-  BenchScene b = makeBenchScene(o.child.substr(0, colon), width, height);
+  BenchScene b = o.sweep.enabled ? sweepPointScene(o.sweep, o.child.substr(0, colon)) : makeBenchScene(o.child.substr(0, colon), width, height);
   SceneAdditions added;
   b.settings = addVolumeAndParticles(b.scene, b.settings, added, o.threads);
   const FrameInputs frame = buildFrameInputs(b.scene, b.settings);
@@ -155,6 +157,7 @@ Command addBenchCommand(CLI::App& app) {
       ->check(CLI::ExistingDirectory);
   command->add_flag("--callgrind", o->callgrind, "instrument the timed frames only (run under valgrind --tool=callgrind --instr-atstart=no)");
   command->add_option("--child", o->child, "internal: scene:backend, render for the parent's peak memory")->group("");
+  addSweepOptions(*command, o->sweep);
   return [o]() {
     // llvmpipe reads LP_NUM_THREADS when its screen is created: before any context.
     setenv("LP_NUM_THREADS", std::to_string(o->threads).c_str(), 1);
@@ -163,6 +166,9 @@ Command addBenchCommand(CLI::App& app) {
     if (o->scenes.empty()) o->scenes = allSceneNames();
     if (!o->child.empty()) return runChildMode(*o, width, height);
     if (o->callgrind) return runCallgrindMode(*o, width, height);
+    if (o->sweep.enabled)
+      return runSweep(o->sweep, {o->backends, o->threads, o->frames, o->warmup, o->memory,
+                                 [o](const std::string& backend) { return makeBackend(backend, o->threads); }});
     const std::string self = selfPath();
     // Peak memory first, while this process is small (bench_memory.h).
     std::vector<std::vector<double>> peakMb(o->scenes.size(), std::vector<double>(o->backends.size(), -1.0));
