@@ -1,7 +1,9 @@
 #include "child_process.h"
 
 #include <fcntl.h>
+#include <errno.h>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -11,7 +13,7 @@ extern char** environ;
 
 namespace facet {
 
-int runChild(const std::vector<std::string>& args, std::string* out) {
+int runChild(const std::vector<std::string>& args, std::string* out, long* peakKilobytes) {
   std::vector<char*> argv;
   for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
@@ -37,7 +39,10 @@ int runChild(const std::vector<std::string>& args, std::string* out) {
   }
   if (spawned != 0) throw Error("cannot run " + args[0]);
   int status = 0;
-  waitpid(pid, &status, 0);
+  rusage usage{};
+  while (wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
+  }
+  if (peakKilobytes) *peakKilobytes = usage.ru_maxrss;  // Linux counts it in KB
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
 }
 
