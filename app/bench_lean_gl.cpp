@@ -515,15 +515,7 @@ class LeanGlRenderer final : public Renderer {
       throw Error(std::string("lean: ") + what + " is not complete");
   }
 
-  void checkError(const char* where) const {
-    const GLenum error = gl_.glGetError();
-    if (error == GL_NO_ERROR) return;
-    while (gl_.glGetError() != GL_NO_ERROR) {
-    }
-    char code[16];
-    std::snprintf(code, sizeof code, "0x%04x", error);
-    throw Error(std::string("lean: OpenGL error ") + code + " in " + where);
-  }
+  void checkError(const char* where) const { gl::checkGlError(gl_, where, "lean: "); }
 
   // Declared first: the GL objects below go before the function table, and the table before the context.
   std::unique_ptr<gl::HeadlessContext> context_;

@@ -694,15 +694,7 @@ void GlFrameRenderer::setMapUniforms(const LitProgram& lit, const CourseMaterial
                          material.emissiveMap.srgb ? 1 : 0, material.normalMap.srgb ? 1 : 0);
 }
 
-void GlFrameRenderer::checkError(const char* where) const {
-  const GLenum error = gl_.glGetError();
-  if (error == GL_NO_ERROR) return;
-  while (gl_.glGetError() != GL_NO_ERROR) {
-  }
-  char code[16];
-  std::snprintf(code, sizeof code, "0x%04x", error);
-  throw Error(std::string("OpenGL error ") + code + " in " + where);
-}
+void GlFrameRenderer::checkError(const char* where) const { checkGlError(gl_, where); }
 
 
 }  // namespace facet::gl

@@ -1,5 +1,7 @@
 #include "gl/gl_functions.h"
 
+#include <cstdio>
+
 #include "common/error.h"
 
 namespace facet::gl {
@@ -27,6 +29,16 @@ std::string rendererAndVersion(const GlFunctions& gl) {
     return std::string(s ? s : "?");
   };
   return text(GL_RENDERER) + ", " + text(GL_VERSION);
+}
+
+void checkGlError(const GlFunctions& gl, const char* where, const std::string& who) {
+  const GLenum error = gl.glGetError();
+  if (error == GL_NO_ERROR) return;
+  while (gl.glGetError() != GL_NO_ERROR) {
+  }
+  char code[16];
+  std::snprintf(code, sizeof code, "0x%04x", error);
+  throw Error(who + "OpenGL error " + code + " in " + where);
 }
 
 GLint getInteger(const GlFunctions& gl, GLenum name) {

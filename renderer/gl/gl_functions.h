@@ -120,4 +120,8 @@ std::string rendererAndVersion(const GlFunctions& gl);
 // One glGetIntegerv value.
 GLint getInteger(const GlFunctions& gl, GLenum name);
 
+// Throws facet::Error "<who>OpenGL error 0x0502 in <where>" when the context
+// has an error flag set, after clearing every flag.
+void checkGlError(const GlFunctions& gl, const char* where, const std::string& who = "");
+
 }  // namespace facet::gl
