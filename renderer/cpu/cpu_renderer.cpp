@@ -52,7 +52,7 @@ class CpuRenderer final : public Renderer {
     // One pass into the colour buffer: the background, then the lit pass.
     const auto drawPass = [&](const FrameInputs& pass) {
       color_.reset(pass.width, pass.height, cpu::backgroundPixel(pass, 0, 0));
-      if (cpu::showsEnvironment(pass))  // the map behind everything, in each pixel's view direction
+      if (showsEnvironment(pass))  // the map behind everything, in each pixel's view direction
         cpu::forEachRange(pool_, static_cast<std::size_t>(pass.height), [&](std::size_t begin, std::size_t end, int) {
           for (std::size_t y = begin; y < end; ++y)
             for (int x = 0; x < pass.width; ++x) color_.at(x, static_cast<int>(y)) = cpu::backgroundPixel(pass, x, static_cast<int>(y));

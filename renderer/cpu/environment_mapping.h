@@ -32,9 +32,6 @@ inline glm::vec3 environmentAt(const EnvironmentMap& map, glm::vec3 D, int level
   return glm::vec3(sampleRegion(map.level(level), TexelEncoding::Srgb, {face * n, 0}, {n, n}, true, Wrap::ClampToEdge, Wrap::ClampToEdge, {s, t}));
 }
 
-// Whether empty pixels show the map rather than the background colour.
-inline bool showsEnvironment(const FrameInputs& frame) { return frame.environment.map && frame.environment.background; }
-
 // The linear colour of empty pixel (px, py) seen at `offset` from its centre:
 // env(D), D = (F + x·X) + y·Y with x, y that position in NDC, where the frame
 // shows its map; else the background.

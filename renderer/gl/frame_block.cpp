@@ -25,7 +25,7 @@ FrameBlock makeFrameBlock(const FrameInputs& frame) {
   block.towardEye = glm::vec4(frame.towardEye, 0.0f);
   block.ambient = glm::vec4(frame.ambient, frame.proceduralScale, frame.bump.scale, 0.0f);
   const FrameInputs::Environment& e = frame.environment;
-  block.environment = glm::vec4(e.reflectivity, e.map ? 1.0f : 0.0f, e.map && e.background ? 1.0f : 0.0f,
+  block.environment = glm::vec4(e.reflectivity, e.map ? 1.0f : 0.0f, showsEnvironment(frame) ? 1.0f : 0.0f,
                                 e.map ? static_cast<float>(e.map->levelCount() - 1) : 0.0f);
   for (std::size_t k = 0; k < block.irradiance.size(); ++k) block.irradiance[k] = glm::vec4(e.map ? e.map->irradiance[k] : glm::vec3(0.0f), 0.0f);
   block.backgroundForward = glm::vec4(e.forward, 0.0f);

@@ -13,6 +13,7 @@
 
 #include "common/error.h"
 #include "gl/shader_variant.h"
+#include "cpu/blending.h"
 #include "pipeline/antialiasing.h"
 #include "pipeline/clip_volume.h"
 #include "pipeline/stage_frames.h"
@@ -474,6 +475,11 @@ void GlFrameRenderer::litPass(const FrameInputs& frame, LitOutput output) {
   if (output == LitOutput::Normal) {
     const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     gl_.glClearNamedFramebufferfv(target_.framebuffer(), GL_COLOR, 0, none);
+  } else if (!showsEnvironment(frame)) {
+    // One colour everywhere: a clear to the value background.frag would write at every pixel, stored
+    // by the C++ mirror of blending.glsl (the same product), instead of a full-frame draw.
+    const glm::vec4 held = cpu::stored(frame.background, frame.backgroundAlpha, frame.blending);
+    gl_.glClearNamedFramebufferfv(target_.framebuffer(), GL_COLOR, 0, glm::value_ptr(held));
   } else {
     gl_.glUseProgram(backgroundProgram_->id());
     gl_.glProgramUniform2f(backgroundProgram_->id(), backgroundViewportSize_, static_cast<float>(frame.width),

@@ -147,4 +147,7 @@ void placeInstances(const Scene& scene, float time, FrameInputs& frame);
 // kMaxLights and a warning.
 FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings);
 
+// Whether empty pixels show the environment map rather than the background colour.
+inline bool showsEnvironment(const FrameInputs& frame) { return frame.environment.map && frame.environment.background; }
+
 }  // namespace facet
