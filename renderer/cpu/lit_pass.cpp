@@ -252,13 +252,28 @@ void blendTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
     Interpolation& in = triangle.interpolation;
     in.setUpVaryings(layout.model);
     TileRect drawn{r.x1 + 1, r.y1 + 1, r.x0 - 1, r.y0 - 1};  // the pixels it reaches, as a box
-    rasterizeBlocks(t.snapped, blended.box, [&](int px, int py) {
+    // A fragment in front of the opaque surfaces (LESS, no depth write) takes its pixel, with its alpha.
+    const auto inFront = [&](int px, int py) {
       const int k = (py - r.y0) * kTileSize + (px - r.x0);
-      if (!(in.depthAt(px, py) < scratch.depth[k])) return;  // LESS, against the opaque surfaces; no depth write
+      if (!(in.depthAt(px, py) < scratch.depth[k])) return false;
       scratch.fragment[k] = blended.id;
       scratch.alpha[k] = fragmentAlphaAt(material, texture, colored, layout, in, px, py);
-      drawn = {std::min(drawn.x0, px), std::min(drawn.y0, py), std::max(drawn.x1, px), std::max(drawn.y1, py)};
-    });
+      return true;
+    };
+    const auto reach = [&](int x0, int x1, int py) {
+      drawn = {std::min(drawn.x0, x0), std::min(drawn.y0, py), std::max(drawn.x1, x1), std::max(drawn.y1, py)};
+    };
+    rasterizeBlocks(
+        t.snapped, blended.box,
+        [&](int px, int py) {
+          if (inFront(px, py)) reach(px, px, py);
+        },
+        [&](int x0, int x1, int py) {  // a row of a block wholly inside: the box grows once for the pixels it took
+          int first = x1 + 1, last = x0 - 1;
+          for (int px = x0; px <= x1; ++px)
+            if (inFront(px, py)) first = std::min(first, px), last = px;
+          if (first <= last) reach(first, last, py);
+        });
     if (drawn.x0 > drawn.x1) continue;
     shadeIn(scene, frame, maps, scratch, scratch.fragment, r, drawn, fragments);
     for (int py = drawn.y0; py <= drawn.y1; ++py)
