@@ -37,6 +37,8 @@ struct Run {
   int status = 0;
   bool sawTemporary = false;  // the temporary name appeared before the signal went out
   double seconds = 0;
+  double temporaryAt = -1;  // seconds from the start to the temporary name's creation, when it was seen
+  double finalAt = -1;      // seconds from the start to the first rename into the watched folder
 };
 
 // Runs `args`; sends `signal` when a name starting with `prefix` is created
@@ -45,7 +47,7 @@ struct Run {
 Run runAndInterrupt(const std::vector<std::string>& args, const fs::path& watched, const std::string& prefix, int signal,
                     std::chrono::microseconds delay, std::chrono::microseconds extraDelay) {
   const int notify = ::inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
-  if (notify < 0 || ::inotify_add_watch(notify, watched.c_str(), IN_CREATE) < 0) throw std::runtime_error("inotify failed");
+  if (notify < 0 || ::inotify_add_watch(notify, watched.c_str(), IN_CREATE | IN_MOVED_TO) < 0) throw std::runtime_error("inotify failed");
   const auto start = std::chrono::steady_clock::now();
   const pid_t pid = ::fork();
   if (pid == 0) {
@@ -80,7 +82,11 @@ Run runAndInterrupt(const std::vector<std::string>& args, const fs::path& watche
       for (ssize_t at = 0; at < n;) {
         const auto* event = reinterpret_cast<const inotify_event*>(buffer + at);
         const std::string name = event->len > 0 ? event->name : "";
-        if (!sent && !prefix.empty() && name.rfind(prefix, 0) == 0) {
+        const double now = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if ((event->mask & IN_MOVED_TO) && run.finalAt < 0) run.finalAt = now;
+        const bool matches = (event->mask & IN_CREATE) && !prefix.empty() && name.rfind(prefix, 0) == 0;
+        if (matches && run.temporaryAt < 0) run.temporaryAt = now;
+        if (!sent && matches) {
           std::this_thread::sleep_for(extraDelay);
           run.sawTemporary = true;
           ::kill(pid, signal);
@@ -101,6 +107,11 @@ std::vector<std::string> hidden(const fs::path& dir) {
   for (const auto& entry : fs::recursive_directory_iterator(dir))
     if (entry.path().filename().string().starts_with(".")) out.push_back(entry.path().string());
   return out;
+}
+
+// How long the uninterrupted diff spent writing its report.
+double reportWriting(const Run& run) {
+  return run.temporaryAt >= 0 && run.finalAt >= run.temporaryAt ? run.finalAt - run.temporaryAt : 0;
 }
 
 bool endedAsExpected(const Run& run, int signal) {
@@ -165,7 +176,7 @@ int main(int argc, char** argv) {
   // One whole run of each first: how long the random moments may be.
   const Run whole = runAndInterrupt(render, work / "render", "", 0, {}, {});
   if (!WIFEXITED(whole.status) || WEXITSTATUS(whole.status) != 0) fail("an uninterrupted render failed");
-  const Run wholeDiff = runAndInterrupt(diff, work / "diff", "", 0, {}, {});
+  const Run wholeDiff = runAndInterrupt(diff, work / "diff", ".report.", 0, {}, {});
   if (!WIFEXITED(wholeDiff.status) || WEXITSTATUS(wholeDiff.status) != 2) fail("an uninterrupted diff did not end in FAILURE (2)");
   checkPng(png, "whole");
   checkReport(report, "whole");
@@ -189,8 +200,15 @@ int main(int argc, char** argv) {
     const int signal = round % 2 ? SIGINT : SIGTERM;
     const std::string name = "diff round " + std::to_string(round);
     if (round % 3 != 2) fs::remove_all(report);
-    // Some time into the report, while its images are being written.
-    const auto extra = std::chrono::microseconds(static_cast<long>(random() % static_cast<unsigned>(wholeDiff.seconds * 0.8e6 + 1)));
+    // Some time into the report, while its images are being written: within
+    // the first 80 % of the write phase of the whole run, from the temporary
+    // folder's creation to its rename (not the process's exit, which under a
+    // sanitizer may take longer than the write).
+    const double writing = reportWriting(wholeDiff);
+    // The first round signals as the folder appears, so that one hit does not
+    // hang on the draw of random moments.
+    const long drawn = static_cast<long>(random() % static_cast<unsigned>(writing * 0.8e6 + 1));
+    const auto extra = std::chrono::microseconds(round == 0 ? 0 : drawn);
     const Run run = runAndInterrupt(diff, work / "diff", ".report.", signal, {}, extra);
     if (!endedAsExpected(run, signal) && !(WIFEXITED(run.status) && WEXITSTATUS(run.status) == 2))
       fail(name + ": ended with status " + std::to_string(run.status));
@@ -201,7 +219,7 @@ int main(int argc, char** argv) {
   // Without a hit the test would pass with no handler at all.
   if (renderHits == 0) fail("no render was interrupted while its PNG was being written");
   if (reportHits == 0) fail("no diff was interrupted while its report was being written");
-  std::printf("whole runs: render %.2f s, diff %.2f s; %d render rounds and %d report rounds interrupted mid-write; %s\n", whole.seconds,
-              wholeDiff.seconds, renderHits, reportHits, failures ? "FAILED" : "nothing left behind");
+  std::printf("whole runs: render %.2f s, diff %.2f s (report written in %.3f s); %d render rounds and %d report rounds interrupted mid-write; %s\n", whole.seconds,
+              wholeDiff.seconds, reportWriting(wholeDiff), renderHits, reportHits, failures ? "FAILED" : "nothing left behind");
   return failures == 0 ? 0 : 1;
 }
