@@ -1,76 +1,16 @@
 // facet: the course's rendering pipeline, headless or in a window.
 //   scene file -> Scene -> (OpenGL | CPU) backend -> Image -> comparison
-#include <cstdio>
-#include <exception>
-#include <map>
-#include <stdexcept>
-#include <string>
-
-#include <CLI/CLI.hpp>
-
+// This executable links no window system: `facet view` runs facet-view.
+#include "command_main.h"
 #include "commands.h"
-#include "common/error.h"
-#include "common/quote.h"
-#include "exit_status.h"
-
-namespace {
-
-// CLI11 reads a word that names no subcommand as a stray argument and then
-// says "A subcommand is required"; the word itself is the problem.
-void checkCommandName(CLI::App& app, int argc, char** argv) {
-  if (argc < 2 || argv[1][0] == '-') return;
-  std::string names;
-  for (const CLI::App* sub : app.get_subcommands({})) {
-    if (sub->check_name(argv[1])) return;
-    names += (names.empty() ? "" : ", ") + sub->get_name();
-  }
-  throw facet::UsageError("unknown command " + facet::quoteInput(argv[1]) + " (commands: " + names + "; see facet --help)");
-}
-
-int run(int argc, char** argv) {
-  CLI::App app{"facet: a course rendering pipeline with an OpenGL backend and a CPU reference"};
-  app.require_subcommand(1);
-  std::map<CLI::App*, facet::Command> commands;
-  const auto add = [&](facet::Command command) { commands[app.get_subcommands({}).back()] = std::move(command); };
-  add(facet::addInfoCommand(app));
-  add(facet::addSettingsCommand(app));
-  add(facet::addRenderCommand(app));
-  add(facet::addDiffCommand(app));
-  add(facet::addBenchCommand(app));
-#if FACET_HAVE_VIEWER
-  add(facet::addViewCommand(app));
-#endif
-  app.footer(
-      "Exit codes: 0 success (facet diff: idiff's 0-4, see facet diff --help), 1 bad input (a file, a frame), 64 a wrong "
-      "command line, 70 an internal error or out of memory.");
-
-  checkCommandName(app, argc, argv);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    // 64 (EX_USAGE): distinct from `facet diff`'s 1 (warning) and 2 (failure).
-    facet::printErrorLine(stderr, "", e.what(), " (see facet --help)");
-    return facet::kExitUsage;
-  }
-  for (auto& [subcommand, command] : commands)
-    if (subcommand->parsed()) return command();
-  throw std::logic_error("the command line parsed, but no command ran");  // require_subcommand(1) rules it out
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
-  // Every exception a command lets through ends here, as one line and an
-  // exit code (app/exit_status.h): bad input 1 or 64, anything else 70.
-  try {
-    return run(argc, argv);
-  } catch (...) {
-    return facet::reportError(std::current_exception(), stderr);
-  }
+  return facet::runCommands(argc, argv,
+                            {
+                                facet::addInfoCommand, facet::addSettingsCommand, facet::addRenderCommand, facet::addDiffCommand,
+                                facet::addBenchCommand,
+#if FACET_HAVE_VIEWER
+                                facet::addViewLauncher,
+#endif
+                            });
 }

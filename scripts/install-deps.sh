@@ -22,6 +22,7 @@ packages=(
   python3-nibabel        # a small anatomical MRI (nibabel/tests/data/anatomical.nii) the volume tests read
   libembree-dev          # Intel Embree 3: the peer facet bench measures the ray tracer's BVH against
   clang libclang-rt-14-dev  # libFuzzer and its sanitizer runtimes (scripts/fuzz.sh)
+  help2man               # the man page, written from facet --help (packaging/man_page.sh)
 )
 
 missing=()

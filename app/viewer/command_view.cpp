@@ -36,8 +36,7 @@ struct ViewCommandOptions {
 
 Command addViewCommand(CLI::App& app) {
   auto options = std::make_shared<ViewCommandOptions>();
-  CLI::App* command = app.add_subcommand(
-      "view", "Open the scene in a window (OpenGL 4.5): a panel for every setting, an orbit camera, the CPU reference beside the GL image");
+  CLI::App* command = app.add_subcommand("view", std::string(kViewSummary));
   addCommonOptions(*command, options->common, "where F12 and Ctrl+S write screenshots (default: facet-view-N.png, the first N not taken)");
   CLI::Option* screenshot = command->add_option(
       "--screenshot", options->screenshot, "draw --frames frames, write the 3D view (without the panel) to this PNG, and exit");
