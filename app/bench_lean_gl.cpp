@@ -251,11 +251,11 @@ class LeanGlRenderer final : public Renderer {
       start = Clock::now();
     }
 
-    gl_.glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // facet's projections give clip z in [0, w]
-    gl_.glFrontFace(GL_CCW);
-    gl_.glCullFace(GL_BACK);
-    gl_.glEnable(GL_DEPTH_TEST);
-    gl_.glDepthFunc(GL_LESS);
+    gl_.ClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // facet's projections give clip z in [0, w]
+    gl_.FrontFace(GL_CCW);
+    gl_.CullFace(GL_BACK);
+    gl_.Enable(GL_DEPTH_TEST);
+    gl_.DepthFunc(GL_LESS);
     // The maps are kept while the frame's pass 1 would draw the same ones, as the cpu and gl columns keep
     // theirs; bench forgets them before each timed frame unless --keep-shadow-maps.
     const bool kept = frame.shadowLayerCount > 0 && mapsDrawn_.matches(scene, frame);
@@ -293,19 +293,19 @@ class LeanGlRenderer final : public Renderer {
           std::copy_n(glm::value_ptr(mesh.normals[v]), 3, interleaved.data() + 6 * v + 3);
         }
         m.vertices = gl::createBuffer(gl_);
-        gl_.glNamedBufferStorage(m.vertices.id(), static_cast<GLsizeiptr>(interleaved.size() * sizeof(float)), interleaved.data(), 0);
+        gl_.NamedBufferStorage(m.vertices.id(), static_cast<GLsizeiptr>(interleaved.size() * sizeof(float)), interleaved.data(), 0);
         m.indices = gl::createBuffer(gl_);
-        gl_.glNamedBufferStorage(m.indices.id(), static_cast<GLsizeiptr>(m.indexCount) * static_cast<GLsizeiptr>(sizeof(std::uint32_t)),
+        gl_.NamedBufferStorage(m.indices.id(), static_cast<GLsizeiptr>(m.indexCount) * static_cast<GLsizeiptr>(sizeof(std::uint32_t)),
                                  mesh.indices.data(), 0);
         m.vertexArray = gl::createVertexArray(gl_);
         const GLuint vao = m.vertexArray.id();
-        gl_.glVertexArrayVertexBuffer(vao, 0, m.vertices.id(), 0, 6 * sizeof(float));
+        gl_.VertexArrayVertexBuffer(vao, 0, m.vertices.id(), 0, 6 * sizeof(float));
         for (GLuint attribute : {0u, 1u}) {
-          gl_.glEnableVertexArrayAttrib(vao, attribute);
-          gl_.glVertexArrayAttribFormat(vao, attribute, 3, GL_FLOAT, GL_FALSE, attribute * 3 * sizeof(float));
-          gl_.glVertexArrayAttribBinding(vao, attribute, 0);
+          gl_.EnableVertexArrayAttrib(vao, attribute);
+          gl_.VertexArrayAttribFormat(vao, attribute, 3, GL_FLOAT, GL_FALSE, attribute * 3 * sizeof(float));
+          gl_.VertexArrayAttribBinding(vao, attribute, 0);
         }
-        gl_.glVertexArrayElementBuffer(vao, m.indices.id());
+        gl_.VertexArrayElementBuffer(vao, m.indices.id());
       }
       meshes_.push_back(std::move(m));
     }
@@ -342,44 +342,44 @@ class LeanGlRenderer final : public Renderer {
     const int size = frame.shadows.mapSize, layers = frame.shadowLayerCount;
     if (size != shadowSize_ || layers != shadowLayers_) {
       shadowMaps_ = gl::createTexture(gl_, GL_TEXTURE_2D_ARRAY);
-      gl_.glTextureStorage3D(shadowMaps_.id(), 1, GL_DEPTH_COMPONENT32F, size, size, layers);
+      gl_.TextureStorage3D(shadowMaps_.id(), 1, GL_DEPTH_COMPONENT32F, size, size, layers);
       // One texel per tap, compared against z - bias: lit where z - bias <= depth, as facet's rule.
-      gl_.glTextureParameteri(shadowMaps_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-      gl_.glTextureParameteri(shadowMaps_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-      gl_.glTextureParameteri(shadowMaps_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-      gl_.glTextureParameteri(shadowMaps_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+      gl_.TextureParameteri(shadowMaps_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      gl_.TextureParameteri(shadowMaps_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+      gl_.TextureParameteri(shadowMaps_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+      gl_.TextureParameteri(shadowMaps_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
       // A cube face's taps beyond its edge read the edge texel, as facet's do; a spot's map
       // edge lies outside its cone, so the same wrap serves it.
-      gl_.glTextureParameteri(shadowMaps_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-      gl_.glTextureParameteri(shadowMaps_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+      gl_.TextureParameteri(shadowMaps_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+      gl_.TextureParameteri(shadowMaps_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
       shadowFramebuffer_ = gl::createFramebuffer(gl_);
-      gl_.glNamedFramebufferDrawBuffer(shadowFramebuffer_.id(), GL_NONE);
-      gl_.glNamedFramebufferReadBuffer(shadowFramebuffer_.id(), GL_NONE);
+      gl_.NamedFramebufferDrawBuffer(shadowFramebuffer_.id(), GL_NONE);
+      gl_.NamedFramebufferReadBuffer(shadowFramebuffer_.id(), GL_NONE);
       shadowSize_ = size, shadowLayers_ = layers;
     }
-    gl_.glBindTextureUnit(kShadowMapsUnit, 0);  // the maps are the target here
-    gl_.glBindFramebuffer(GL_FRAMEBUFFER, shadowFramebuffer_.id());
-    gl_.glViewport(0, 0, size, size);
-    gl_.glDisable(GL_CULL_FACE);  // every triangle casts a shadow
-    gl_.glDisable(GL_BLEND);
-    gl_.glDepthMask(GL_TRUE);
+    gl_.BindTextureUnit(kShadowMapsUnit, 0);  // the maps are the target here
+    gl_.BindFramebuffer(GL_FRAMEBUFFER, shadowFramebuffer_.id());
+    gl_.Viewport(0, 0, size, size);
+    gl_.Disable(GL_CULL_FACE);  // every triangle casts a shadow
+    gl_.Disable(GL_BLEND);
+    gl_.DepthMask(GL_TRUE);
     const GLuint program = depth_->program.id();
-    gl_.glUseProgram(program);
+    gl_.UseProgram(program);
     const float farDepth = 1.0f;
     for (const FrameLight& light : frame.lights) {
       if (!light.hasShadowMap) continue;
       for (int face = 0; face < light.frustum.faceCount; ++face) {
-        gl_.glNamedFramebufferTextureLayer(shadowFramebuffer_.id(), GL_DEPTH_ATTACHMENT, shadowMaps_.id(), 0, light.shadowLayer + face);
-        gl_.glClearNamedFramebufferfv(shadowFramebuffer_.id(), GL_DEPTH, 0, &farDepth);
+        gl_.NamedFramebufferTextureLayer(shadowFramebuffer_.id(), GL_DEPTH_ATTACHMENT, shadowMaps_.id(), 0, light.shadowLayer + face);
+        gl_.ClearNamedFramebufferfv(shadowFramebuffer_.id(), GL_DEPTH, 0, &farDepth);
         for (const FrameInstance& instance : frame.instances) {
           const LeanMesh& mesh = meshes_.at(static_cast<std::size_t>(instance.mesh));
           const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
           if (mesh.indexCount == 0 || !material.castsShadow) continue;
           if (masksShadow(material) && !keptByMask(material.baseAlpha, material.alphaCutoff)) continue;
           const glm::mat4 lightClipFromModel = light.frustum.clipFromWorld[static_cast<std::size_t>(face)] * instance.worldFromModel;
-          gl_.glProgramUniformMatrix4fv(program, depth_->lightClipFromModel, 1, GL_FALSE, glm::value_ptr(lightClipFromModel));
-          gl_.glBindVertexArray(mesh.vertexArray.id());
-          gl_.glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+          gl_.ProgramUniformMatrix4fv(program, depth_->lightClipFromModel, 1, GL_FALSE, glm::value_ptr(lightClipFromModel));
+          gl_.BindVertexArray(mesh.vertexArray.id());
+          gl_.DrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
         }
       }
     }
@@ -390,23 +390,23 @@ class LeanGlRenderer final : public Renderer {
   void resizeTargets(int width, int height, int samples) {
     if (width == width_ && height == height_ && samples == samples_) return;
     const auto storage = [&](const gl::GlObject& buffer, GLenum format, int s) {
-      if (s > 1) gl_.glNamedRenderbufferStorageMultisample(buffer.id(), s, format, width, height);
-      else gl_.glNamedRenderbufferStorage(buffer.id(), format, width, height);
+      if (s > 1) gl_.NamedRenderbufferStorageMultisample(buffer.id(), s, format, width, height);
+      else gl_.NamedRenderbufferStorage(buffer.id(), format, width, height);
     };
     color_ = gl::createRenderbuffer(gl_);
     depthBuffer_ = gl::createRenderbuffer(gl_);
     storage(color_, GL_SRGB8_ALPHA8, samples);
     storage(depthBuffer_, GL_DEPTH_COMPONENT32F, samples);
     framebuffer_ = gl::createFramebuffer(gl_);
-    gl_.glNamedFramebufferRenderbuffer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_.id());
-    gl_.glNamedFramebufferRenderbuffer(framebuffer_.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depthBuffer_.id());
+    gl_.NamedFramebufferRenderbuffer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_.id());
+    gl_.NamedFramebufferRenderbuffer(framebuffer_.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depthBuffer_.id());
     checkComplete(framebuffer_.id(), "the lit pass's framebuffer");
     resolvedColor_ = {}, resolved_ = {};
     if (samples > 1) {
       resolvedColor_ = gl::createRenderbuffer(gl_);
       storage(resolvedColor_, GL_SRGB8_ALPHA8, 1);
       resolved_ = gl::createFramebuffer(gl_);
-      gl_.glNamedFramebufferRenderbuffer(resolved_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolvedColor_.id());
+      gl_.NamedFramebufferRenderbuffer(resolved_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolvedColor_.id());
       checkComplete(resolved_.id(), "the resolve's framebuffer");
     }
     width_ = width, height_ = height, samples_ = samples;
@@ -417,19 +417,19 @@ class LeanGlRenderer final : public Renderer {
     if (samples > gl::getInteger(gl_, GL_MAX_SAMPLES))
       throw Error("lean: " + std::to_string(samples) + " samples a pixel, more than this driver's multisampling gives");
     resizeTargets(frame.width, frame.height, samples);
-    gl_.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
-    gl_.glViewport(0, 0, frame.width, frame.height);
-    gl_.glEnable(GL_FRAMEBUFFER_SRGB);  // linear colours in, sRGB bytes stored; blending and the resolve in linear
-    gl_.glDepthMask(GL_TRUE);
+    gl_.BindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+    gl_.Viewport(0, 0, frame.width, frame.height);
+    gl_.Enable(GL_FRAMEBUFFER_SRGB);  // linear colours in, sRGB bytes stored; blending and the resolve in linear
+    gl_.DepthMask(GL_TRUE);
     const float background[4] = {frame.background.r, frame.background.g, frame.background.b, frame.backgroundAlpha};
     const float farDepth = 1.0f;
-    gl_.glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, background);
-    gl_.glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &farDepth);
+    gl_.ClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, background);
+    gl_.ClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &farDepth);
 
     const GLuint program = lit.program.id();
-    gl_.glUseProgram(program);
+    gl_.UseProgram(program);
     setFrameUniforms(frame, lit);
-    gl_.glBindTextureUnit(kShadowMapsUnit, frame.shadowLayerCount > 0 ? shadowMaps_.id() : 0);
+    gl_.BindTextureUnit(kShadowMapsUnit, frame.shadowLayerCount > 0 ? shadowMaps_.id() : 0);
     for (const FrameInstance& instance : frame.instances)
       if (!frame.materials[static_cast<std::size_t>(instance.material)].blended) draw(frame, lit, instance);
     // Blended instances after the opaque ones, depth-tested without depth writes, in instance order.
@@ -437,20 +437,20 @@ class LeanGlRenderer final : public Renderer {
     for (const FrameInstance& instance : frame.instances) {
       if (!frame.materials[static_cast<std::size_t>(instance.material)].blended) continue;
       if (!blending) {
-        gl_.glEnable(GL_BLEND);
-        gl_.glBlendEquation(GL_FUNC_ADD);
-        gl_.glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-        gl_.glDepthMask(GL_FALSE);
+        gl_.Enable(GL_BLEND);
+        gl_.BlendEquation(GL_FUNC_ADD);
+        gl_.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+        gl_.DepthMask(GL_FALSE);
         blending = true;
       }
       draw(frame, lit, instance);
     }
-    gl_.glDisable(GL_BLEND);
-    gl_.glDepthMask(GL_TRUE);
+    gl_.Disable(GL_BLEND);
+    gl_.DepthMask(GL_TRUE);
     if (samples > 1)
-      gl_.glBlitNamedFramebuffer(framebuffer_.id(), resolved_.id(), 0, 0, frame.width, frame.height, 0, 0, frame.width, frame.height,
+      gl_.BlitNamedFramebuffer(framebuffer_.id(), resolved_.id(), 0, 0, frame.width, frame.height, 0, 0, frame.width, frame.height,
                                  GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    gl_.glDisable(GL_FRAMEBUFFER_SRGB);
+    gl_.Disable(GL_FRAMEBUFFER_SRGB);
   }
 
   void setFrameUniforms(const FrameInputs& frame, const LitProgram& lit) {
@@ -469,49 +469,49 @@ class LeanGlRenderer final : public Renderer {
     }
     if (!frame.lights.empty()) {
       const auto count = static_cast<GLsizei>(frame.lights.size());
-      gl_.glProgramUniform3fv(program, lit.lightPosition, count, glm::value_ptr(position[0]));
-      gl_.glProgramUniform4fv(program, lit.lightDirection, count, glm::value_ptr(direction[0]));
-      gl_.glProgramUniform3fv(program, lit.lightIntensity, count, glm::value_ptr(intensity[0]));
-      gl_.glProgramUniform3fv(program, lit.lightAttenuation, count, glm::value_ptr(attenuation[0]));
+      gl_.ProgramUniform3fv(program, lit.lightPosition, count, glm::value_ptr(position[0]));
+      gl_.ProgramUniform4fv(program, lit.lightDirection, count, glm::value_ptr(direction[0]));
+      gl_.ProgramUniform3fv(program, lit.lightIntensity, count, glm::value_ptr(intensity[0]));
+      gl_.ProgramUniform3fv(program, lit.lightAttenuation, count, glm::value_ptr(attenuation[0]));
     }
-    gl_.glProgramUniformMatrix4fv(program, lit.shadowFromWorld, static_cast<GLsizei>(shadowFromWorld.size()), GL_FALSE,
+    gl_.ProgramUniformMatrix4fv(program, lit.shadowFromWorld, static_cast<GLsizei>(shadowFromWorld.size()), GL_FALSE,
                                   glm::value_ptr(shadowFromWorld[0]));
-    gl_.glProgramUniform2f(program, lit.shadowBias, frame.shadows.biasSlope, frame.shadows.biasMin);
+    gl_.ProgramUniform2f(program, lit.shadowBias, frame.shadows.biasSlope, frame.shadows.biasMin);
     const glm::vec3 eye = frame.perspective ? frame.eyePosition : frame.towardEye;
-    gl_.glProgramUniform3fv(program, lit.eye, 1, glm::value_ptr(eye));
-    gl_.glProgramUniform1f(program, lit.ambient, frame.ambient);
+    gl_.ProgramUniform3fv(program, lit.eye, 1, glm::value_ptr(eye));
+    gl_.ProgramUniform1f(program, lit.ambient, frame.ambient);
   }
 
   void draw(const FrameInputs& frame, const LitProgram& lit, const FrameInstance& instance) {
     const LeanMesh& mesh = meshes_.at(static_cast<std::size_t>(instance.mesh));
     const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
     if (mesh.indexCount == 0 || (material.masked && !keptByMask(material.baseAlpha, material.alphaCutoff))) return;
-    if (instance.cullBackFaces) gl_.glEnable(GL_CULL_FACE);
-    else gl_.glDisable(GL_CULL_FACE);
+    if (instance.cullBackFaces) gl_.Enable(GL_CULL_FACE);
+    else gl_.Disable(GL_CULL_FACE);
     const GLuint program = lit.program.id();
     const float alpha = material.blended ? std::clamp(material.baseAlpha, 0.0f, 1.0f) : 1.0f;
-    gl_.glProgramUniformMatrix4fv(program, lit.clipFromModel, 1, GL_FALSE, glm::value_ptr(instance.clipFromModel));
-    gl_.glProgramUniformMatrix4fv(program, lit.worldFromModel, 1, GL_FALSE, glm::value_ptr(instance.worldFromModel));
-    gl_.glProgramUniformMatrix3fv(program, lit.normalMatrix, 1, GL_FALSE, glm::value_ptr(instance.normalMatrix));
-    gl_.glProgramUniform4fv(program, lit.baseColor, 1, glm::value_ptr(glm::vec4(material.baseColor, alpha)));
-    gl_.glProgramUniform4fv(program, lit.coefficients, 1, glm::value_ptr(glm::vec4(material.ka, material.kd, material.ks, material.shininess)));
-    gl_.glProgramUniform1f(program, lit.metallic, material.metallic);
-    gl_.glBindVertexArray(mesh.vertexArray.id());
-    gl_.glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+    gl_.ProgramUniformMatrix4fv(program, lit.clipFromModel, 1, GL_FALSE, glm::value_ptr(instance.clipFromModel));
+    gl_.ProgramUniformMatrix4fv(program, lit.worldFromModel, 1, GL_FALSE, glm::value_ptr(instance.worldFromModel));
+    gl_.ProgramUniformMatrix3fv(program, lit.normalMatrix, 1, GL_FALSE, glm::value_ptr(instance.normalMatrix));
+    gl_.ProgramUniform4fv(program, lit.baseColor, 1, glm::value_ptr(glm::vec4(material.baseColor, alpha)));
+    gl_.ProgramUniform4fv(program, lit.coefficients, 1, glm::value_ptr(glm::vec4(material.ka, material.kd, material.ks, material.shininess)));
+    gl_.ProgramUniform1f(program, lit.metallic, material.metallic);
+    gl_.BindVertexArray(mesh.vertexArray.id());
+    gl_.DrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
   }
 
   Image readImage(const FrameInputs& frame) const {
     Image image(frame.width, frame.height);
-    gl_.glBindFramebuffer(GL_READ_FRAMEBUFFER, samples_ > 1 ? resolved_.id() : framebuffer_.id());
-    gl_.glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    gl_.glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+    gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, samples_ > 1 ? resolved_.id() : framebuffer_.id());
+    gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
+    gl_.PixelStorei(GL_PACK_ROW_LENGTH, 0);
     // The stored sRGB bytes as they are (GL_FRAMEBUFFER_SRGB is off); row 0 is the bottom row, as facet::Image's.
-    gl_.glReadPixels(0, 0, frame.width, frame.height, GL_RGBA, GL_UNSIGNED_BYTE, image.data());
+    gl_.ReadPixels(0, 0, frame.width, frame.height, GL_RGBA, GL_UNSIGNED_BYTE, image.data());
     return image;
   }
 
   void checkComplete(GLuint framebuffer, const char* what) const {
-    if (gl_.glCheckNamedFramebufferStatus(framebuffer, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    if (gl_.CheckNamedFramebufferStatus(framebuffer, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
       throw Error(std::string("lean: ") + what + " is not complete");
   }
 

@@ -12,6 +12,7 @@ packages=(
   libcli11-dev           # command-line parsing
   doctest-dev            # unit tests
   libosmesa6-dev         # headless OpenGL on llvmpipe
+  python3-glad           # glad 2: generates the OpenGL 4.5 core loader at build time (renderer/gl/CMakeLists.txt)
   libegl-dev libgl-dev libgl1-mesa-dri libegl-mesa0  # EGL surfaceless, the second headless context
   libglfw3-dev libimgui-dev                          # the interactive viewer
   xvfb xauth             # the viewer's tests run in a virtual X server

@@ -27,8 +27,8 @@ bool isSoftwareRasterizer(const std::string& glRenderer) {
 
 }  // namespace
 
-ViewFrame::ViewFrame(const ViewerGl& gl, WindowGlRenderer& glRenderer, int cpuThreads)
-    : gl_(gl), glRenderer_(glRenderer), cpuRenderer_(makeCpuRenderer(cpuThreads)), cpuTexture_(gl.gl),
+ViewFrame::ViewFrame(const gl::GlFunctions& gl, WindowGlRenderer& glRenderer, int cpuThreads)
+    : gl_(gl), glRenderer_(glRenderer), cpuRenderer_(makeCpuRenderer(cpuThreads)), cpuTexture_(gl),
       softwareGl_(isSoftwareRasterizer(glRenderer.rendererName())) {}
 
 bool ViewFrame::drawsOnCpu(FrameBackend backend) const {
@@ -113,14 +113,14 @@ Image ViewFrame::glImage() {
 }
 
 void ViewFrame::blit(int windowWidth, int windowHeight, ViewRect view) const {
-  gl_.gl.glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-  gl_.gl.glDisable(GL_SCISSOR_TEST);  // a blit honours the scissor box
-  gl_.gl.glViewport(0, 0, windowWidth, windowHeight);
+  gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  gl_.Disable(GL_SCISSOR_TEST);  // a blit honours the scissor box
+  gl_.Viewport(0, 0, windowWidth, windowHeight);
   const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-  gl_.gl.glClearNamedFramebufferfv(0, GL_COLOR, 0, black);
+  gl_.ClearNamedFramebufferfv(0, GL_COLOR, 0, black);
   if (drawn_.version == 0) return;
   const unsigned source = drawn_.onCpu ? cpuTexture_.framebuffer() : glRenderer_.framebuffer();
-  gl_.glBlitNamedFramebuffer(source, 0, 0, 0, drawn_.frame.width, drawn_.frame.height, view.x, view.y, view.x + view.width, view.y + view.height,
+  gl_.BlitNamedFramebuffer(source, 0, 0, 0, drawn_.frame.width, drawn_.frame.height, view.x, view.y, view.x + view.width, view.y + view.height,
                              GL_COLOR_BUFFER_BIT, drawn_.preview ? GL_LINEAR : GL_NEAREST);
 }
 

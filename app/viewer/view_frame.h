@@ -13,7 +13,7 @@
 #include "render/renderer.h"
 #include "scene/scene.h"
 #include "viewer/image_texture.h"
-#include "viewer/viewer_gl.h"
+#include "gl/gl_functions.h"
 #include "viewer/viewer_state.h"
 
 namespace facet::viewer {
@@ -39,7 +39,7 @@ struct DrawnFrame {
 class ViewFrame {
  public:
   // gl and glRenderer must outlive the view. cpuThreads: the CPU rasterizer's (0: one per core).
-  ViewFrame(const ViewerGl& gl, WindowGlRenderer& glRenderer, int cpuThreads);
+  ViewFrame(const gl::GlFunctions& gl, WindowGlRenderer& glRenderer, int cpuThreads);
 
   // Whether `backend` draws on the CPU here (auto: where OpenGL is a software rasterizer).
   bool drawsOnCpu(FrameBackend backend) const;
@@ -71,7 +71,7 @@ class ViewFrame {
   // The viewer's scene with the settings' displacement, bump map and environment map, copied once per change of them.
   std::shared_ptr<const Scene> sceneFor(const ViewerState& state);
 
-  const ViewerGl& gl_;
+  const gl::GlFunctions& gl_;
   WindowGlRenderer& glRenderer_;
   std::unique_ptr<Renderer> cpuRenderer_;
   ImageTexture cpuTexture_;  // the CPU frame, for the blit

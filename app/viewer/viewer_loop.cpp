@@ -30,7 +30,7 @@
 #include "viewer/stage_view.h"
 #include "viewer/view_frame.h"
 #include "viewer/view_input.h"
-#include "viewer/viewer_gl.h"
+#include "gl/gl_functions.h"
 #include "viewer/viewer_state.h"
 #include "viewer/viewer_window.h"
 
@@ -70,12 +70,12 @@ int referenceThreads() { return std::max(1, static_cast<int>(std::thread::hardwa
 
 // The window's back buffer, panel included: read before the swap, since
 // the front buffer reads back as zeros under Xvfb. Opaque, as the GL image is.
-Image readWindow(const ViewerGl& gl, int width, int height) {
+Image readWindow(const gl::GlFunctions& gl, int width, int height) {
   Image image(width, height);
-  gl.gl.glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  gl.gl.glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  gl.gl.glPixelStorei(GL_PACK_ROW_LENGTH, 0);
-  gl.gl.glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.data());
+  gl.BindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
+  gl.PixelStorei(GL_PACK_ROW_LENGTH, 0);
+  gl.ReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.data());
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) image.at(x, y).a = 255;
   return image;
@@ -103,16 +103,16 @@ int runViewer(const ViewerOptions& options) {
   ViewerWindow window(state.settings.width, state.settings.height, showPanel ? static_cast<int>(panelWidth) : 0);
   glfwSwapInterval(batch ? 0 : 1);
   if (!batch) window.setMinimumSize(kMinimumWindowWidth, kMinimumWindowHeight);
-  const ViewerGl gl = loadViewerGl(glfwGetProcAddress);
+  const gl::GlFunctions windowGl = gl::loadGlFunctions(glfwGetProcAddress);  // the window context's functions
   const std::unique_ptr<WindowGlRenderer> rendererOwner = makeWindowGlRenderer(glfwGetProcAddress);
   WindowGlRenderer& renderer = *rendererOwner;
   ImGuiSession imgui(window.handle());
-  ReferenceView reference(gl.gl, referenceThreads(), options.followReference, options.rayReference);
-  ViewFrame view(gl, renderer, 0);
+  ReferenceView reference(windowGl, referenceThreads(), options.followReference, options.rayReference);
+  ViewFrame view(windowGl, renderer, 0);
   ViewInput input;
-  PixelPick pick(gl.gl);
+  PixelPick pick(windowGl);
   MatrixSelection matrices;
-  StageView stages(gl.gl);
+  StageView stages(windowGl);
   if (!options.stage.empty()) stages.choose(options.stage, options.stageSource);
   std::vector<std::string> scriptedDrops = options.drops;
   std::optional<std::array<int, 2>> pickAsked = options.pick;
@@ -216,7 +216,7 @@ int runViewer(const ViewerOptions& options) {
     // --screenshot: after `frames` frames (and the reference, when asked for), before the swap
     if (batch && --framesLeft <= 0 && (!options.followReference || reference.isFinal(drawn.version))) {
       // The 3D view: the frame, or the stage shown over it.
-      const Image image = options.screenshotWithPanel ? readWindow(gl, width, height) : stages.shownImage().empty() ? drawn.image : stages.shownImage();
+      const Image image = options.screenshotWithPanel ? readWindow(windowGl, width, height) : stages.shownImage().empty() ? drawn.image : stages.shownImage();
       writePng(options.batchScreenshot, image);
       std::printf("screenshot written to %s: %dx%d, %d frames, %s, frame %.1f ms (median)\n", options.batchScreenshot.c_str(), image.width(),
                   image.height(), options.frames, view.backendLine(state.backend).c_str(), drawTimes.median());

@@ -69,10 +69,10 @@ double millisecondsSince(Clock::time_point start) { return std::chrono::duration
 GlFrameRenderer::GlFrameRenderer(const GetProcAddress& getProcAddress)
     : gl_(loadGlFunctions(getProcAddress)), rendererName_(rendererAndVersion(gl_)) {
   frameUniforms_ = createBuffer(gl_);
-  gl_.glNamedBufferStorage(frameUniforms_.id(), sizeof(FrameBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  gl_.NamedBufferStorage(frameUniforms_.id(), sizeof(FrameBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
   srgbUniforms_ = createBuffer(gl_);
   const SrgbBlock srgb = makeSrgbBlock();
-  gl_.glNamedBufferStorage(srgbUniforms_.id(), sizeof srgb, &srgb, 0);
+  gl_.NamedBufferStorage(srgbUniforms_.id(), sizeof srgb, &srgb, 0);
   emptyVertexArray_ = createVertexArray(gl_);
 }
 
@@ -85,7 +85,7 @@ void GlFrameRenderer::beginFrame(const Scene& scene, const FrameInputs& frame, L
   facet::refuseCpuOnlyFrame(frame);
   if (frame.hsr == HiddenSurface::Painter) painters_.prepare(gl_, scene, frame, frame.paintersOrder);
   if (!frame.transparentOrder.empty()) transparent_.prepare(gl_, scene, frame, frame.transparentOrder);
-  gl_.glFinish();
+  gl_.Finish();
   Clock::time_point start = Clock::now();
   if (preparePrograms(frame, output)) {
     timings.push_back({"shader compile + link", millisecondsSince(start)});
@@ -93,27 +93,27 @@ void GlFrameRenderer::beginFrame(const Scene& scene, const FrameInputs& frame, L
   }
 
   const FrameBlock block = makeFrameBlock(frame);
-  gl_.glNamedBufferSubData(frameUniforms_.id(), 0, sizeof block, &block);
-  gl_.glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniforms_.id());
-  gl_.glBindBufferBase(GL_UNIFORM_BUFFER, kSrgbBlockBinding, srgbUniforms_.id());
+  gl_.NamedBufferSubData(frameUniforms_.id(), 0, sizeof block, &block);
+  gl_.BindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniforms_.id());
+  gl_.BindBufferBase(GL_UNIFORM_BUFFER, kSrgbBlockBinding, srgbUniforms_.id());
   if (frame.shading == ShadingMode::Pbr && !splitSumUniforms_) {
     splitSumUniforms_ = createBuffer(gl_);
     const SplitSumBlock table = makeSplitSumBlock();
-    gl_.glNamedBufferStorage(splitSumUniforms_.id(), sizeof table, &table, 0);
+    gl_.NamedBufferStorage(splitSumUniforms_.id(), sizeof table, &table, 0);
   }
-  if (splitSumUniforms_) gl_.glBindBufferBase(GL_UNIFORM_BUFFER, kSplitSumBlockBinding, splitSumUniforms_.id());
+  if (splitSumUniforms_) gl_.BindBufferBase(GL_UNIFORM_BUFFER, kSplitSumBlockBinding, splitSumUniforms_.id());
   // The contract's conventions, set every frame because a viewer's UI shares the context.
-  gl_.glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // clip z in [0, w], window origin at the lower left
-  gl_.glFrontFace(GL_CCW);                           // counter-clockwise in window coordinates is front
+  gl_.ClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // clip z in [0, w], window origin at the lower left
+  gl_.FrontFace(GL_CCW);                           // counter-clockwise in window coordinates is front
   for (GLenum capability : {GL_BLEND, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_DITHER, GL_FRAMEBUFFER_SRGB, GL_POLYGON_OFFSET_FILL})
-    gl_.glDisable(capability);  // a pixel keeps the shader's float output, nothing else, until the resolve
+    gl_.Disable(capability);  // a pixel keeps the shader's float output, nothing else, until the resolve
 
   if (frame.shadowLayerCount > 0 && mapsDrawn_.matches(scene, frame)) {
     timings.push_back({shadowPassName(frame, true), 0.0});  // the maps hold this frame's (pipeline/shadow_pass_key.h)
   } else if (frame.shadowLayerCount > 0) {
     mapsDrawn_ = {};  // until every face is drawn
     shadowPass(frame);
-    gl_.glFinish();
+    gl_.Finish();
     checkError("the shadow pass");
     mapsDrawn_ = ShadowPassKey(scene, frame);
     timings.push_back({shadowPassName(frame, false), millisecondsSince(start)});
@@ -126,26 +126,26 @@ std::vector<PassTiming> GlFrameRenderer::drawFrame(const Scene& scene, const Fra
   Clock::time_point start = Clock::now();
   if (frame.samples.empty()) {
     litPass(frame);
-    gl_.glFinish();
+    gl_.Finish();
     checkError("the lit pass");
     timings.push_back({"lit pass", millisecondsSince(start)});
   } else {  // anti-aliasing: a pass per sample, summed premultiplied (PIPELINE.md, section 7)
     sum_.resize(gl_, frame.width, frame.height);
     const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    gl_.glClearNamedFramebufferfv(sum_.framebuffer(), GL_COLOR, 0, zero);
+    gl_.ClearNamedFramebufferfv(sum_.framebuffer(), GL_COLOR, 0, zero);
     for (const glm::vec2 offset : frame.samples) {
       const FrameInputs pass = sampleFrame(frame, offset);
       litPass(pass);
       accumulatePass(pass);
     }
-    gl_.glFinish();
+    gl_.Finish();
     checkError("the lit pass");
     timings.push_back({"lit pass (" + std::to_string(frame.samples.size()) + " samples)", millisecondsSince(start)});
   }
   start = Clock::now();
   if (frame.samples.empty()) resolvePass(frame, target_.colorTexture(), frame.blending == Blending::Premultiplied, 1);
   else resolvePass(frame, sum_.colorTexture(), true, static_cast<int>(frame.samples.size()));
-  gl_.glFinish();
+  gl_.Finish();
   checkError("the resolve");
   timings.push_back({"resolve", millisecondsSince(start)});
   return timings;
@@ -153,11 +153,11 @@ std::vector<PassTiming> GlFrameRenderer::drawFrame(const Scene& scene, const Fra
 
 Image GlFrameRenderer::readImage() const {
   Image image(resolved_.width(), resolved_.height());
-  gl_.glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved_.framebuffer());
-  gl_.glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  gl_.glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, resolved_.framebuffer());
+  gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
+  gl_.PixelStorei(GL_PACK_ROW_LENGTH, 0);
   // Row 0 of glReadPixels is the bottom row, as facet::Image stores it: no flip.
-  gl_.glReadPixels(0, 0, image.width(), image.height(), GL_RGBA, GL_UNSIGNED_BYTE, image.data());
+  gl_.ReadPixels(0, 0, image.width(), image.height(), GL_RGBA, GL_UNSIGNED_BYTE, image.data());
   checkError("the read-back");
   return image;
 }
@@ -167,10 +167,10 @@ std::vector<float> GlFrameRenderer::drawDepth(const Scene& scene, const FrameInp
   centred.samples.clear();
   drawFrame(scene, centred);
   std::vector<float> depth(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height));
-  gl_.glBindFramebuffer(GL_READ_FRAMEBUFFER, target_.framebuffer());
-  gl_.glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  gl_.glPixelStorei(GL_PACK_ROW_LENGTH, 0);
-  gl_.glReadPixels(0, 0, frame.width, frame.height, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());  // bottom row first, as facet stores rows
+  gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, target_.framebuffer());
+  gl_.PixelStorei(GL_PACK_ALIGNMENT, 4);
+  gl_.PixelStorei(GL_PACK_ROW_LENGTH, 0);
+  gl_.ReadPixels(0, 0, frame.width, frame.height, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());  // bottom row first, as facet stores rows
   checkError("the depth read-back");
   return depth;
 }
@@ -182,10 +182,10 @@ ShadowMapTexels GlFrameRenderer::readShadowMaps(const Scene& scene, const FrameI
   ShadowMapTexels maps{frame.shadows.mapSize, frame.shadowLayerCount, {}};
   const std::size_t perLayer = static_cast<std::size_t>(maps.size) * static_cast<std::size_t>(maps.size);
   maps.texels.resize(perLayer * static_cast<std::size_t>(maps.layers));
-  gl_.glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  gl_.glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  gl_.PixelStorei(GL_PACK_ALIGNMENT, 4);
+  gl_.PixelStorei(GL_PACK_ROW_LENGTH, 0);
   for (int layer = 0; layer < maps.layers; ++layer)  // a layer at a time: the byte count of one call is a GLsizei
-    gl_.glGetTextureSubImage(shadowMaps_.texture(), 0, 0, 0, layer, maps.size, maps.size, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
+    gl_.GetTextureSubImage(shadowMaps_.texture(), 0, 0, 0, layer, maps.size, maps.size, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
                              static_cast<GLsizei>(perLayer * sizeof(float)), maps.texels.data() + perLayer * static_cast<std::size_t>(layer));
   checkError("the shadow-map read-back");
   return maps;
@@ -197,10 +197,10 @@ std::vector<glm::vec4> GlFrameRenderer::drawNormals(const Scene& scene, const Fr
   beginFrame(scene, drawn, LitOutput::Normal, timings);  // no shadow pass: the frame has no lights
   litPass(drawn, LitOutput::Normal);
   std::vector<glm::vec4> normals(static_cast<std::size_t>(drawn.width) * static_cast<std::size_t>(drawn.height));
-  gl_.glBindFramebuffer(GL_READ_FRAMEBUFFER, target_.framebuffer());
-  gl_.glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  gl_.glPixelStorei(GL_PACK_ROW_LENGTH, 0);
-  gl_.glReadPixels(0, 0, drawn.width, drawn.height, GL_RGBA, GL_FLOAT, normals.data());
+  gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, target_.framebuffer());
+  gl_.PixelStorei(GL_PACK_ALIGNMENT, 4);
+  gl_.PixelStorei(GL_PACK_ROW_LENGTH, 0);
+  gl_.ReadPixels(0, 0, drawn.width, drawn.height, GL_RGBA, GL_FLOAT, normals.data());
   checkError("the normals pass");
   return normals;
 }
@@ -217,23 +217,23 @@ std::vector<std::uint32_t> GlFrameRenderer::drawTriangleIds(const Scene& scene, 
                              .program = std::move(program)};
   });
   idTarget_.resize(gl_, frame.width, frame.height);
-  gl_.glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-  gl_.glFrontFace(GL_CCW);
+  gl_.ClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  gl_.FrontFace(GL_CCW);
   for (GLenum capability : {GL_BLEND, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_DITHER, GL_FRAMEBUFFER_SRGB, GL_POLYGON_OFFSET_FILL})
-    gl_.glDisable(capability);
-  gl_.glBindFramebuffer(GL_FRAMEBUFFER, idTarget_.framebuffer());
-  gl_.glViewport(0, 0, frame.width, frame.height);
+    gl_.Disable(capability);
+  gl_.BindFramebuffer(GL_FRAMEBUFFER, idTarget_.framebuffer());
+  gl_.Viewport(0, 0, frame.width, frame.height);
   const GLuint background = 0;
   const float farDepth = 1.0f;
-  gl_.glClearNamedFramebufferuiv(idTarget_.framebuffer(), GL_COLOR, 0, &background);
-  gl_.glDepthMask(GL_TRUE);
-  gl_.glClearNamedFramebufferfv(idTarget_.framebuffer(), GL_DEPTH, 0, &farDepth);
-  if (painter) gl_.glDisable(GL_DEPTH_TEST);  // no depth buffer: the last triangle drawn keeps the pixel
-  else gl_.glEnable(GL_DEPTH_TEST);
-  gl_.glDepthFunc(GL_LESS);
-  gl_.glCullFace(GL_BACK);
-  gl_.glBindBufferBase(GL_UNIFORM_BUFFER, kSrgbBlockBinding, srgbUniforms_.id());
-  gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPaintedBinding, painter ? painters_.triangles() : srgbUniforms_.id());
+  gl_.ClearNamedFramebufferuiv(idTarget_.framebuffer(), GL_COLOR, 0, &background);
+  gl_.DepthMask(GL_TRUE);
+  gl_.ClearNamedFramebufferfv(idTarget_.framebuffer(), GL_DEPTH, 0, &farDepth);
+  if (painter) gl_.Disable(GL_DEPTH_TEST);  // no depth buffer: the last triangle drawn keeps the pixel
+  else gl_.Enable(GL_DEPTH_TEST);
+  gl_.DepthFunc(GL_LESS);
+  gl_.CullFace(GL_BACK);
+  gl_.BindBufferBase(GL_UNIFORM_BUFFER, kSrgbBlockBinding, srgbUniforms_.id());
+  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kPaintedBinding, painter ? painters_.triangles() : srgbUniforms_.id());
   // One draw: the instance's triangles [first, first + count) of its mesh, or of the painter's index buffer.
   const auto draw = [&](const FrameInstance& instance, GLuint first, GLsizei count, const PainterRun* run) {
     const MeshBuffers& mesh = scene_.mesh(instance.mesh);
@@ -241,11 +241,11 @@ std::vector<std::uint32_t> GlFrameRenderer::drawTriangleIds(const Scene& scene, 
     const DrawVariant variant = idVariant(instance);
     const TriangleIdProgram& id = triangleIdPrograms_.at(variant.index());
     const GLuint program = id.program.id();
-    gl_.glUseProgram(program);
+    gl_.UseProgram(program);
     setCulling(instance.cullBackFaces);
-    gl_.glProgramUniformMatrix4fv(program, id.clipFromModel, 1, GL_FALSE, glm::value_ptr(instance.clipFromModel));
-    gl_.glProgramUniform1ui(program, id.firstTriangle, first);
-    gl_.glProgramUniform1i(program, id.painted, run ? 1 : 0);
+    gl_.ProgramUniformMatrix4fv(program, id.clipFromModel, 1, GL_FALSE, glm::value_ptr(instance.clipFromModel));
+    gl_.ProgramUniform1ui(program, id.firstTriangle, first);
+    gl_.ProgramUniform1i(program, id.painted, run ? 1 : 0);
     if (variant.masked)
       setBaseColorUniforms(program, id.alpha, frame.materials[static_cast<std::size_t>(instance.material)], variant.textured);
     if (count > 0) drawIndexed(mesh, run);
@@ -262,10 +262,10 @@ std::vector<std::uint32_t> GlFrameRenderer::drawTriangleIds(const Scene& scene, 
     }
   }
   std::vector<std::uint32_t> ids(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height));
-  gl_.glBindFramebuffer(GL_READ_FRAMEBUFFER, idTarget_.framebuffer());
-  gl_.glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  gl_.glPixelStorei(GL_PACK_ROW_LENGTH, 0);
-  gl_.glReadPixels(0, 0, frame.width, frame.height, GL_RED_INTEGER, GL_UNSIGNED_INT, ids.data());
+  gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, idTarget_.framebuffer());
+  gl_.PixelStorei(GL_PACK_ALIGNMENT, 4);
+  gl_.PixelStorei(GL_PACK_ROW_LENGTH, 0);
+  gl_.ReadPixels(0, 0, frame.width, frame.height, GL_RED_INTEGER, GL_UNSIGNED_INT, ids.data());
   checkError("the triangle id pass");
   return ids;
 }
@@ -277,34 +277,34 @@ std::vector<std::uint32_t> GlFrameRenderer::drawFragmentCounts(const FrameInputs
     fragmentCountProgram_.emplace(FragmentCountProgram{clipFromModel, std::move(program)});
   }
   countTarget_.resize(gl_, frame.width, frame.height);
-  gl_.glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-  gl_.glFrontFace(GL_CCW);
+  gl_.ClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  gl_.FrontFace(GL_CCW);
   for (GLenum capability : {GL_DEPTH_TEST, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_DITHER, GL_FRAMEBUFFER_SRGB, GL_POLYGON_OFFSET_FILL})
-    gl_.glDisable(capability);
-  gl_.glEnable(GL_BLEND);  // each fragment adds its 1
-  gl_.glBlendEquation(GL_FUNC_ADD);
-  gl_.glBlendFunc(GL_ONE, GL_ONE);
-  gl_.glBindFramebuffer(GL_FRAMEBUFFER, countTarget_.framebuffer());
-  gl_.glViewport(0, 0, frame.width, frame.height);
+    gl_.Disable(capability);
+  gl_.Enable(GL_BLEND);  // each fragment adds its 1
+  gl_.BlendEquation(GL_FUNC_ADD);
+  gl_.BlendFunc(GL_ONE, GL_ONE);
+  gl_.BindFramebuffer(GL_FRAMEBUFFER, countTarget_.framebuffer());
+  gl_.Viewport(0, 0, frame.width, frame.height);
   const float zero = 0.0f;
-  gl_.glClearNamedFramebufferfv(countTarget_.framebuffer(), GL_COLOR, 0, &zero);
-  gl_.glCullFace(GL_BACK);
+  gl_.ClearNamedFramebufferfv(countTarget_.framebuffer(), GL_COLOR, 0, &zero);
+  gl_.CullFace(GL_BACK);
   const GLuint program = fragmentCountProgram_->program.id();
-  gl_.glUseProgram(program);
+  gl_.UseProgram(program);
   for (const FrameInstance& instance : frame.instances) {
     const MeshBuffers& mesh = scene_.mesh(instance.mesh);
     if (mesh.indexCount == 0) continue;
     setCulling(instance.cullBackFaces);
-    gl_.glProgramUniformMatrix4fv(program, fragmentCountProgram_->clipFromModel, 1, GL_FALSE, glm::value_ptr(instance.clipFromModel));
-    gl_.glBindVertexArray(mesh.vertexArray.id());
-    gl_.glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+    gl_.ProgramUniformMatrix4fv(program, fragmentCountProgram_->clipFromModel, 1, GL_FALSE, glm::value_ptr(instance.clipFromModel));
+    gl_.BindVertexArray(mesh.vertexArray.id());
+    gl_.DrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
   }
-  gl_.glDisable(GL_BLEND);
+  gl_.Disable(GL_BLEND);
   std::vector<float> counts(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height));
-  gl_.glBindFramebuffer(GL_READ_FRAMEBUFFER, countTarget_.framebuffer());
-  gl_.glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  gl_.glPixelStorei(GL_PACK_ROW_LENGTH, 0);
-  gl_.glReadPixels(0, 0, frame.width, frame.height, GL_RED, GL_FLOAT, counts.data());
+  gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, countTarget_.framebuffer());
+  gl_.PixelStorei(GL_PACK_ALIGNMENT, 4);
+  gl_.PixelStorei(GL_PACK_ROW_LENGTH, 0);
+  gl_.ReadPixels(0, 0, frame.width, frame.height, GL_RED, GL_FLOAT, counts.data());
   checkError("the fragment count pass");
   std::vector<std::uint32_t> out(counts.size());
   for (std::size_t i = 0; i < counts.size(); ++i) out[i] = static_cast<std::uint32_t>(counts[i]);
@@ -339,8 +339,8 @@ DrawVariant GlFrameRenderer::maskVariant(const FrameInputs& frame, const FrameIn
 }
 
 void GlFrameRenderer::setCulling(bool cull) {
-  if (cull) gl_.glEnable(GL_CULL_FACE);
-  else gl_.glDisable(GL_CULL_FACE);
+  if (cull) gl_.Enable(GL_CULL_FACE);
+  else gl_.Disable(GL_CULL_FACE);
 }
 
 bool GlFrameRenderer::preparePrograms(const FrameInputs& frame, LitOutput output) {
@@ -425,19 +425,19 @@ bool GlFrameRenderer::preparePrograms(const FrameInputs& frame, LitOutput output
 
 void GlFrameRenderer::shadowPass(const FrameInputs& frame) {
   shadowMaps_.resize(gl_, frame.shadows.mapSize, frame.shadowLayerCount);
-  gl_.glBindFramebuffer(GL_FRAMEBUFFER, shadowMaps_.framebuffer());
-  gl_.glViewport(0, 0, shadowMaps_.size(), shadowMaps_.size());
-  gl_.glDisable(GL_CULL_FACE);  // every triangle casts a shadow
-  gl_.glEnable(GL_DEPTH_TEST);
-  gl_.glDepthFunc(GL_LESS);
-  gl_.glDepthMask(GL_TRUE);
-  gl_.glBindTextureUnit(kShadowMapsUnit, 0);  // the maps are the target here
+  gl_.BindFramebuffer(GL_FRAMEBUFFER, shadowMaps_.framebuffer());
+  gl_.Viewport(0, 0, shadowMaps_.size(), shadowMaps_.size());
+  gl_.Disable(GL_CULL_FACE);  // every triangle casts a shadow
+  gl_.Enable(GL_DEPTH_TEST);
+  gl_.DepthFunc(GL_LESS);
+  gl_.DepthMask(GL_TRUE);
+  gl_.BindTextureUnit(kShadowMapsUnit, 0);  // the maps are the target here
   const float farDepth = 1.0f;
   for (const FrameLight& light : frame.lights) {
     if (!light.hasShadowMap) continue;
     for (int face = 0; face < light.frustum.faceCount; ++face) {
       shadowMaps_.attachLayer(gl_, light.shadowLayer + face);
-      gl_.glClearNamedFramebufferfv(shadowMaps_.framebuffer(), GL_DEPTH, 0, &farDepth);
+      gl_.ClearNamedFramebufferfv(shadowMaps_.framebuffer(), GL_DEPTH, 0, &farDepth);
       for (const FrameInstance& instance : frame.instances) {
         const MeshBuffers& mesh = scene_.mesh(instance.mesh);
         if (mesh.indexCount == 0 || !frame.materials[static_cast<std::size_t>(instance.material)].castsShadow) continue;
@@ -446,13 +446,13 @@ void GlFrameRenderer::shadowPass(const FrameInputs& frame) {
         const DrawVariant variant = maskVariant(frame, instance);
         const DepthProgram& depth = depthPrograms_.at(variant.index());
         const GLuint program = depth.program.id();
-        gl_.glUseProgram(program);
-        gl_.glProgramUniformMatrix4fv(program, depth.lightClipFromWorld, 1, GL_FALSE, glm::value_ptr(lightClipFromWorld));
-        gl_.glProgramUniformMatrix4fv(program, depth.worldFromModel, 1, GL_FALSE, glm::value_ptr(instance.worldFromModel));
+        gl_.UseProgram(program);
+        gl_.ProgramUniformMatrix4fv(program, depth.lightClipFromWorld, 1, GL_FALSE, glm::value_ptr(lightClipFromWorld));
+        gl_.ProgramUniformMatrix4fv(program, depth.worldFromModel, 1, GL_FALSE, glm::value_ptr(instance.worldFromModel));
         if (variant.masked)
           setBaseColorUniforms(program, depth.alpha, frame.materials[static_cast<std::size_t>(instance.material)], variant.textured);
-        gl_.glBindVertexArray(mesh.vertexArray.id());
-        gl_.glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+        gl_.BindVertexArray(mesh.vertexArray.id());
+        gl_.DrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
       }
     }
   }
@@ -460,44 +460,44 @@ void GlFrameRenderer::shadowPass(const FrameInputs& frame) {
 
 void GlFrameRenderer::litPass(const FrameInputs& frame, LitOutput output) {
   target_.resize(gl_, frame.width, frame.height);
-  gl_.glBindFramebuffer(GL_FRAMEBUFFER, target_.framebuffer());
-  gl_.glViewport(0, 0, frame.width, frame.height);
-  gl_.glDepthMask(GL_TRUE);
+  gl_.BindFramebuffer(GL_FRAMEBUFFER, target_.framebuffer());
+  gl_.Viewport(0, 0, frame.width, frame.height);
+  gl_.DepthMask(GL_TRUE);
   const float farDepth = 1.0f;
-  gl_.glClearNamedFramebufferfv(target_.framebuffer(), GL_DEPTH, 0, &farDepth);
+  gl_.ClearNamedFramebufferfv(target_.framebuffer(), GL_DEPTH, 0, &farDepth);
 
   // The background over every pixel, through the same encoding as lit pixels; depth stays 1.
   // The normals stage: 0 where no triangle is kept.
-  gl_.glDisable(GL_DEPTH_TEST);
-  gl_.glDisable(GL_CULL_FACE);
-  gl_.glBindTextureUnit(kEnvironmentUnit, scene_.environment());
-  gl_.glBindTextureUnit(kBumpMapUnit, frame.bump.map ? scene_.bumpMap() : 0);
+  gl_.Disable(GL_DEPTH_TEST);
+  gl_.Disable(GL_CULL_FACE);
+  gl_.BindTextureUnit(kEnvironmentUnit, scene_.environment());
+  gl_.BindTextureUnit(kBumpMapUnit, frame.bump.map ? scene_.bumpMap() : 0);
   if (output == LitOutput::Normal) {
     const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    gl_.glClearNamedFramebufferfv(target_.framebuffer(), GL_COLOR, 0, none);
+    gl_.ClearNamedFramebufferfv(target_.framebuffer(), GL_COLOR, 0, none);
   } else if (!showsEnvironment(frame)) {
     // One colour everywhere: a clear to the value background.frag would write at every pixel, stored
     // by the C++ mirror of blending.glsl (the same product), instead of a full-frame draw.
     const glm::vec4 held = cpu::stored(frame.background, frame.backgroundAlpha, frame.blending);
-    gl_.glClearNamedFramebufferfv(target_.framebuffer(), GL_COLOR, 0, glm::value_ptr(held));
+    gl_.ClearNamedFramebufferfv(target_.framebuffer(), GL_COLOR, 0, glm::value_ptr(held));
   } else {
-    gl_.glUseProgram(backgroundProgram_->id());
-    gl_.glProgramUniform2f(backgroundProgram_->id(), backgroundViewportSize_, static_cast<float>(frame.width),
+    gl_.UseProgram(backgroundProgram_->id());
+    gl_.ProgramUniform2f(backgroundProgram_->id(), backgroundViewportSize_, static_cast<float>(frame.width),
                            static_cast<float>(frame.height));
-    gl_.glProgramUniform1f(backgroundProgram_->id(), backgroundAlpha_, frame.backgroundAlpha);
-    gl_.glProgramUniform1i(backgroundProgram_->id(), backgroundPremultiplied_, frame.blending == Blending::Premultiplied ? 1 : 0);
-    gl_.glProgramUniform2f(backgroundProgram_->id(), backgroundSampleOffset_, frame.sampleOffset.x, frame.sampleOffset.y);
-    gl_.glBindVertexArray(emptyVertexArray_.id());
-    gl_.glDrawArrays(GL_TRIANGLES, 0, 3);
+    gl_.ProgramUniform1f(backgroundProgram_->id(), backgroundAlpha_, frame.backgroundAlpha);
+    gl_.ProgramUniform1i(backgroundProgram_->id(), backgroundPremultiplied_, frame.blending == Blending::Premultiplied ? 1 : 0);
+    gl_.ProgramUniform2f(backgroundProgram_->id(), backgroundSampleOffset_, frame.sampleOffset.x, frame.sampleOffset.y);
+    gl_.BindVertexArray(emptyVertexArray_.id());
+    gl_.DrawArrays(GL_TRIANGLES, 0, 3);
   }
 
   // The painter's algorithm: no depth test and no depth writes, triangles in its order (PIPELINE.md, section 6).
   const bool painter = frame.hsr == HiddenSurface::Painter;
-  if (painter) gl_.glDisable(GL_DEPTH_TEST);
-  else gl_.glEnable(GL_DEPTH_TEST);
-  gl_.glDepthFunc(GL_LESS);
-  gl_.glCullFace(GL_BACK);
-  gl_.glBindTextureUnit(kShadowMapsUnit, frame.shadowLayerCount > 0 ? shadowMaps_.texture() : 0);
+  if (painter) gl_.Disable(GL_DEPTH_TEST);
+  else gl_.Enable(GL_DEPTH_TEST);
+  gl_.DepthFunc(GL_LESS);
+  gl_.CullFace(GL_BACK);
+  gl_.BindTextureUnit(kShadowMapsUnit, frame.shadowLayerCount > 0 ? shadowMaps_.texture() : 0);
   const LitProgram* programs[DrawVariant::kCount];
   for (int v = 0; v < DrawVariant::kCount; ++v) programs[v] = litProgram(frame, DrawVariant::of(v), output);
   GLuint current = 0;
@@ -505,7 +505,7 @@ void GlFrameRenderer::litPass(const FrameInputs& frame, LitOutput output) {
     if (scene_.mesh(instance.mesh).indexCount == 0) return;
     const LitProgram* lit = programs[drawVariant(frame, instance).index()];
     if (!lit) throw Error("OpenGL backend: no lit program was prepared for this frame");
-    if (lit->program.id() != current) gl_.glUseProgram(current = lit->program.id());
+    if (lit->program.id() != current) gl_.UseProgram(current = lit->program.id());
     setCulling(instance.cullBackFaces);
     drawInstance(*lit, frame, instance, frame.shading == ShadingMode::Flat, run);
   };
@@ -519,11 +519,11 @@ void GlFrameRenderer::litPass(const FrameInputs& frame, LitOutput output) {
   if (frame.transparentOrder.empty()) return;
   // Transparency (PIPELINE.md, section 7): the blended triangles back to front, depth-tested, no depth writes;
   // each fragment blends into the colour buffer in its shader (lit_output.glsl), in primitive order.
-  gl_.glEnable(GL_DEPTH_TEST);
-  gl_.glDepthMask(GL_FALSE);
+  gl_.Enable(GL_DEPTH_TEST);
+  gl_.DepthMask(GL_FALSE);
   current = 0;
   for (const PainterRun& run : transparent_.runs()) draw(frame.instances[run.instance], &run);
-  gl_.glDepthMask(GL_TRUE);
+  gl_.DepthMask(GL_TRUE);
 }
 
 void GlFrameRenderer::drawLines(const FrameInputs& frame) {
@@ -534,52 +534,52 @@ void GlFrameRenderer::drawLines(const FrameInputs& frame) {
     const MeshBuffers& mesh = scene_.mesh(instance.mesh);
     if (mesh.lineIndexCount == 0 && mesh.pointCount == 0) continue;
     if (!bound) {
-      gl_.glUseProgram(program);
+      gl_.UseProgram(program);
       setCulling(false);  // a segment or point has no face
-      if (frame.hsr == HiddenSurface::Painter) gl_.glDisable(GL_DEPTH_TEST);  // over what was painted, in order
+      if (frame.hsr == HiddenSurface::Painter) gl_.Disable(GL_DEPTH_TEST);  // over what was painted, in order
       bound = true;
     }
-    gl_.glProgramUniformMatrix4fv(program, lineProgram_->clipFromModel, 1, GL_FALSE, glm::value_ptr(instance.clipFromModel));
-    gl_.glProgramUniform1i(program, lineProgram_->colored, mesh.colors ? 1 : 0);
-    gl_.glProgramUniform3fv(program, lineProgram_->baseColorFactor, 1,
+    gl_.ProgramUniformMatrix4fv(program, lineProgram_->clipFromModel, 1, GL_FALSE, glm::value_ptr(instance.clipFromModel));
+    gl_.ProgramUniform1i(program, lineProgram_->colored, mesh.colors ? 1 : 0);
+    gl_.ProgramUniform3fv(program, lineProgram_->baseColorFactor, 1,
                             glm::value_ptr(frame.materials[static_cast<std::size_t>(instance.material)].baseColor));
     if (mesh.lineIndexCount) {
-      gl_.glBindVertexArray(mesh.lineVertexArray.id());
-      gl_.glDrawElements(GL_LINES, mesh.lineIndexCount, GL_UNSIGNED_INT, nullptr);
+      gl_.BindVertexArray(mesh.lineVertexArray.id());
+      gl_.DrawElements(GL_LINES, mesh.lineIndexCount, GL_UNSIGNED_INT, nullptr);
     }
     if (mesh.pointCount) {
-      gl_.glBindVertexArray(mesh.pointVertexArray.id());
-      gl_.glDrawElements(GL_POINTS, mesh.pointCount, GL_UNSIGNED_INT, nullptr);
+      gl_.BindVertexArray(mesh.pointVertexArray.id());
+      gl_.DrawElements(GL_POINTS, mesh.pointCount, GL_UNSIGNED_INT, nullptr);
     }
   }
 }
 
 void GlFrameRenderer::accumulatePass(const FrameInputs& frame) {
-  gl_.glBindFramebuffer(GL_FRAMEBUFFER, sum_.framebuffer());
-  gl_.glViewport(0, 0, frame.width, frame.height);
-  gl_.glDisable(GL_DEPTH_TEST);
-  gl_.glDisable(GL_CULL_FACE);
-  gl_.glBindTextureUnit(kResolveUnit, target_.colorTexture());
-  gl_.glUseProgram(accumulateProgram_->id());
-  gl_.glProgramUniform1i(accumulateProgram_->id(), accumulatePremultiplied_, frame.blending == Blending::Premultiplied ? 1 : 0);
-  gl_.glBindVertexArray(emptyVertexArray_.id());
-  gl_.glDrawArrays(GL_TRIANGLES, 0, 3);
-  gl_.glBindTextureUnit(kResolveUnit, 0);  // the colour buffer is the next sample's target
+  gl_.BindFramebuffer(GL_FRAMEBUFFER, sum_.framebuffer());
+  gl_.Viewport(0, 0, frame.width, frame.height);
+  gl_.Disable(GL_DEPTH_TEST);
+  gl_.Disable(GL_CULL_FACE);
+  gl_.BindTextureUnit(kResolveUnit, target_.colorTexture());
+  gl_.UseProgram(accumulateProgram_->id());
+  gl_.ProgramUniform1i(accumulateProgram_->id(), accumulatePremultiplied_, frame.blending == Blending::Premultiplied ? 1 : 0);
+  gl_.BindVertexArray(emptyVertexArray_.id());
+  gl_.DrawArrays(GL_TRIANGLES, 0, 3);
+  gl_.BindTextureUnit(kResolveUnit, 0);  // the colour buffer is the next sample's target
 }
 
 void GlFrameRenderer::resolvePass(const FrameInputs& frame, GLuint source, bool premultiplied, int samples) {
   resolved_.resize(gl_, frame.width, frame.height);
-  gl_.glBindFramebuffer(GL_FRAMEBUFFER, resolved_.framebuffer());
-  gl_.glViewport(0, 0, frame.width, frame.height);
-  gl_.glDisable(GL_DEPTH_TEST);
-  gl_.glDisable(GL_CULL_FACE);
-  gl_.glBindTextureUnit(kResolveUnit, source);
-  gl_.glUseProgram(resolveProgram_->id());
-  gl_.glProgramUniform1i(resolveProgram_->id(), resolvePremultiplied_, premultiplied ? 1 : 0);
-  gl_.glProgramUniform1f(resolveProgram_->id(), resolveSamples_, static_cast<float>(samples));
-  gl_.glBindVertexArray(emptyVertexArray_.id());
-  gl_.glDrawArrays(GL_TRIANGLES, 0, 3);
-  gl_.glBindTextureUnit(kResolveUnit, 0);  // the colour buffer is the next frame's target
+  gl_.BindFramebuffer(GL_FRAMEBUFFER, resolved_.framebuffer());
+  gl_.Viewport(0, 0, frame.width, frame.height);
+  gl_.Disable(GL_DEPTH_TEST);
+  gl_.Disable(GL_CULL_FACE);
+  gl_.BindTextureUnit(kResolveUnit, source);
+  gl_.UseProgram(resolveProgram_->id());
+  gl_.ProgramUniform1i(resolveProgram_->id(), resolvePremultiplied_, premultiplied ? 1 : 0);
+  gl_.ProgramUniform1f(resolveProgram_->id(), resolveSamples_, static_cast<float>(samples));
+  gl_.BindVertexArray(emptyVertexArray_.id());
+  gl_.DrawArrays(GL_TRIANGLES, 0, 3);
+  gl_.BindTextureUnit(kResolveUnit, 0);  // the colour buffer is the next frame's target
 }
 
 const GlFrameRenderer::LitProgram* GlFrameRenderer::litProgram(const FrameInputs& frame, DrawVariant variant, LitOutput output) const {
@@ -595,49 +595,49 @@ void GlFrameRenderer::drawInstance(const LitProgram& lit, const FrameInputs& fra
   const bool textured = variant.textured;
 
   const GLuint program = lit.program.id();
-  gl_.glProgramUniformMatrix4fv(program, lit.clipFromModel, 1, GL_FALSE, glm::value_ptr(instance.clipFromModel));
-  gl_.glProgramUniformMatrix4fv(program, lit.worldFromModel, 1, GL_FALSE, glm::value_ptr(instance.worldFromModel));
-  gl_.glProgramUniformMatrix3fv(program, lit.normalMatrix, 1, GL_FALSE, glm::value_ptr(instance.normalMatrix));
-  gl_.glProgramUniform3fv(program, lit.emissive, 1, glm::value_ptr(material.emissive));
-  gl_.glProgramUniform1f(program, lit.ka, material.ka);
-  gl_.glProgramUniform1f(program, lit.kd, material.kd);
-  gl_.glProgramUniform1f(program, lit.ks, material.ks);
-  gl_.glProgramUniform1f(program, lit.shininess, material.shininess);
-  gl_.glProgramUniform1f(program, lit.metallic, material.metallic);
-  gl_.glProgramUniform1f(program, lit.roughness, material.roughness);
-  gl_.glProgramUniform3fv(program, lit.baseColorFactor, 1, glm::value_ptr(material.baseColor));
-  gl_.glProgramUniform1i(program, lit.unlit, material.unlit ? 1 : 0);
-  if (lit.additive >= 0) gl_.glProgramUniform1i(program, lit.additive, material.additive ? 1 : 0);
+  gl_.ProgramUniformMatrix4fv(program, lit.clipFromModel, 1, GL_FALSE, glm::value_ptr(instance.clipFromModel));
+  gl_.ProgramUniformMatrix4fv(program, lit.worldFromModel, 1, GL_FALSE, glm::value_ptr(instance.worldFromModel));
+  gl_.ProgramUniformMatrix3fv(program, lit.normalMatrix, 1, GL_FALSE, glm::value_ptr(instance.normalMatrix));
+  gl_.ProgramUniform3fv(program, lit.emissive, 1, glm::value_ptr(material.emissive));
+  gl_.ProgramUniform1f(program, lit.ka, material.ka);
+  gl_.ProgramUniform1f(program, lit.kd, material.kd);
+  gl_.ProgramUniform1f(program, lit.ks, material.ks);
+  gl_.ProgramUniform1f(program, lit.shininess, material.shininess);
+  gl_.ProgramUniform1f(program, lit.metallic, material.metallic);
+  gl_.ProgramUniform1f(program, lit.roughness, material.roughness);
+  gl_.ProgramUniform3fv(program, lit.baseColorFactor, 1, glm::value_ptr(material.baseColor));
+  gl_.ProgramUniform1i(program, lit.unlit, material.unlit ? 1 : 0);
+  if (lit.additive >= 0) gl_.ProgramUniform1i(program, lit.additive, material.additive ? 1 : 0);
   setBaseColorUniforms(program, lit.alpha, material, textured);
   setMapUniforms(lit, material, variant);
 
   if (flat) {
-    gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshIndicesBinding, run ? run->indices : mesh.indices.id());
-    gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshPositionsBinding, mesh.positions.id());
+    gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshIndicesBinding, run ? run->indices : mesh.indices.id());
+    gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshPositionsBinding, mesh.positions.id());
     // Read only when textured (base colour or emissive); something valid is bound either way.
     const bool mapped = textured || variant.emissiveMap;
-    gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshTexcoordsBinding, mapped && mesh.texcoords ? mesh.texcoords.id() : mesh.positions.id());
-    gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshTexcoords1Binding, mapped && mesh.texcoords1 ? mesh.texcoords1.id() : mesh.positions.id());
-    gl_.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshColorsBinding, variant.colored ? mesh.colors.id() : mesh.positions.id());
-    gl_.glBindVertexArray(emptyVertexArray_.id());
-    if (run) gl_.glDrawArrays(GL_TRIANGLES, 3 * run->first, 3 * run->count);  // gl_VertexID counts from 3·first
-    else gl_.glDrawArrays(GL_TRIANGLES, 0, mesh.indexCount);
+    gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshTexcoordsBinding, mapped && mesh.texcoords ? mesh.texcoords.id() : mesh.positions.id());
+    gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshTexcoords1Binding, mapped && mesh.texcoords1 ? mesh.texcoords1.id() : mesh.positions.id());
+    gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshColorsBinding, variant.colored ? mesh.colors.id() : mesh.positions.id());
+    gl_.BindVertexArray(emptyVertexArray_.id());
+    if (run) gl_.DrawArrays(GL_TRIANGLES, 3 * run->first, 3 * run->count);  // gl_VertexID counts from 3·first
+    else gl_.DrawArrays(GL_TRIANGLES, 0, mesh.indexCount);
   } else {
     drawIndexed(mesh, run);
   }
 }
 
 void GlFrameRenderer::drawIndexed(const MeshBuffers& mesh, const PainterRun* run) {
-  gl_.glBindVertexArray(mesh.vertexArray.id());
+  gl_.BindVertexArray(mesh.vertexArray.id());
   if (!run) {
-    gl_.glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+    gl_.DrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
     return;
   }
   // The run's indices from the painter's buffer, at three GLuint per position; the vertex array gets its own back.
-  gl_.glVertexArrayElementBuffer(mesh.vertexArray.id(), run->indices);
-  gl_.glDrawElements(GL_TRIANGLES, 3 * run->count, GL_UNSIGNED_INT,
+  gl_.VertexArrayElementBuffer(mesh.vertexArray.id(), run->indices);
+  gl_.DrawElements(GL_TRIANGLES, 3 * run->count, GL_UNSIGNED_INT,
                      reinterpret_cast<const void*>(static_cast<std::uintptr_t>(run->first) * 3 * sizeof(GLuint)));
-  gl_.glVertexArrayElementBuffer(mesh.vertexArray.id(), mesh.indices.id());
+  gl_.VertexArrayElementBuffer(mesh.vertexArray.id(), mesh.indices.id());
 }
 
 GlFrameRenderer::AlphaUniforms GlFrameRenderer::alphaUniforms(const ShaderProgram& program) const {
@@ -660,18 +660,18 @@ bool GlFrameRenderer::prepareMaskPrograms(std::map<int, Program>& programs, cons
 
 void GlFrameRenderer::setBaseColorUniforms(GLuint program, const AlphaUniforms& uniforms, const CourseMaterial& material, bool textured) {
   const GLint samplerLocation = uniforms.baseColorSampler;
-  gl_.glProgramUniform1f(program, uniforms.baseAlpha, material.baseAlpha);
+  gl_.ProgramUniform1f(program, uniforms.baseAlpha, material.baseAlpha);
   const glm::vec3 rows[2] = {material.uvRow0, material.uvRow1};
-  gl_.glProgramUniform3fv(program, uniforms.baseColorTransform, 2, glm::value_ptr(rows[0]));
-  gl_.glProgramUniform1f(program, uniforms.alphaCutoff, material.alphaCutoff);
-  gl_.glProgramUniform1i(program, uniforms.baseColorSet, material.baseColorSet == 1 ? 1 : 0);
+  gl_.ProgramUniform3fv(program, uniforms.baseColorTransform, 2, glm::value_ptr(rows[0]));
+  gl_.ProgramUniform1f(program, uniforms.alphaCutoff, material.alphaCutoff);
+  gl_.ProgramUniform1i(program, uniforms.baseColorSet, material.baseColorSet == 1 ? 1 : 0);
   const Sampler& sampler = material.baseColorSampler;
   static_assert(static_cast<int>(MagFilter::Linear) == 1 && static_cast<int>(MinFilter::NearestMipmapNearest) == 2 &&
                     static_cast<int>(MinFilter::LinearMipmapLinear) == 5 && static_cast<int>(Wrap::MirroredRepeat) == 2,
                 "shaders/texture.glsl reads these values");
-  gl_.glProgramUniform4i(program, samplerLocation, static_cast<GLint>(sampler.mag), static_cast<GLint>(sampler.min), static_cast<GLint>(sampler.wrapS),
+  gl_.ProgramUniform4i(program, samplerLocation, static_cast<GLint>(sampler.mag), static_cast<GLint>(sampler.min), static_cast<GLint>(sampler.wrapS),
                          static_cast<GLint>(sampler.wrapT));
-  gl_.glBindTextureUnit(kBaseColorTextureUnit, textured ? scene_.texture(material.baseColorTexture) : 0);
+  gl_.BindTextureUnit(kBaseColorTextureUnit, textured ? scene_.texture(material.baseColorTexture) : 0);
 }
 
 void GlFrameRenderer::setMapUniforms(const LitProgram& lit, const CourseMaterial& material, DrawVariant variant) {
@@ -688,15 +688,15 @@ void GlFrameRenderer::setMapUniforms(const LitProgram& lit, const CourseMaterial
   for (const auto& m : maps) {
     if (!m.used) continue;
     const Sampler& s = m.map.sampler;
-    gl_.glProgramUniform4i(program, m.sampler, static_cast<GLint>(s.mag), static_cast<GLint>(s.min), static_cast<GLint>(s.wrapS), static_cast<GLint>(s.wrapT));
-    gl_.glBindTextureUnit(m.unit, scene_.texture(m.map.texture));
+    gl_.ProgramUniform4i(program, m.sampler, static_cast<GLint>(s.mag), static_cast<GLint>(s.min), static_cast<GLint>(s.wrapS), static_cast<GLint>(s.wrapT));
+    gl_.BindTextureUnit(m.unit, scene_.texture(m.map.texture));
   }
-  if (variant.occlusionMap) gl_.glProgramUniform1f(program, lit.occlusionStrength, material.occlusionStrength);
-  if (variant.normalMap) gl_.glProgramUniform1f(program, lit.normalScale, material.normalScale);
+  if (variant.occlusionMap) gl_.ProgramUniform1f(program, lit.occlusionStrength, material.occlusionStrength);
+  if (variant.normalMap) gl_.ProgramUniform1f(program, lit.normalScale, material.normalScale);
   const auto set = [](const MaterialMap& map) { return map.set == 1 ? 1 : 0; };
-  gl_.glProgramUniform4i(program, lit.mapSets, set(material.metallicRoughnessMap), set(material.occlusionMap), set(material.emissiveMap),
+  gl_.ProgramUniform4i(program, lit.mapSets, set(material.metallicRoughnessMap), set(material.occlusionMap), set(material.emissiveMap),
                          set(material.normalMap));
-  gl_.glProgramUniform4i(program, lit.mapsSrgb, material.metallicRoughnessMap.srgb ? 1 : 0, material.occlusionMap.srgb ? 1 : 0,
+  gl_.ProgramUniform4i(program, lit.mapsSrgb, material.metallicRoughnessMap.srgb ? 1 : 0, material.occlusionMap.srgb ? 1 : 0,
                          material.emissiveMap.srgb ? 1 : 0, material.normalMap.srgb ? 1 : 0);
 }
 

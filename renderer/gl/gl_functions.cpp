@@ -7,34 +7,34 @@
 namespace facet::gl {
 
 GlFunctions loadGlFunctions(const GetProcAddress& getProcAddress) {
-  GlFunctions gl;
-  // Casting from void(*)() to the function's own type is the one pointer cast
-  // every GL loader makes; the pointer was typed that way by the driver.
-#define FACET_GL_LOAD(type, name)                                                          \
-  gl.name = reinterpret_cast<type>(getProcAddress(#name));                                 \
-  if (!gl.name) throw Error("OpenGL: the context has no " #name " (facet needs OpenGL 4.5 core)");
-  FACET_GL_FUNCTIONS(FACET_GL_LOAD)
-#undef FACET_GL_LOAD
-
-  const GLint major = getInteger(gl, GL_MAJOR_VERSION), minor = getInteger(gl, GL_MINOR_VERSION);
-  if (major * 10 + minor < 45)
-    throw Error("OpenGL: facet needs OpenGL 4.5 core, the context gives " + std::to_string(major) + "." + std::to_string(minor) + " (" +
-                rendererAndVersion(gl) + ")");
+  GlFunctions gl{};
+  // glad hands the name back with our std::function as its user pointer.
+  const auto load = [](void* user, const char* name) -> GLADapiproc { return (*static_cast<const GetProcAddress*>(user))(name); };
+  const int version = gladLoadGLContextUserPtr(&gl, load, const_cast<GetProcAddress*>(&getProcAddress));
+  if (version == 0 || gl.GetString == nullptr || gl.GetIntegerv == nullptr)
+    throw Error("OpenGL: the context gives no version (facet needs OpenGL 4.5 core)");
+  if (!gl.VERSION_4_5)
+    throw Error("OpenGL: facet needs OpenGL 4.5 core, the context gives " + std::to_string(GLAD_VERSION_MAJOR(version)) + "." +
+                std::to_string(GLAD_VERSION_MINOR(version)) + " (" + rendererAndVersion(gl) + ")");
+  // A driver that claims 4.5 but leaves a 4.5 entry point out: glad loads
+  // what the driver gives, so the newest ones facet calls are checked.
+  if (gl.ClipControl == nullptr || gl.CreateTextures == nullptr || gl.GetTextureSubImage == nullptr)
+    throw Error("OpenGL: the context claims 4.5 but lacks its direct-state-access functions (" + rendererAndVersion(gl) + ")");
   return gl;
 }
 
 std::string rendererAndVersion(const GlFunctions& gl) {
   const auto text = [&](GLenum name) {
-    const auto* s = reinterpret_cast<const char*>(gl.glGetString(name));
+    const auto* s = reinterpret_cast<const char*>(gl.GetString(name));
     return std::string(s ? s : "?");
   };
   return text(GL_RENDERER) + ", " + text(GL_VERSION);
 }
 
 void checkGlError(const GlFunctions& gl, const char* where, const std::string& who) {
-  const GLenum error = gl.glGetError();
+  const GLenum error = gl.GetError();
   if (error == GL_NO_ERROR) return;
-  while (gl.glGetError() != GL_NO_ERROR) {
+  while (gl.GetError() != GL_NO_ERROR) {
   }
   char code[16];
   std::snprintf(code, sizeof code, "0x%04x", error);
@@ -43,7 +43,7 @@ void checkGlError(const GlFunctions& gl, const char* where, const std::string& w
 
 GLint getInteger(const GlFunctions& gl, GLenum name) {
   GLint value = 0;
-  gl.glGetIntegerv(name, &value);
+  gl.GetIntegerv(name, &value);
   return value;
 }
 

@@ -29,7 +29,7 @@ void PaintersDraws::prepare(const GlFunctions& gl, const Scene& scene, const Fra
   const auto upload = [&](const std::vector<std::uint32_t>& data) {
     GlObject buffer = createBuffer(gl);
     const std::uint32_t none = 0;
-    gl.glNamedBufferStorage(buffer.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(data.size(), 1) * sizeof(std::uint32_t)),
+    gl.NamedBufferStorage(buffer.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(data.size(), 1) * sizeof(std::uint32_t)),
                             data.empty() ? &none : data.data(), 0);
     return buffer;
   };

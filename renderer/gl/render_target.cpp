@@ -28,13 +28,13 @@ std::string statusName(GLenum status) {
 }  // namespace
 
 void checkFramebufferComplete(const GlFunctions& gl, GLuint framebuffer, const std::string& what) {
-  const GLenum status = gl.glCheckNamedFramebufferStatus(framebuffer, GL_FRAMEBUFFER);
+  const GLenum status = gl.CheckNamedFramebufferStatus(framebuffer, GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE) throw Error("OpenGL: the " + what + " framebuffer is incomplete (" + statusName(status) + ")");
 }
 
 void checkSizeLimit(const GlFunctions& gl, const std::string& what, int size, GLenum limit, const char* limitName) {
   GLint values[2] = {0, 0};  // GL_MAX_VIEWPORT_DIMS has two; the smaller one bounds both sides
-  gl.glGetIntegerv(limit, values);
+  gl.GetIntegerv(limit, values);
   const GLint maximum = limit == GL_MAX_VIEWPORT_DIMS ? std::min(values[0], values[1]) : values[0];
   if (size > maximum)
     throw Error(what + ": larger than this OpenGL allows (" + limitName + " " + std::to_string(maximum) + ")");
@@ -52,18 +52,18 @@ void RenderTarget::resize(const GlFunctions& gl, int width, int height) {
   const Depth depth = depthAttached_;
   *this = RenderTarget(format, depth);
   color_ = createTexture(gl, GL_TEXTURE_2D);
-  gl.glTextureStorage2D(color_.id(), 1, format, width, height);
-  gl.glTextureParameteri(color_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  gl.glTextureParameteri(color_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  gl.TextureStorage2D(color_.id(), 1, format, width, height);
+  gl.TextureParameteri(color_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  gl.TextureParameteri(color_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   framebuffer_ = createFramebuffer(gl);
-  gl.glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, color_.id(), 0);
+  gl.NamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, color_.id(), 0);
   if (depth == Depth::With) {
     depth_ = createRenderbuffer(gl);
-    gl.glNamedRenderbufferStorage(depth_.id(), GL_DEPTH_COMPONENT32F, width, height);
-    gl.glNamedFramebufferRenderbuffer(framebuffer_.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
+    gl.NamedRenderbufferStorage(depth_.id(), GL_DEPTH_COMPONENT32F, width, height);
+    gl.NamedFramebufferRenderbuffer(framebuffer_.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
   }
-  gl.glNamedFramebufferDrawBuffer(framebuffer_.id(), GL_COLOR_ATTACHMENT0);
-  gl.glNamedFramebufferReadBuffer(framebuffer_.id(), GL_COLOR_ATTACHMENT0);
+  gl.NamedFramebufferDrawBuffer(framebuffer_.id(), GL_COLOR_ATTACHMENT0);
+  gl.NamedFramebufferReadBuffer(framebuffer_.id(), GL_COLOR_ATTACHMENT0);
   checkFramebufferComplete(gl, framebuffer_.id(), format == GL_RGBA32F ? "lit pass (RGBA32F + DEPTH_COMPONENT32F)"
                                               : format == GL_RGBA8   ? "resolve (RGBA8)"
                                               : format == GL_R32UI   ? "triangle id (R32UI + DEPTH_COMPONENT32F)"
@@ -80,20 +80,20 @@ void ShadowMapArray::resize(const GlFunctions& gl, int size, int layers) {
   checkSizeLimit(gl, std::to_string(layers) + " shadow maps", layers, GL_MAX_ARRAY_TEXTURE_LAYERS, "GL_MAX_ARRAY_TEXTURE_LAYERS");
   *this = ShadowMapArray();
   texture_ = createTexture(gl, GL_TEXTURE_2D_ARRAY);
-  gl.glTextureStorage3D(texture_.id(), 1, GL_DEPTH_COMPONENT32F, size, size, layers);
+  gl.TextureStorage3D(texture_.id(), 1, GL_DEPTH_COMPONENT32F, size, size, layers);
   // Read with texelFetch only: no filtering, no depth comparison.
-  gl.glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  gl.glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  gl.glTextureParameteri(texture_.id(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
+  gl.TextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  gl.TextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  gl.TextureParameteri(texture_.id(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
   framebuffer_ = createFramebuffer(gl);
-  gl.glNamedFramebufferDrawBuffer(framebuffer_.id(), GL_NONE);
-  gl.glNamedFramebufferReadBuffer(framebuffer_.id(), GL_NONE);
+  gl.NamedFramebufferDrawBuffer(framebuffer_.id(), GL_NONE);
+  gl.NamedFramebufferReadBuffer(framebuffer_.id(), GL_NONE);
   size_ = size;
   layers_ = layers;
 }
 
 void ShadowMapArray::attachLayer(const GlFunctions& gl, int layer) const {
-  gl.glNamedFramebufferTextureLayer(framebuffer_.id(), GL_DEPTH_ATTACHMENT, texture_.id(), 0, layer);
+  gl.NamedFramebufferTextureLayer(framebuffer_.id(), GL_DEPTH_ATTACHMENT, texture_.id(), 0, layer);
   checkFramebufferComplete(gl, framebuffer_.id(), "shadow map (DEPTH_COMPONENT32F array layer " + std::to_string(layer) + ")");
 }
 

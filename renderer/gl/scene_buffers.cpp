@@ -11,15 +11,15 @@ namespace {
 template <typename T>
 GlObject uploadBuffer(const GlFunctions& gl, const std::vector<T>& data) {
   GlObject buffer = createBuffer(gl);
-  gl.glNamedBufferStorage(buffer.id(), static_cast<GLsizeiptr>(data.size() * sizeof(T)), data.data(), 0);
+  gl.NamedBufferStorage(buffer.id(), static_cast<GLsizeiptr>(data.size() * sizeof(T)), data.data(), 0);
   return buffer;
 }
 
 void addAttribute(const GlFunctions& gl, GLuint vertexArray, GLuint location, const GlObject& buffer, GLint components) {
-  gl.glVertexArrayVertexBuffer(vertexArray, location, buffer.id(), 0, components * static_cast<GLsizei>(sizeof(float)));
-  gl.glVertexArrayAttribFormat(vertexArray, location, components, GL_FLOAT, GL_FALSE, 0);
-  gl.glVertexArrayAttribBinding(vertexArray, location, location);
-  gl.glEnableVertexArrayAttrib(vertexArray, location);
+  gl.VertexArrayVertexBuffer(vertexArray, location, buffer.id(), 0, components * static_cast<GLsizei>(sizeof(float)));
+  gl.VertexArrayAttribFormat(vertexArray, location, components, GL_FLOAT, GL_FALSE, 0);
+  gl.VertexArrayAttribBinding(vertexArray, location, location);
+  gl.EnableVertexArrayAttrib(vertexArray, location);
 }
 
 // A vertex array with the mesh's attributes and `indices` as its index buffer.
@@ -32,7 +32,7 @@ GlObject attributeArray(const GlFunctions& gl, const MeshBuffers& buffers, const
   if (buffers.texcoords1) addAttribute(gl, vao, kTexcoord1Attribute, buffers.texcoords1, 2);
   if (buffers.colors) addAttribute(gl, vao, kColorAttribute, buffers.colors, 4);
   if (buffers.tangents) addAttribute(gl, vao, kTangentAttribute, buffers.tangents, 4);
-  gl.glVertexArrayElementBuffer(vao, indices.id());
+  gl.VertexArrayElementBuffer(vao, indices.id());
   return array;
 }
 
@@ -72,13 +72,13 @@ GlObject uploadTexture(const GlFunctions& gl, const Image& image, const std::vec
   if (image.empty()) return {};
   // Unsigned integer texels: the shader turns bytes into [0,1] itself (shaders/texture.glsl says why).
   GlObject object = createTexture(gl, GL_TEXTURE_2D);
-  gl.glTextureStorage2D(object.id(), 1 + static_cast<GLsizei>(mips.size()), GL_RGBA8UI, image.width(), image.height());
+  gl.TextureStorage2D(object.id(), 1 + static_cast<GLsizei>(mips.size()), GL_RGBA8UI, image.width(), image.height());
   // Read with texelFetch only; integer textures are complete only with NEAREST filters.
-  gl.glTextureParameteri(object.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
-  gl.glTextureParameteri(object.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  gl.TextureParameteri(object.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+  gl.TextureParameteri(object.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   for (std::size_t k = 0; k <= mips.size(); ++k) {
     const Image& level = k == 0 ? image : mips[k - 1];
-    gl.glTextureSubImage2D(object.id(), static_cast<GLint>(k), 0, 0, level.width(), level.height(), GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, level.data());
+    gl.TextureSubImage2D(object.id(), static_cast<GLint>(k), 0, 0, level.width(), level.height(), GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, level.data());
   }
   return object;
 }

@@ -19,9 +19,9 @@ GLenum stageOf(std::string_view file) {
 
 std::string infoLog(const GlFunctions& gl, GLuint object, bool program) {
   GLint length = 0;
-  (program ? gl.glGetProgramiv : gl.glGetShaderiv)(object, GL_INFO_LOG_LENGTH, &length);
+  (program ? gl.GetProgramiv : gl.GetShaderiv)(object, GL_INFO_LOG_LENGTH, &length);
   std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
-  (program ? gl.glGetProgramInfoLog : gl.glGetShaderInfoLog)(object, static_cast<GLsizei>(log.size()), nullptr, log.data());
+  (program ? gl.GetProgramInfoLog : gl.GetShaderInfoLog)(object, static_cast<GLsizei>(log.size()), nullptr, log.data());
   return log;
 }
 
@@ -40,13 +40,13 @@ std::string commonDefines() { return "#define FACET_MAX_LIGHTS " + std::to_strin
 GlObject compileStage(const GlFunctions& gl, std::string_view file, std::string_view defines, const ShaderFileLookup& find) {
   ShaderSource source = assembleShaderSource(file, find);
   source.text = withDefines(source.text, commonDefines() + std::string(defines));
-  GlObject shader(gl, gl.glCreateShader(stageOf(file)), [](const GlFunctions& f, GLuint id) { f.glDeleteShader(id); });
+  GlObject shader(gl, gl.CreateShader(stageOf(file)), [](const GlFunctions& f, GLuint id) { f.DeleteShader(id); });
   const char* text = source.text.c_str();
   const auto length = static_cast<GLint>(source.text.size());
-  gl.glShaderSource(shader.id(), 1, &text, &length);
-  gl.glCompileShader(shader.id());
+  gl.ShaderSource(shader.id(), 1, &text, &length);
+  gl.CompileShader(shader.id());
   GLint compiled = GL_FALSE;
-  gl.glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &compiled);
+  gl.GetShaderiv(shader.id(), GL_COMPILE_STATUS, &compiled);
   if (!compiled) throw Error("shader " + std::string(file) + " does not compile: " + describeLog(infoLog(gl, shader.id(), false), source.files));
   return shader;
 }
@@ -61,17 +61,17 @@ ShaderProgram buildProgram(const GlFunctions& gl, std::initializer_list<std::str
     name += (name.empty() ? "" : " + ") + std::string(file);
     shaders.push_back(compileStage(gl, file, defines, find));
   }
-  GlObject program(gl, gl.glCreateProgram(), [](const GlFunctions& f, GLuint id) { f.glDeleteProgram(id); });
-  for (const GlObject& shader : shaders) gl.glAttachShader(program.id(), shader.id());
-  gl.glLinkProgram(program.id());
+  GlObject program(gl, gl.CreateProgram(), [](const GlFunctions& f, GLuint id) { f.DeleteProgram(id); });
+  for (const GlObject& shader : shaders) gl.AttachShader(program.id(), shader.id());
+  gl.LinkProgram(program.id());
   GLint linked = GL_FALSE;
-  gl.glGetProgramiv(program.id(), GL_LINK_STATUS, &linked);
+  gl.GetProgramiv(program.id(), GL_LINK_STATUS, &linked);
   if (!linked) throw Error("shader program " + name + " does not link: " + describeLog(infoLog(gl, program.id(), true), {}));
   return {std::move(program), name};  // the shaders are deleted here; the program keeps them while it lives
 }
 
 GLint uniformLocation(const GlFunctions& gl, const ShaderProgram& program, const char* name) {
-  return gl.glGetUniformLocation(program.id(), name);
+  return gl.GetUniformLocation(program.id(), name);
 }
 
 }  // namespace facet::gl

@@ -54,23 +54,23 @@ TEST_CASE("the driver lays the Frame block out as FrameBlock: every offset, the 
   const GlFunctions& gl = harness.gl;
   // The program that reads the most of the block; std140 keeps every member active anyway.
   const ShaderProgram program = buildProgram(gl, {"lit_phong.vert", "lit_phong.frag"}, litShaderDefines(buildFrameInputs(makeDefaultScene(), RenderSettings{}), {}));
-  const GLuint block = gl.glGetUniformBlockIndex(program.id(), "Frame");
+  const GLuint block = gl.GetUniformBlockIndex(program.id(), "Frame");
   REQUIRE(block != GL_INVALID_INDEX);
   GLint size = 0;
-  gl.glGetActiveUniformBlockiv(program.id(), block, GL_UNIFORM_BLOCK_DATA_SIZE, &size);
+  gl.GetActiveUniformBlockiv(program.id(), block, GL_UNIFORM_BLOCK_DATA_SIZE, &size);
   CHECK(size == static_cast<GLint>(sizeof(FrameBlock)));
 
   const std::vector<Member> members = frameBlockMembers();
   std::vector<const char*> names;
   for (const Member& m : members) names.push_back(m.name.c_str());
   std::vector<GLuint> indices(members.size(), GL_INVALID_INDEX);
-  gl.glGetUniformIndices(program.id(), static_cast<GLsizei>(names.size()), names.data(), indices.data());
+  gl.GetUniformIndices(program.id(), static_cast<GLsizei>(names.size()), names.data(), indices.data());
   for (std::size_t i = 0; i < members.size(); ++i) {
     INFO(members[i].name);
     REQUIRE(indices[i] != GL_INVALID_INDEX);
     GLint offset = -1, blockIndex = -1;
-    gl.glGetActiveUniformsiv(program.id(), 1, &indices[i], GL_UNIFORM_OFFSET, &offset);
-    gl.glGetActiveUniformsiv(program.id(), 1, &indices[i], GL_UNIFORM_BLOCK_INDEX, &blockIndex);
+    gl.GetActiveUniformsiv(program.id(), 1, &indices[i], GL_UNIFORM_OFFSET, &offset);
+    gl.GetActiveUniformsiv(program.id(), 1, &indices[i], GL_UNIFORM_BLOCK_INDEX, &blockIndex);
     CHECK(blockIndex == static_cast<GLint>(block));
     CHECK(offset == static_cast<GLint>(members[i].offset));
   }
@@ -78,9 +78,9 @@ TEST_CASE("the driver lays the Frame block out as FrameBlock: every offset, the 
   // shadowFromWorld: six column-major mat4, 64 bytes apart, columns 16 apart (std::array<glm::mat4, 6>).
   GLint arrayStride = 0, matrixStride = 0, rowMajor = 1;
   const GLuint matrices = indices.back();
-  gl.glGetActiveUniformsiv(program.id(), 1, &matrices, GL_UNIFORM_ARRAY_STRIDE, &arrayStride);
-  gl.glGetActiveUniformsiv(program.id(), 1, &matrices, GL_UNIFORM_MATRIX_STRIDE, &matrixStride);
-  gl.glGetActiveUniformsiv(program.id(), 1, &matrices, GL_UNIFORM_IS_ROW_MAJOR, &rowMajor);
+  gl.GetActiveUniformsiv(program.id(), 1, &matrices, GL_UNIFORM_ARRAY_STRIDE, &arrayStride);
+  gl.GetActiveUniformsiv(program.id(), 1, &matrices, GL_UNIFORM_MATRIX_STRIDE, &matrixStride);
+  gl.GetActiveUniformsiv(program.id(), 1, &matrices, GL_UNIFORM_IS_ROW_MAJOR, &rowMajor);
   CHECK(arrayStride == static_cast<GLint>(sizeof(glm::mat4)));
   CHECK(matrixStride == static_cast<GLint>(sizeof(glm::vec4)));
   CHECK(rowMajor == 0);

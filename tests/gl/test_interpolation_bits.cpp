@@ -47,34 +47,34 @@ TEST_CASE("llvmpipe's depth, perspective-correct attributes and dFdx/dFdy equal 
   });
 
   const gl::GlObject color = gl::createRenderbuffer(gl);
-  gl.glNamedRenderbufferStorage(color.id(), GL_RGBA32F, kWidth, kHeight);
+  gl.NamedRenderbufferStorage(color.id(), GL_RGBA32F, kWidth, kHeight);
   const gl::GlObject derivative = gl::createRenderbuffer(gl);
-  gl.glNamedRenderbufferStorage(derivative.id(), GL_RGBA32F, kWidth, kHeight);
+  gl.NamedRenderbufferStorage(derivative.id(), GL_RGBA32F, kWidth, kHeight);
   const gl::GlObject depth = gl::createRenderbuffer(gl);
-  gl.glNamedRenderbufferStorage(depth.id(), GL_DEPTH_COMPONENT32F, kWidth, kHeight);
+  gl.NamedRenderbufferStorage(depth.id(), GL_DEPTH_COMPONENT32F, kWidth, kHeight);
   const gl::GlObject framebuffer = gl::createFramebuffer(gl);
-  gl.glNamedFramebufferRenderbuffer(framebuffer.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color.id());
-  gl.glNamedFramebufferRenderbuffer(framebuffer.id(), GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, derivative.id());
-  gl.glNamedFramebufferRenderbuffer(framebuffer.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth.id());
+  gl.NamedFramebufferRenderbuffer(framebuffer.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color.id());
+  gl.NamedFramebufferRenderbuffer(framebuffer.id(), GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, derivative.id());
+  gl.NamedFramebufferRenderbuffer(framebuffer.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth.id());
   const GLenum drawBuffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-  gl.glNamedFramebufferDrawBuffers(framebuffer.id(), 2, drawBuffers);
+  gl.NamedFramebufferDrawBuffers(framebuffer.id(), 2, drawBuffers);
   const gl::GlObject buffer = gl::createBuffer(gl);
-  gl.glNamedBufferStorage(buffer.id(), 3 * 8 * sizeof(float), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  gl.NamedBufferStorage(buffer.id(), 3 * 8 * sizeof(float), nullptr, GL_DYNAMIC_STORAGE_BIT);
   const gl::GlObject vertexArray = gl::createVertexArray(gl);
-  gl.glVertexArrayVertexBuffer(vertexArray.id(), 0, buffer.id(), 0, 8 * sizeof(float));
+  gl.VertexArrayVertexBuffer(vertexArray.id(), 0, buffer.id(), 0, 8 * sizeof(float));
   for (GLuint a = 0; a < 2; ++a) {
-    gl.glEnableVertexArrayAttrib(vertexArray.id(), a);
-    gl.glVertexArrayAttribFormat(vertexArray.id(), a, 4, GL_FLOAT, GL_FALSE, a * 4 * sizeof(float));
-    gl.glVertexArrayAttribBinding(vertexArray.id(), a, 0);
+    gl.EnableVertexArrayAttrib(vertexArray.id(), a);
+    gl.VertexArrayAttribFormat(vertexArray.id(), a, 4, GL_FLOAT, GL_FALSE, a * 4 * sizeof(float));
+    gl.VertexArrayAttribBinding(vertexArray.id(), a, 0);
   }
-  gl.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
-  gl.glViewport(0, 0, kWidth, kHeight);
-  gl.glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-  gl.glEnable(GL_DEPTH_TEST);
-  gl.glDepthFunc(GL_LESS);
-  gl.glDisable(GL_CULL_FACE);
-  gl.glUseProgram(program.id());
-  gl.glBindVertexArray(vertexArray.id());
+  gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+  gl.Viewport(0, 0, kWidth, kHeight);
+  gl.ClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  gl.Enable(GL_DEPTH_TEST);
+  gl.DepthFunc(GL_LESS);
+  gl.Disable(GL_CULL_FACE);
+  gl.UseProgram(program.id());
+  gl.BindVertexArray(vertexArray.id());
 
   std::mt19937 random(174);
   std::uniform_real_distribution<float> unit(-1.0f, 1.0f), wRange(0.3f, 4.0f), values(-100.0f, 100.0f);
@@ -91,18 +91,18 @@ TEST_CASE("llvmpipe's depth, perspective-correct attributes and dFdx/dFdy equal 
       v[0] = reach * unit(random) * w, v[1] = reach * unit(random) * w, v[2] = 0.5f * (reach * unit(random) + 1.0f) * w, v[3] = w;
       for (int k = 4; k < 8; ++k) v[k] = values(random);
     }
-    gl.glNamedBufferSubData(buffer.id(), 0, sizeof vertices, vertices);
+    gl.NamedBufferSubData(buffer.id(), 0, sizeof vertices, vertices);
     const float clear[4] = {kUnwritten, kUnwritten, kUnwritten, kUnwritten};
-    gl.glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, clear);
+    gl.ClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, clear);
     const float one = 1.0f;
-    gl.glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &one);
-    gl.glDrawArrays(GL_TRIANGLES, 0, 3);
-    gl.glNamedFramebufferReadBuffer(framebuffer.id(), GL_COLOR_ATTACHMENT0);
-    gl.glReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_FLOAT, colors.data());
-    gl.glNamedFramebufferReadBuffer(framebuffer.id(), GL_COLOR_ATTACHMENT1);
-    gl.glReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_FLOAT, derivatives.data());
-    gl.glReadPixels(0, 0, kWidth, kHeight, GL_DEPTH_COMPONENT, GL_FLOAT, depths.data());
-    REQUIRE(gl.glGetError() == GL_NO_ERROR);
+    gl.ClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &one);
+    gl.DrawArrays(GL_TRIANGLES, 0, 3);
+    gl.NamedFramebufferReadBuffer(framebuffer.id(), GL_COLOR_ATTACHMENT0);
+    gl.ReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_FLOAT, colors.data());
+    gl.NamedFramebufferReadBuffer(framebuffer.id(), GL_COLOR_ATTACHMENT1);
+    gl.ReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_FLOAT, derivatives.data());
+    gl.ReadPixels(0, 0, kWidth, kHeight, GL_DEPTH_COMPONENT, GL_FLOAT, depths.data());
+    REQUIRE(gl.GetError() == GL_NO_ERROR);
 
     // The CPU's window vertices (clipped where a vertex is outside), coverage and planes.
     cpu::ClipVertex clip[3];

@@ -38,21 +38,21 @@ std::vector<glm::vec4> evaluate(const std::string& expression, const std::vector
   const gl::GlFunctions& gl = harness.gl;
   const auto texture = [&](const std::vector<glm::vec4>& values) {
     gl::GlObject t = gl::createTexture(gl, GL_TEXTURE_2D);
-    gl.glTextureStorage2D(t.id(), 1, GL_RGBA32F, kWidth, 1);
-    gl.glTextureSubImage2D(t.id(), 0, 0, 0, kWidth, 1, GL_RGBA, GL_FLOAT, values.data());
+    gl.TextureStorage2D(t.id(), 1, GL_RGBA32F, kWidth, 1);
+    gl.TextureSubImage2D(t.id(), 0, 0, 0, kWidth, 1, GL_RGBA, GL_FLOAT, values.data());
     return t;
   };
   const gl::GlObject textureA = texture(a), textureB = texture(b);
   const gl::SrgbBlock srgb = gl::makeSrgbBlock();
   const gl::GlObject tables = gl::createBuffer(gl);
-  gl.glNamedBufferStorage(tables.id(), sizeof srgb, &srgb, 0);
+  gl.NamedBufferStorage(tables.id(), sizeof srgb, &srgb, 0);
   const gl::SplitSumBlock splitSum = gl::makeSplitSumBlock();
   const gl::GlObject splitSumTable = gl::createBuffer(gl);
-  gl.glNamedBufferStorage(splitSumTable.id(), sizeof splitSum, &splitSum, 0);
+  gl.NamedBufferStorage(splitSumTable.id(), sizeof splitSum, &splitSum, 0);
   const gl::GlObject color = gl::createRenderbuffer(gl);
-  gl.glNamedRenderbufferStorage(color.id(), GL_RGBA32F, kWidth, 1);
+  gl.NamedRenderbufferStorage(color.id(), GL_RGBA32F, kWidth, 1);
   const gl::GlObject framebuffer = gl::createFramebuffer(gl);
-  gl.glNamedFramebufferRenderbuffer(framebuffer.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color.id());
+  gl.NamedFramebufferRenderbuffer(framebuffer.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color.id());
   const gl::GlObject vertexArray = gl::createVertexArray(gl);
 
   const std::string probe = "#version 450 core\n#include \"frame_block.glsl\"\n#include \"transform.glsl\"\n#include \"shading_math.glsl\"\n"
@@ -65,18 +65,18 @@ std::vector<glm::vec4> evaluate(const std::string& expression, const std::vector
   const gl::ShaderProgram program = gl::buildProgram(gl, {"viewport_triangle.vert", "probe.frag"}, gl::litShaderDefines(frame, {}), [&](std::string_view name) {
     return name == "probe.frag" ? std::optional<std::string_view>(probe) : gl::findEmbeddedShaderFile(name);
   });
-  gl.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
-  gl.glViewport(0, 0, kWidth, 1);
-  gl.glUseProgram(program.id());
-  gl.glBindTextureUnit(14, textureA.id());
-  gl.glBindTextureUnit(15, textureB.id());
-  gl.glBindBufferBase(GL_UNIFORM_BUFFER, 1, tables.id());
-  gl.glBindBufferBase(GL_UNIFORM_BUFFER, 2, splitSumTable.id());
-  gl.glBindVertexArray(vertexArray.id());
-  gl.glDrawArrays(GL_TRIANGLES, 0, 3);
+  gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+  gl.Viewport(0, 0, kWidth, 1);
+  gl.UseProgram(program.id());
+  gl.BindTextureUnit(14, textureA.id());
+  gl.BindTextureUnit(15, textureB.id());
+  gl.BindBufferBase(GL_UNIFORM_BUFFER, 1, tables.id());
+  gl.BindBufferBase(GL_UNIFORM_BUFFER, 2, splitSumTable.id());
+  gl.BindVertexArray(vertexArray.id());
+  gl.DrawArrays(GL_TRIANGLES, 0, 3);
   std::vector<glm::vec4> out(kWidth);
-  gl.glReadPixels(0, 0, kWidth, 1, GL_RGBA, GL_FLOAT, out.data());
-  REQUIRE(gl.glGetError() == GL_NO_ERROR);
+  gl.ReadPixels(0, 0, kWidth, 1, GL_RGBA, GL_FLOAT, out.data());
+  REQUIRE(gl.GetError() == GL_NO_ERROR);
   return out;
 }
 

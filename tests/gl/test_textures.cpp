@@ -25,18 +25,18 @@ TEST_CASE("a base colour texel reaches the shader as its byte and decodes to the
   std::vector<Rgba8> texels(kWidth);
   for (int c = 0; c < kWidth; ++c) texels[static_cast<std::size_t>(c)] = {static_cast<std::uint8_t>(c), static_cast<std::uint8_t>(255 - c), 0, 255};
   const gl::GlObject texture = gl::createTexture(gl, GL_TEXTURE_2D);
-  gl.glTextureStorage2D(texture.id(), 1, GL_RGBA8UI, kWidth, 1);
-  gl.glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  gl.glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  gl.glTextureSubImage2D(texture.id(), 0, 0, 0, kWidth, 1, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, texels.data());
+  gl.TextureStorage2D(texture.id(), 1, GL_RGBA8UI, kWidth, 1);
+  gl.TextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  gl.TextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  gl.TextureSubImage2D(texture.id(), 0, 0, 0, kWidth, 1, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, texels.data());
   const gl::SrgbBlock srgb = gl::makeSrgbBlock();
   const gl::GlObject tables = gl::createBuffer(gl);
-  gl.glNamedBufferStorage(tables.id(), sizeof srgb, &srgb, 0);
+  gl.NamedBufferStorage(tables.id(), sizeof srgb, &srgb, 0);
 
   const gl::GlObject color = gl::createRenderbuffer(gl);
-  gl.glNamedRenderbufferStorage(color.id(), GL_RGBA32F, kWidth, 1);
+  gl.NamedRenderbufferStorage(color.id(), GL_RGBA32F, kWidth, 1);
   const gl::GlObject framebuffer = gl::createFramebuffer(gl);
-  gl.glNamedFramebufferRenderbuffer(framebuffer.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color.id());
+  gl.NamedFramebufferRenderbuffer(framebuffer.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color.id());
   const gl::GlObject vertexArray = gl::createVertexArray(gl);
 
   // texel() of shaders/texture.glsl: the bytes, decoded by the SrgbTables block.
@@ -45,16 +45,16 @@ TEST_CASE("a base colour texel reaches the shader as its byte and decodes to the
   const gl::ShaderProgram program = gl::buildProgram(gl, {"viewport_triangle.vert", "probe.frag"}, "", [&](std::string_view name) {
     return name == "probe.frag" ? std::optional<std::string_view>(probe) : gl::findEmbeddedShaderFile(name);
   });
-  gl.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
-  gl.glViewport(0, 0, kWidth, 1);
-  gl.glUseProgram(program.id());
-  gl.glBindTextureUnit(1, texture.id());
-  gl.glBindBufferBase(GL_UNIFORM_BUFFER, 1, tables.id());
-  gl.glBindVertexArray(vertexArray.id());
-  gl.glDrawArrays(GL_TRIANGLES, 0, 3);
+  gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+  gl.Viewport(0, 0, kWidth, 1);
+  gl.UseProgram(program.id());
+  gl.BindTextureUnit(1, texture.id());
+  gl.BindBufferBase(GL_UNIFORM_BUFFER, 1, tables.id());
+  gl.BindVertexArray(vertexArray.id());
+  gl.DrawArrays(GL_TRIANGLES, 0, 3);
   std::vector<float> values(4 * kWidth);
-  gl.glReadPixels(0, 0, kWidth, 1, GL_RGBA, GL_FLOAT, values.data());
-  REQUIRE(gl.glGetError() == GL_NO_ERROR);
+  gl.ReadPixels(0, 0, kWidth, 1, GL_RGBA, GL_FLOAT, values.data());
+  REQUIRE(gl.GetError() == GL_NO_ERROR);
 
   // renderer/cpu/texture_sampling.cpp reads the same table: compared bit for bit.
   const SrgbTables& expected = srgbTables();
