@@ -5,6 +5,8 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -12,6 +14,7 @@
 #include "common/error.h"
 #include "common/quote.h"
 #include "exit_status.h"
+#include "one_dash_options.h"
 
 namespace {
 
@@ -45,8 +48,14 @@ int run(int argc, char** argv) {
       "command line, 70 an internal error or out of memory.");
 
   checkCommandName(app, argc, argv);
+  // facet diff also takes idiff's one-dash spellings (-fail 0.004).
+  std::vector<std::string> words(argv + 1, argv + argc);
+  if (!words.empty() && words[0] == "diff") words = facet::withOneDashLongOptions(*app.get_subcommand("diff"), std::move(words));
+  std::vector<char*> rewritten = {argv[0]};
+  for (std::string& word : words) rewritten.push_back(word.data());
+  rewritten.push_back(nullptr);
   try {
-    app.parse(argc, argv);
+    app.parse(argc, rewritten.data());
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
