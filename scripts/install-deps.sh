@@ -22,6 +22,7 @@ packages=(
   python3-nibabel        # a small anatomical MRI (nibabel/tests/data/anatomical.nii) the volume tests read
   libembree-dev          # Intel Embree 3: the peer facet bench measures the ray tracer's BVH against
   clang libclang-rt-14-dev  # libFuzzer and its sanitizer runtimes (scripts/fuzz.sh)
+  openimageio-tools      # OpenImageIO's idiff: only the test that cross-checks facet diff against it (tests/compare/idiff_crosscheck.cpp)
 )
 
 missing=()
