@@ -5,12 +5,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <new>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "command_line.h"
 #include "commands.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
@@ -34,22 +36,44 @@ struct DiffOptions {
   std::string actual;
   std::string output;  // a .png: heat map; anything else: report folder
   DiffThresholds thresholds;
-  bool agreement = false;  // --agreement: backendAgreement() instead of the thresholds
+  bool agreement = false;        // --agreement: backendAgreement() instead of the thresholds
+  bool quiet = false;            // -q: nothing on stdout
+  bool onlyIfDifferent = false;  // -od: no heat map of equal images
 };
 
 constexpr const char* kFooter = R"(
 Thresholds are fractions of full scale, as in idiff: 1/255 = 0.0039216 is one
 8-bit step; write a fraction as N/255 if you like. A pixel is over a
 threshold when any of its R, G, B, A channels differs by more than it.
-  FAILURE  more than --failpercent % of pixels over --fail, or any channel
-           over --hardfail
+  PASS     --allowfailures N is set and at most N pixels are over --fail
+  FAILURE  otherwise, more than --failpercent % of pixels over --fail, or
+           any channel over --hardfail
   WARNING  not a failure, and the same with --warn, --warnpercent, --hardwarn
-  PASS     neither
-Defaults: --fail 1/255 --failpercent 0 (one 8-bit step passes, two fail),
---warn 0 --warnpercent 0 (any difference warns), hard limits off.
---agreement holds the images to what facet's two backends are held to:
-every byte equal (--fail 0).
-Positions are (x, y) counted from the top-left pixel, as image viewers show.
+  PASS     none of these
+The defaults are idiff's: --fail 1e-06 --warn 1e-06, percents 0, hard limits
+and --allowfailures off, so any difference at all fails. One 8-bit step
+(rounding) passes with --fail 1/255, and warns unless --warn 1/255 too.
+--agreement holds the images to what facet's backends are held to: every
+byte equal (--fail 0).
+idiff's one-dash spellings work too: -fail 0.004, -failpercent 1, -warn,
+-warnpercent, -hardfail, -hardwarn, -allowfailures, -od, -abs, -q, -v, -a.
+
+The figures are idiff's: mean error, RMS error and PSNR over the channels
+the files store (R, G, B and A; a grey file Y), max error and where it is
+first met, in fractions of full scale; counts of pixels over --fail and
+--warn. Positions are (x, y) from the top-left pixel, as idiff and image
+viewers give them. Where facet diff and idiff 2.4 part (see the README):
+  - idiff compares 32-bit floats: at a threshold of exactly N/255 a
+    difference of N levels counts as over it for some values and not for
+    others; here it never does.
+  - a translucent pixel: idiff premultiplies R, G, B by alpha when it reads
+    a PNG, facet compares the stored values.
+  - a file without alpha is opaque here; idiff takes its alpha for 0.
+  - 16-bit PNGs are compared at 8 bits (their high byte).
+  - with no pixel over --fail idiff passes, never warning, unless given
+    -allowfailures; facet warns by --warn as idiff's help says.
+  - images of different sizes: exit code 3 here; idiff compares them over
+    the larger frame, the missing pixels black and transparent.
 
 With two folders, the PNG files are paired by name; a file in only one
 folder is a failure for its case.
@@ -125,8 +149,12 @@ struct DiffRun {
   std::vector<DiffCase> cases;
   std::vector<ReportCase> reportCases;
 
+  void say(const std::string& text) const {
+    if (!options.quiet) std::fputs(text.c_str(), stdout);
+  }
+
   void add(const ComparedFiles& compared) {
-    std::fputs(caseText(compared.diffCase, options.thresholds).c_str(), stdout);
+    say(caseText(compared.diffCase, options.thresholds));
     if (report) reportCases.push_back(report->writeImages(static_cast<int>(cases.size()) + 1, compared, options.thresholds));
     cases.push_back(compared.diffCase);
   }
@@ -134,9 +162,9 @@ struct DiffRun {
   int finish() {
     if (report) {
       const std::string page = report->finish(reportCases, {options.expected, options.actual, options.thresholds});
-      std::printf("report written to %s\n", page.c_str());
+      say("report written to " + page + "\n");
     }
-    std::printf("%s\n", summaryLine(cases).c_str());
+    say(summaryLine(cases) + "\n");
     return static_cast<int>(worstVerdict(cases));
   }
 };
@@ -156,12 +184,14 @@ int compareTwoFiles(const DiffOptions& options) {
   DiffRun run{options, {}, {}, {}};
   if (!heatMapOnly && !options.output.empty()) run.report.emplace(options.output);
   run.add(compared);
-  if (heatMapOnly) {
+  if (heatMapOnly && options.onlyIfDifferent && c.result->differingPixels == 0) {
+    run.say("heat map not written: the images are equal (-od)\n");
+  } else if (heatMapOnly) {
     const fs::path folder = fs::path(options.output).parent_path();
     std::error_code ec;
     if (!folder.empty()) fs::create_directories(folder, ec);  // a failure shows when writing
     writePng(options.output, heatMap(compared.expected, compared.actual, options.thresholds));
-    std::printf("heat map written to %s\n", options.output.c_str());
+    run.say("heat map written to " + options.output + "\n");
   }
   return run.finish();
 }
@@ -169,6 +199,8 @@ int compareTwoFiles(const DiffOptions& options) {
 int compareTwoFolders(const DiffOptions& options) {
   if (isPngName(options.output))
     throw Error("-o " + options.output + ": two folders make a report folder (index.html and images), not one PNG");
+  if (options.onlyIfDifferent && !options.output.empty())
+    throw UsageError("-od: applies to the heat map of two PNGs; a report folder is written whatever the folders hold");
   if (!options.output.empty()) checkReportFolder(options.output, {options.expected, options.actual});
   const std::vector<FilePair> pairs = pairFolderFiles(options.expected, options.actual);
   if (pairs.empty()) throw Error(options.expected + " and " + options.actual + ": no PNG files in either folder");
@@ -191,6 +223,30 @@ int runDiff(DiffOptions options) {
   return compareTwoFiles(options);
 }
 
+// idiff's options that change nothing here, accepted so that an idiff
+// command line runs as it is, and those facet diff does not take, refused
+// with the reason rather than as unknown.
+void addIdiffOnlyOptions(CLI::App& command) {
+  const char* accepted = "idiff options that change nothing here";
+  command.add_flag("-v")->description("idiff's verbose report: facet diff always prints the figures")->group(accepted);
+  command.add_flag("-a")->description("idiff's every subimage and MIP level: a PNG holds one image")->group(accepted);
+  command.add_flag("--abs")->description("idiff's absolute difference image: the heat map shows absolute differences")->group(accepted);
+
+  const char* refused = "idiff options refused here";
+  const auto refuse = [&](const std::string& name, const std::string& reason, bool takesValue) {
+    const auto fail = [name, reason](const auto&...) { throw CLI::ValidationError(name, reason); };
+    CLI::Option* option = takesValue ? command.add_option_function<std::string>(name, fail, reason) : command.add_flag_callback(name, fail, reason);
+    option->group(refused);
+  };
+  refuse("-p", "no perceptual comparison: facet diff compares channel values (idiff's -p is Yee's perceptual metric)", false);
+  const std::string relative =
+      "no relative thresholds: they suit high-dynamic-range images, and an 8-bit PNG is already encoded for the eye (sRGB); use --fail and --warn";
+  refuse("--failrelative", relative, true);
+  refuse("--warnrelative", relative, true);
+  refuse("--scale", "no scale factor: it scales idiff's difference image; facet's heat map (-o) colours each difference by its level and --fail",
+         true);
+}
+
 }  // namespace
 
 Command addDiffCommand(CLI::App& app) {
@@ -205,12 +261,18 @@ Command addDiffCommand(CLI::App& app) {
   threshold("--fail", t.failThreshold, "a channel difference above this fails its pixel (fraction of full scale)");
   command->add_option("--failpercent", t.failPercent, "percent of pixels allowed to fail")->transform(percentOfPixels())->capture_default_str();
   threshold("--hardfail", t.hardFail, "any channel difference above this fails the comparison (default: off)");
+  command->add_option("--allowfailures", t.allowFailures, "pass when at most this many pixels fail, by any amount (default: off)")
+      ->check(wholeNumberIn(0, std::numeric_limits<int>::max()))
+      ->capture_default_str();
   threshold("--warn", t.warnThreshold, "a channel difference above this warns for its pixel (fraction of full scale)");
   command->add_option("--warnpercent", t.warnPercent, "percent of pixels allowed to warn")->transform(percentOfPixels())->capture_default_str();
   threshold("--hardwarn", t.hardWarn, "any channel difference above this warns (default: off)");
   command->add_flag("--agreement", options->agreement,
                     "hold the images to what the OpenGL and CPU backends are held to: every byte equal (overrides the thresholds)");
   refuseEmptyName(command->add_option("-o,--output", options->output, "FILE.png: heat map (two PNGs only); FOLDER: HTML report with images"));
+  command->add_flag("--od", options->onlyIfDifferent, "write the heat map only when the images differ");
+  command->add_flag("-q,--quiet", options->quiet, "print nothing: the exit code is the verdict (problems still go to stderr)");
+  addIdiffOnlyOptions(*command);
   command->footer(kFooter);
   return [options]() {
     // Every problem here is about a file (or the output): idiff's exit code 4,

@@ -5,10 +5,12 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "common/error.h"
 #include "common/quote.h"
 #include "exit_status.h"
+#include "one_dash_options.h"
 
 namespace facet {
 namespace {
@@ -40,8 +42,16 @@ int parseAndRun(int argc, char** argv, const std::vector<AddCommand>& adders) {
       "command line, 70 an internal error or out of memory.");
 
   checkCommandName(app, argc, argv);
+  // facet diff also takes idiff's one-dash spellings (-fail 0.004).
+  std::vector<std::string> words(argv + 1, argv + argc);
+  if (!words.empty() && words[0] == "diff")
+    for (const CLI::App* command : app.get_subcommands({}))
+      if (command->get_name() == "diff") words = withOneDashLongOptions(*command, std::move(words));
+  std::vector<char*> rewritten = {argv[0]};
+  for (std::string& word : words) rewritten.push_back(word.data());
+  rewritten.push_back(nullptr);
   try {
-    app.parse(argc, argv);
+    app.parse(static_cast<int>(words.size()) + 1, rewritten.data());
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {

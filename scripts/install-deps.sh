@@ -24,6 +24,7 @@ packages=(
   libembree-dev          # Intel Embree 3: the peer facet bench measures the ray tracer's BVH against
   clang libclang-rt-14-dev  # libFuzzer and its sanitizer runtimes (scripts/fuzz.sh)
   help2man               # the man page, written from facet --help (packaging/man_page.sh)
+  openimageio-tools      # OpenImageIO's idiff: only the test that cross-checks facet diff against it (tests/compare/idiff_crosscheck.cpp)
 )
 
 missing=()

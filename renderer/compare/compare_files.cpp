@@ -12,10 +12,10 @@ namespace {
 std::string sizeText(const Image& image) { return std::to_string(image.width()) + "x" + std::to_string(image.height()); }
 
 // Reads one side; a failure becomes the case's problem (the first one found).
-Image readSide(const std::string& path, DiffCase& diffCase) {
+PngImage readSide(const std::string& path, DiffCase& diffCase) {
   if (path.empty()) return {};
   try {
-    return readPng(path);
+    return readPngImage(path);
   } catch (const Error& e) {
     if (diffCase.problem.empty()) {
       diffCase.verdict = Verdict::FileError;
@@ -34,8 +34,10 @@ ComparedFiles compareFiles(const std::string& name, const std::string& expectedP
   c.name = name;
   c.expectedPath = expectedPath;
   c.actualPath = actualPath;
-  out.expected = readSide(expectedPath, c);
-  out.actual = readSide(actualPath, c);
+  PngImage expected = readSide(expectedPath, c);
+  PngImage actual = readSide(actualPath, c);
+  out.expected = std::move(expected.image);
+  out.actual = std::move(actual.image);
   if (!c.problem.empty()) return out;
 
   if (expectedPath.empty() || actualPath.empty()) {
@@ -50,7 +52,7 @@ ComparedFiles compareFiles(const std::string& name, const std::string& expectedP
                 sizeText(out.actual);
     return out;
   }
-  c.result = compareImages(out.expected, out.actual, thresholds);
+  c.result = compareImages(out.expected, out.actual, thresholds, unionOf(expected.channels, actual.channels));
   c.verdict = verdictOf(c.result->status);
   return out;
 }

@@ -19,6 +19,10 @@ struct ComparedFiles {
 // for a file present in only one folder). Unreadable or non-PNG files give
 // Verdict::FileError, sizes that differ Verdict::DifferentSize; `problem`
 // then says which file and why. Thresholds must pass checkThresholds.
+// The mean error, RMSE and PSNR average over the channels the two files
+// store (unionOf), as idiff's do. A file without alpha reads as opaque, so
+// an RGB file equals an RGBA file of the same opaque pixels, where idiff
+// takes the missing alpha for 0.
 ComparedFiles compareFiles(const std::string& name, const std::string& expectedPath, const std::string& actualPath,
                            const DiffThresholds& thresholds);
 

@@ -14,11 +14,32 @@ std::string formatNumber(double value) {
   return text;
 }
 
+std::string formatIdiffNumber(double value) {
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+std::string formatChannels(StoredChannels channels) {
+  return std::string(channels.colour ? "R, G, B" : "Y") + (channels.alpha ? ", A" : "");
+}
+
+std::string formatChannel(int channel, StoredChannels channels) {
+  constexpr const char* kNames[4] = {"R", "G", "B", "A"};
+  if (channel == 0 && !channels.colour) return "Y";
+  return channel >= 0 && channel < 4 ? kNames[channel] : "?";
+}
+
 std::string formatThreshold(double fraction) {
   if (fraction == kNoLimit) return "off";
   char text[64];
   std::snprintf(text, sizeof text, "%.4g (%s/255)", fraction, formatNumber(fraction * 255.0).c_str());
   return text;
+}
+
+std::string formatAllowed(double percent, std::int64_t allowFailures) {
+  return formatNumber(percent) + "%" + (allowFailures > 0 ? " or up to " + formatPixels(allowFailures) : "");
 }
 
 std::string formatPixels(std::int64_t count) { return std::to_string(count) + (count == 1 ? " pixel" : " pixels"); }

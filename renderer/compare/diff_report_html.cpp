@@ -90,19 +90,20 @@ void writeFigures(std::ostringstream& out, const DiffResult& r, const DiffThresh
   out << "<td>8-bit levels</td></tr>\n<tr><th>mean difference</th>";
   for (const ChannelDiff& c : r.channels) out << "<td class=\"n\">" << formatNumber(c.mean) << "</td>";
   out << "<td></td></tr>\n</table>\n<table class=\"figures\">\n";
-  out << "<tr><th>RMSE</th><td>" << formatNumber(r.rmse) << " (R, G, B; 8-bit levels)</td></tr>\n";
-  out << "<tr><th>PSNR</th><td>" << formatNumber(r.psnr) << " dB</td></tr>\n";
+  out << "<tr><th>mean error, RMS error, PSNR</th><td>" << formatIdiffNumber(r.meanError / 255.0) << ", " << formatIdiffNumber(r.rmse / 255.0)
+      << ", " << formatIdiffNumber(r.psnr) << " dB (" << formatChannels(r.storedChannels) << "; fractions of full scale, as idiff)</td></tr>\n";
   out << "<tr><th>failing pixels</th><td>" << formatPixels(r.failingPixels) << " (" << formatNumber(r.failingPercent)
-      << "%) over " << formatThreshold(t.failThreshold) << "; allowed " << formatNumber(t.failPercent) << "%</td></tr>\n";
+      << "%) over " << formatThreshold(t.failThreshold) << "; allowed " << formatAllowed(t.failPercent, t.allowFailures) << "</td></tr>\n";
   out << "<tr><th>warning pixels</th><td>" << formatPixels(r.warningPixels) << " (" << formatNumber(r.warningPercent)
-      << "%) over " << formatThreshold(t.warnThreshold) << "; allowed " << formatNumber(t.warnPercent) << "%</td></tr>\n";
+      << "%) over " << formatThreshold(t.warnThreshold) << "; allowed " << formatAllowed(t.warnPercent) << "</td></tr>\n";
   out << "<tr><th>differing pixels</th><td>" << formatPixels(r.differingPixels) << " in " << formatBox(r.differing, r.height)
       << "</td></tr>\n";
   out << "<tr><th>failing box</th><td>" << formatBox(r.failing, r.height) << "</td></tr>\n";
   if (r.worst.x >= 0)
-    out << "<tr><th>worst pixel</th><td>" << formatPosition(r.worst.x, r.worst.y, r.height) << ": expected " << swatch(r.worst.expected)
-        << "<code>" << formatColor(r.worst.expected) << "</code>, actual " << swatch(r.worst.actual) << "<code>"
-        << formatColor(r.worst.actual) << "</code>, difference " << r.worst.difference << "</td></tr>\n";
+    out << "<tr><th>max error</th><td>" << formatIdiffNumber(r.worst.difference / 255.0) << " (" << r.worst.difference << " of 255) at "
+        << formatPosition(r.worst.x, r.worst.y, r.height) << " " << formatChannel(r.worst.channel, r.storedChannels) << ": expected "
+        << swatch(r.worst.expected) << "<code>" << formatColor(r.worst.expected) << "</code>, actual " << swatch(r.worst.actual) << "<code>"
+        << formatColor(r.worst.actual) << "</code></td></tr>\n";
   out << "</table>\n";
 }
 
@@ -135,9 +136,9 @@ void writeLegend(std::ostringstream& out, const DiffThresholds& t) {
 
 void writeThresholds(std::ostringstream& out, const DiffThresholds& t) {
   out << "<table class=\"thresholds\">\n<tr><th></th><th>threshold</th><th>pixels allowed over it</th><th>hard limit</th></tr>\n";
-  out << "<tr><th>fail</th><td>" << formatThreshold(t.failThreshold) << "</td><td>" << formatNumber(t.failPercent) << "%</td><td>"
+  out << "<tr><th>fail</th><td>" << formatThreshold(t.failThreshold) << "</td><td>" << formatAllowed(t.failPercent, t.allowFailures) << "</td><td>"
       << formatThreshold(t.hardFail) << "</td></tr>\n";
-  out << "<tr><th>warn</th><td>" << formatThreshold(t.warnThreshold) << "</td><td>" << formatNumber(t.warnPercent) << "%</td><td>"
+  out << "<tr><th>warn</th><td>" << formatThreshold(t.warnThreshold) << "</td><td>" << formatAllowed(t.warnPercent) << "</td><td>"
       << formatThreshold(t.hardWarn) << "</td></tr>\n</table>\n";
 }
 

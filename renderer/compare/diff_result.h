@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "image/image.h"
+#include "image/stored_channels.h"
 
 namespace facet {
 
@@ -30,9 +31,13 @@ struct ChannelDiff {
   double mean = 0.0;  // 8-bit levels, over every pixel
 };
 
+// Where idiff puts its "Max error": the first channel that differs by the
+// largest amount, in reading order (rows from the top, each left to right,
+// then R, G, B, A).
 struct WorstPixel {
   int x = -1, y = -1;  // Image coordinates; -1 when the images are equal
-  int difference = 0;  // its largest channel difference, 8-bit levels
+  int channel = -1;    // 0..3: R, G, B, A
+  int difference = 0;  // that channel's difference, 8-bit levels
   Rgba8 expected, actual;
 };
 
@@ -40,7 +45,12 @@ struct DiffResult {
   int width = 0, height = 0;
   std::array<ChannelDiff, 4> channels;  // R, G, B, A
   int maxDifference = 0;                // largest over the four channels, 8-bit levels
-  double rmse = 0.0;                    // over R, G, B, 8-bit levels
+  // idiff's figures, averaged over the channels the files store
+  // (storedChannels) of every pixel, here in 8-bit levels: idiff prints them
+  // divided by 255.
+  StoredChannels storedChannels;
+  double meanError = 0.0;  // mean absolute difference
+  double rmse = 0.0;       // root of the mean squared difference
   double psnr = std::numeric_limits<double>::infinity();  // dB, 20 log10(255 / rmse)
 
   std::int64_t differingPixels = 0;  // any channel differs at all

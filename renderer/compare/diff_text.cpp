@@ -16,19 +16,24 @@ void writeFigures(std::ostringstream& out, const DiffResult& r, const DiffThresh
   for (std::size_t c = 0; c < 4; ++c) out << " " << kChannelNames[c] << " " << r.channels[c].max;
   out << "   (8-bit levels)\n  mean difference  ";
   for (std::size_t c = 0; c < 4; ++c) out << " " << kChannelNames[c] << " " << formatNumber(r.channels[c].mean);
-  out << "\n  RMSE " << formatNumber(r.rmse) << ", PSNR " << formatNumber(r.psnr) << " dB   (R, G, B; 8-bit levels)\n";
+  // idiff's figures in idiff's words and units, to compare with its output.
+  out << "\n  mean error " << formatIdiffNumber(r.meanError / 255.0) << ", RMS error " << formatIdiffNumber(r.rmse / 255.0) << ", PSNR "
+      << formatIdiffNumber(r.psnr) << " dB   (" << formatChannels(r.storedChannels) << "; fractions of full scale, as idiff)\n";
+  out << "  max error " << formatIdiffNumber(r.worst.difference / 255.0);
+  if (r.worst.x >= 0)
+    out << " (" << r.worst.difference << (r.worst.difference == 1 ? " level" : " levels") << ") at "
+        << formatPosition(r.worst.x, r.worst.y, r.height) << " " << formatChannel(r.worst.channel, r.storedChannels) << ": expected "
+        << formatColor(r.worst.expected) << ", actual " << formatColor(r.worst.actual);
+  out << "\n";
   out << "  over fail threshold " << formatThreshold(t.failThreshold) << ": " << formatPixels(r.failingPixels) << " ("
-      << formatNumber(r.failingPercent) << "%), allowed " << formatNumber(t.failPercent) << "%\n";
+      << formatNumber(r.failingPercent) << "%), allowed " << formatAllowed(t.failPercent, t.allowFailures) << "\n";
   out << "  over warn threshold " << formatThreshold(t.warnThreshold) << ": " << formatPixels(r.warningPixels) << " ("
-      << formatNumber(r.warningPercent) << "%), allowed " << formatNumber(t.warnPercent) << "%\n";
+      << formatNumber(r.warningPercent) << "%), allowed " << formatAllowed(t.warnPercent) << "\n";
   if (t.hardFail != kNoLimit || t.hardWarn != kNoLimit)
     out << "  hard limits: fail " << formatThreshold(t.hardFail) << ", warn " << formatThreshold(t.hardWarn) << "; largest difference "
         << r.maxDifference << "\n";
   out << "  differing pixels " << r.differingPixels << ", in " << formatBox(r.differing, r.height) << "   (y from the top row)\n";
   out << "  failing pixels   " << r.failingPixels << ", in " << formatBox(r.failing, r.height) << "\n";
-  if (r.worst.x >= 0)
-    out << "  worst pixel " << formatPosition(r.worst.x, r.worst.y, r.height) << ": expected " << formatColor(r.worst.expected)
-        << ", actual " << formatColor(r.worst.actual) << ", difference " << r.worst.difference << "\n";
 }
 
 }  // namespace

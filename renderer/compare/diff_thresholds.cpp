@@ -20,6 +20,7 @@ void checkThresholds(const DiffThresholds& t) {
   checkValue("fail", t.failThreshold, kNoLimit);
   checkValue("failpercent", t.failPercent, 100.0);
   checkValue("hardfail", t.hardFail, kNoLimit);
+  if (t.allowFailures < 0) throw Error("diff threshold allowfailures: " + std::to_string(t.allowFailures) + " is below 0");
   checkValue("warn", t.warnThreshold, kNoLimit);
   checkValue("warnpercent", t.warnPercent, 100.0);
   checkValue("hardwarn", t.hardWarn, kNoLimit);

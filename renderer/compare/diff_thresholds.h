@@ -5,27 +5,30 @@
 // over a threshold when any of its four channels (R, G, B, A) differs by
 // more than it. Percents are of all pixels, 0..100.
 //
-//   Fail: more than failPercent of pixels are over failThreshold, or any
-//         channel anywhere differs by more than hardFail.
+//   Pass: allowFailures is set (above 0) and at most that many pixels are
+//         over failThreshold: they may fail by any amount.
+//   Fail: otherwise, more than failPercent of pixels are over failThreshold,
+//         or any channel anywhere differs by more than hardFail.
 //   Warn: not Fail, and the same test with the warn values is true.
-//   Pass: neither.
+//   Pass: none of these.
+#include <cstdint>
 #include <limits>
 
 namespace facet {
 
 inline constexpr double kNoLimit = std::numeric_limits<double>::infinity();
 
+// The defaults are idiff's, so that `facet diff a.png b.png` gives the
+// verdict `idiff a.png b.png` gives: any difference at all fails (1e-6 is
+// below one 8-bit step).
 struct DiffThresholds {
-  // One 8-bit step passes (with a warning): each backend rounds its colours
-  // to 8 bits on its own, so a value that lands near a step boundary may
-  // round either way. Two steps is a real difference.
-  double failThreshold = 1.0 / 255.0;  // fraction of full scale
-  double failPercent = 0.0;            // percent of pixels allowed over failThreshold
-  double hardFail = kNoLimit;          // fraction of full scale; kNoLimit: off
-  // Any difference at all warns, so an off-by-one is seen without failing.
-  double warnThreshold = 0.0;          // fraction of full scale
-  double warnPercent = 0.0;            // percent of pixels allowed over warnThreshold
-  double hardWarn = kNoLimit;          // fraction of full scale; kNoLimit: off
+  double failThreshold = 1e-6;       // fraction of full scale
+  double failPercent = 0.0;          // percent of pixels allowed over failThreshold
+  double hardFail = kNoLimit;        // fraction of full scale; kNoLimit: off
+  std::int64_t allowFailures = 0;    // pixels that may fail by any amount; 0: off
+  double warnThreshold = 1e-6;       // fraction of full scale
+  double warnPercent = 0.0;          // percent of pixels allowed over warnThreshold
+  double hardWarn = kNoLimit;        // fraction of full scale; kNoLimit: off
 };
 
 // Throws facet::Error naming the first value that is negative or not a
@@ -35,6 +38,9 @@ void checkThresholds(const DiffThresholds& thresholds);
 // The largest 8-bit channel difference (0..255) that is not more than
 // `fraction` of full scale: 1/255 gives 1, 0.004 gives 1, 0 gives 0, kNoLimit
 // gives 255. A difference d is over the threshold exactly when d > this.
+// idiff subtracts 32-bit floats, so a difference of exactly N levels lands
+// a few float steps either side of N/255 and, at a threshold of N/255, is
+// over it for some pixel values and not others; here it never is.
 int toleratedLevels(double fraction);
 
 }  // namespace facet

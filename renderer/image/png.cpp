@@ -100,7 +100,14 @@ struct PngHeader {
   int bitDepth = 0, colorType = 0, interlace = 0;
   std::uint64_t imageDataBytes = 0;  // the IDAT chunks' data, all of them
   bool emptyImageDataChunk = false;   // an IDAT chunk of no bytes (valid, but see withoutEmptyImageData)
+  bool transparency = false;          // a tRNS chunk: alpha for a grey, RGB or palette image
 };
+
+// Colour types 2 (RGB), 3 (palette of RGB) and 6 (RGBA) have colour; 4 and
+// 6 have alpha, and a tRNS chunk gives any other type alpha.
+StoredChannels storedChannels(const PngHeader& h) {
+  return {h.colorType == 2 || h.colorType == 3 || h.colorType == 6, h.colorType == 4 || h.colorType == 6 || h.transparency};
+}
 
 // Samples per pixel of each colour type of the standard; 0: no such type.
 int samplesPerPixel(int colorType) {
@@ -198,6 +205,8 @@ PngHeader checkStructure(std::string_view bytes, const std::string& name) {
       headerSeen = true;
     } else if (typeName == "PLTE") {
       paletteSeen = true;
+    } else if (typeName == "tRNS") {
+      h.transparency = true;
     } else if (typeName == "IDAT") {
       if (imageData == kAfterImageData)
         throw Error(name + ": corrupt PNG: IDAT chunk at byte " + std::to_string(chunkAt) + " after other chunks (image data must be one run)");
@@ -305,7 +314,7 @@ std::vector<std::uint8_t> encodePng(const Image& image, const std::string& name)
 
 void writePng(const std::string& path, const Image& image) { writeFileAtomically(path, encodePng(image, path)); }
 
-Image decodePng(std::string_view bytes, const std::string& name) {
+PngImage decodePngImage(std::string_view bytes, const std::string& name) {
   if (bytes.size() > kMaxPngFileBytes)
     throw Error(name + ": file is " + std::to_string(bytes.size()) + " bytes, more than facet reads as a PNG (" + std::to_string(kMaxPngFileBytes) + ")");
   const PngHeader header = checkStructure(bytes, name);
@@ -328,11 +337,11 @@ Image decodePng(std::string_view bytes, const std::string& name) {
     }
     if (static_cast<std::uint32_t>(w) != header.width || static_cast<std::uint32_t>(h) != header.height)
       throw Error(name + ": corrupt PNG: decoded as " + sizeText(w, h) + ", its header says " + sizeText(header.width, header.height));
-    Image image(w, h);
+    PngImage out{Image(w, h), storedChannels(header)};
     const std::size_t stride = static_cast<std::size_t>(w) * 4;
     for (int y = 0; y < h; ++y)  // file row 0 is the top: it becomes stored row h-1
-      std::memcpy(&image.at(0, h - 1 - y), pixels.get() + static_cast<std::size_t>(y) * stride, stride);
-    return image;
+      std::memcpy(&out.image.at(0, h - 1 - y), pixels.get() + static_cast<std::size_t>(y) * stride, stride);
+    return out;
   } catch (const OutOfMemory&) {
     throw;
   } catch (const std::bad_alloc&) {
@@ -340,14 +349,18 @@ Image decodePng(std::string_view bytes, const std::string& name) {
   }
 }
 
-Image readPng(const std::string& path) {
+Image decodePng(std::string_view bytes, const std::string& name) { return decodePngImage(bytes, name).image; }
+
+PngImage readPngImage(const std::string& path) {
   try {
-    return decodePng(readFile(path, kMaxPngFileBytes), path);
+    return decodePngImage(readFile(path, kMaxPngFileBytes), path);
   } catch (const OutOfMemory&) {
     throw;
   } catch (const std::bad_alloc&) {
     throw OutOfMemory("reading " + path);
   }
 }
+
+Image readPng(const std::string& path) { return readPngImage(path).image; }
 
 }  // namespace facet

@@ -43,13 +43,15 @@ TEST_CASE("heat-map colours grow brighter with the difference, with a step where
       CHECK(luma(heatMapColor(d, t)) > luma(heatMapColor(d - 1, t)) - 0.25);
     }
   }
-  const DiffThresholds defaults;  // one step passes, two fail
-  const Rgba8 passing = heatMapColor(1, defaults), failing = heatMapColor(2, defaults);
+  DiffThresholds oneStep;  // one step passes, two fail
+  oneStep.failThreshold = 1.0 / 255.0;
+  const Rgba8 passing = heatMapColor(1, oneStep), failing = heatMapColor(2, oneStep);
   CHECK(luma(passing) > 30.0);   // visible on black
   CHECK(luma(passing) < 100.0);  // but quiet
   CHECK(luma(failing) > luma(passing) + 20.0);  // a visible step up at the threshold
   CHECK(failing.r > 200);        // failing pixels are orange to yellow
-  CHECK(heatMapColor(255, defaults) == inferno(1.0));
+  CHECK(heatMapColor(255, oneStep) == inferno(1.0));
+  CHECK(heatMapColor(1, DiffThresholds{}) == failing);  // idiff's defaults: one step fails
 }
 
 TEST_CASE("a heat map is black where the images agree and lights up where they differ") {

@@ -28,6 +28,7 @@ TEST_CASE("two identical images pass, with every figure zero and PSNR infinite")
     CHECK(c.mean == 0.0);
   }
   CHECK(r.maxDifference == 0);
+  CHECK(r.meanError == 0.0);
   CHECK(r.rmse == 0.0);
   CHECK(std::isinf(r.psnr));
   CHECK(r.differingPixels == 0);
@@ -50,10 +51,12 @@ TEST_CASE("one pixel off by 10 in red on a 10x10 image: the figures worked out b
     CHECK(r.channels[c].mean == 0.0);
   }
   CHECK(r.maxDifference == 10);
-  // RMSE over R, G, B: sqrt(10^2 / (3 * 100)) = sqrt(1/3) = 0.57735.
-  CHECK(r.rmse == doctest::Approx(0.5773503).epsilon(1e-6));
-  // PSNR: 20 log10(255 / 0.57735) = 20 log10(441.673) = 52.902 dB.
-  CHECK(r.psnr == doctest::Approx(52.902).epsilon(1e-4));
+  // Over R, G, B, A (facet's images store all four), as idiff: mean error
+  // 10 / (4 * 100) = 0.025; RMSE sqrt(10^2 / (4 * 100)) = 0.5; PSNR
+  // 20 log10(255 / 0.5) = 54.1514 dB.
+  CHECK(r.meanError == doctest::Approx(0.025));
+  CHECK(r.rmse == doctest::Approx(0.5));
+  CHECK(r.psnr == doctest::Approx(54.1514).epsilon(1e-5));
 
   CHECK(r.differingPixels == 1);
   CHECK(r.failingPixels == 1);
@@ -63,6 +66,7 @@ TEST_CASE("one pixel off by 10 in red on a 10x10 image: the figures worked out b
   CHECK(sameBox(r.failing, 3, 5, 3, 5));
   CHECK(r.worst.x == 3);
   CHECK(r.worst.y == 5);
+  CHECK(r.worst.channel == 0);
   CHECK(r.worst.difference == 10);
   CHECK(r.worst.expected == kSlate);
   CHECK(r.worst.actual == Rgba8{20, 20, 40, 255});
@@ -74,6 +78,7 @@ TEST_CASE("one pixel off by 10 in red on a 10x10 image: the figures worked out b
 }
 
 TEST_CASE("a colour shift of 2/255 over the whole image fails, and tolerating two steps turns it into a warning, then a pass") {
+  // R, G, B two levels off, A equal: RMSE sqrt(3 * 2^2 / 4) = sqrt(3).
   const Image dark(8, 6, kSlate);
   const Image darkShifted = shifted(dark, 2);
   const DiffResult r = compareImages(dark, darkShifted, {});
@@ -82,8 +87,9 @@ TEST_CASE("a colour shift of 2/255 over the whole image fails, and tolerating tw
     CHECK(r.channels[c].mean == doctest::Approx(2.0));
   }
   CHECK(r.channels[3].max == 0);
-  CHECK(r.rmse == doctest::Approx(2.0));
-  CHECK(r.psnr == doctest::Approx(42.1102).epsilon(1e-5));  // 20 log10(255 / 2)
+  CHECK(r.meanError == doctest::Approx(1.5));
+  CHECK(r.rmse == doctest::Approx(std::sqrt(3.0)));
+  CHECK(r.psnr == doctest::Approx(43.3596).epsilon(1e-5));  // 20 log10(255 / sqrt(3))
   CHECK(r.failingPixels == 48);
   CHECK(r.failingPercent == doctest::Approx(100.0));
   CHECK(sameBox(r.differing, 0, 0, 7, 5));
@@ -109,36 +115,69 @@ TEST_CASE("an object edge moved by one pixel fails on exactly that column") {
   CHECK(r.maxDifference == 255);
   CHECK(r.channels[0].mean == doctest::Approx(25.5));  // 10 x 255 / 100
   CHECK(r.channels[3].max == 0);
-  // RMSE: sqrt(10 pixels x 3 x 255^2 / 300) = 255 / sqrt(10); PSNR: 20 log10(sqrt(10)) = 10 dB.
-  CHECK(r.rmse == doctest::Approx(255.0 / std::sqrt(10.0)));
-  CHECK(r.psnr == doctest::Approx(10.0));
+  // RMSE: sqrt(10 pixels x 3 x 255^2 / 400) = 255 sqrt(3 / 40); PSNR: 20 log10(sqrt(40 / 3)) = 11.249 dB.
+  CHECK(r.rmse == doctest::Approx(255.0 * std::sqrt(3.0 / 40.0)));
+  CHECK(r.psnr == doctest::Approx(11.2494).epsilon(1e-5));
   CHECK(r.worst.x == 5);
+  CHECK(r.worst.y == 9);  // the column's top pixel: idiff reads rows from the top
   CHECK(r.worst.expected == kBlack);
   CHECK(r.worst.actual == kWhite);
   CHECK(r.status == DiffStatus::Fail);
 }
 
-TEST_CASE("alpha counts toward failing pixels but not toward RMSE") {
+TEST_CASE("alpha counts toward failing pixels, and toward the mean error and RMSE as one of four channels") {
   const Image expected(4, 4, kSlate);
   const Image actual = withPixel(expected, 0, 0, {10, 20, 40, 0});
   const DiffResult r = compareImages(expected, actual, {});
   CHECK(r.channels[3].max == 255);
   CHECK(r.failingPixels == 1);
-  CHECK(r.rmse == 0.0);
-  CHECK(std::isinf(r.psnr));
+  CHECK(r.meanError == doctest::Approx(255.0 / 64.0));  // 16 pixels x 4 channels
+  CHECK(r.rmse == doctest::Approx(255.0 / 8.0));        // sqrt(255^2 / 64)
+  CHECK(r.psnr == doctest::Approx(18.0618).epsilon(1e-5));  // 20 log10(8)
   CHECK(r.status == DiffStatus::Fail);
 }
 
-TEST_CASE("the worst pixel is the one with the largest channel difference") {
+TEST_CASE("the mean error and RMSE average over the channels the files store, as idiff's") {
+  const Image expected(10, 10, kSlate);
+  const Image redOff = withPixel(expected, 3, 5, {20, 20, 40, 255});  // R 10 levels off
+  CHECK(compareImages(expected, redOff, {}, {true, true}).rmse == doctest::Approx(0.5));  // sqrt(100 / 400)
+  const DiffResult rgb = compareImages(expected, redOff, {}, {true, false});
+  CHECK(rgb.rmse == doctest::Approx(std::sqrt(100.0 / 300.0)));
+  CHECK(rgb.meanError == doctest::Approx(10.0 / 300.0));
+  CHECK(rgb.storedChannels == StoredChannels{true, false});
+  // A grey file's one channel fills R, G and B: it counts once.
+  const Image grey(10, 10, {50, 50, 50, 255});
+  const Image greyOff = withPixel(grey, 0, 0, {60, 60, 60, 255});
+  const DiffResult y = compareImages(grey, greyOff, {}, {false, false});
+  CHECK(y.rmse == doctest::Approx(1.0));  // sqrt(100 / 100)
+  CHECK(y.meanError == doctest::Approx(0.1));
+  CHECK(compareImages(grey, greyOff, {}, {false, true}).rmse == doctest::Approx(std::sqrt(0.5)));  // Y and A: sqrt(100 / 200)
+}
+
+TEST_CASE("the max error is the first largest channel difference in reading order, as idiff's") {
   Image actual(6, 4, kSlate);
   actual.at(1, 1) = {13, 20, 40, 255};  // 3
   actual.at(4, 2) = {10, 60, 40, 255};  // 40
   actual.at(5, 3) = {10, 20, 45, 255};  // 5
-  const DiffResult r = compareImages(Image(6, 4, kSlate), actual, {});
+  DiffResult r = compareImages(Image(6, 4, kSlate), actual, {});
   CHECK(r.worst.x == 4);
   CHECK(r.worst.y == 2);
+  CHECK(r.worst.channel == 1);
   CHECK(r.worst.difference == 40);
   CHECK(sameBox(r.differing, 1, 1, 5, 3));
+
+  // Ties: the higher row (y = 3 is the top row of 4), then the left pixel, then R before G, B, A.
+  actual.at(0, 1) = {10, 60, 40, 255};  // 40, a lower row
+  actual.at(5, 3) = {10, 20, 80, 255};  // 40, the top row, right
+  actual.at(2, 3) = {10, 20, 40, 215};  // 40, the top row, left, in A
+  r = compareImages(Image(6, 4, kSlate), actual, {});
+  CHECK(r.worst.x == 2);
+  CHECK(r.worst.y == 3);
+  CHECK(r.worst.channel == 3);
+  actual.at(2, 3) = {50, 20, 40, 215};  // R ties A in the same pixel
+  r = compareImages(Image(6, 4, kSlate), actual, {});
+  CHECK(r.worst.channel == 0);
+  CHECK(r.worst.x == 2);
 }
 
 TEST_CASE("images of different sizes are refused, naming both sizes") {

@@ -159,6 +159,27 @@ TEST_CASE("PNG: every colour type and bit depth decodes, interlaced or not, and 
   CHECK(decodePng(dense, "t.png") == Image(1024, 1024, {0, 0, 0, 0}));
 }
 
+TEST_CASE("PNG: the channels a file stores are counted as libpng expands them, a palette to RGB and tRNS to alpha") {
+  using namespace facet::test;
+  const auto channelsOf = [](int colorType, bool transparency) {
+    std::string chunks = ihdrChunk(2, 2, 8, colorType);
+    if (colorType == 3) chunks += pngChunk("PLTE", std::string(3, '\0'));
+    if (transparency) chunks += pngChunk("tRNS", colorType == 3 ? std::string(1, '\xff') : std::string(colorType == 2 ? 6 : 2, '\x01'));
+    chunks += pngChunk("IDAT", zlibStored(std::string(filteredSize(2, 2, 8, colorType, 0), '\0')));
+    return decodePngImage(pngFile(chunks), "t.png").channels;
+  };
+  CHECK(channelsOf(0, false) == StoredChannels{false, false});  // Y
+  CHECK(channelsOf(0, true) == StoredChannels{false, true});    // Y, A
+  CHECK(channelsOf(4, false) == StoredChannels{false, true});
+  CHECK(channelsOf(2, false) == StoredChannels{true, false});   // R, G, B
+  CHECK(channelsOf(2, true) == StoredChannels{true, true});
+  CHECK(channelsOf(3, false) == StoredChannels{true, false});
+  CHECK(channelsOf(3, true) == StoredChannels{true, true});
+  CHECK(channelsOf(6, false) == StoredChannels{true, true});
+  CHECK(StoredChannels{false, true}.count() == 2);
+  CHECK(unionOf({false, true}, {true, false}) == StoredChannels{true, true});
+}
+
 TEST_CASE("PNG: broken image data is named, with a reason only when the decoder gives one") {
   const std::string header = ihdrChunk(4, 4, 8, 6);
   // A zlib stream whose first block is of type 3, which does not exist: stb_image sets no reason.
