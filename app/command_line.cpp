@@ -92,9 +92,12 @@ CLI::Validator wholeNumberIn(int min, int max) {
 }
 
 RenderSettings settingsFor(const CommonOptions& options, const Scene& scene) {
-  RenderSettings settings = options.settingsPath.empty() ? RenderSettings{} : loadSettingsFile(options.settingsPath);
-  if (!options.size.empty()) parseSize(options.size, settings.width, settings.height);
-  for (const std::string& assignment : options.assignments) {
+  return settingsFor(options.settingsPath.empty() ? RenderSettings{} : loadSettingsFile(options.settingsPath), options.assignments, options.size, scene);
+}
+
+RenderSettings settingsFor(RenderSettings settings, const std::vector<std::string>& assignments, const std::string& size, const Scene& scene) {
+  if (!size.empty()) parseSize(size, settings.width, settings.height);
+  for (const std::string& assignment : assignments) {
     const std::string key = assignment.substr(0, assignment.find('='));
     const bool cameraKey = key.rfind("camera.", 0) == 0 && key != "camera.source";
     const bool lightKey = key == "lights" || key.rfind("lights.", 0) == 0;
@@ -108,7 +111,7 @@ RenderSettings settingsFor(const CommonOptions& options, const Scene& scene) {
       throw UsageError(e.what());
     }
   }
-  if (!options.size.empty()) parseSize(options.size, settings.width, settings.height);  // --size wins over --set width
+  if (!size.empty()) parseSize(size, settings.width, settings.height);  // --size wins over --set width
   return settings;
 }
 

@@ -28,6 +28,9 @@ void addCommonOptions(CLI::App& command, CommonOptions& options, const std::stri
 // source is auto first fixes the camera or lights where auto put them for
 // this scene, then changes the key.
 RenderSettings settingsFor(const CommonOptions& options, const Scene& scene);
+// The same from `base` (a settings file's, a batch job's object), the
+// assignments and the size ("" none) given apart.
+RenderSettings settingsFor(RenderSettings base, const std::vector<std::string>& assignments, const std::string& size, const Scene& scene);
 
 // Parses "WxH" (1..kMaxImageSide each) or throws facet::UsageError.
 void parseSize(const std::string& text, int& width, int& height);

@@ -70,6 +70,8 @@ int parseAndRun(int argc, char** argv, const std::vector<AddCommand>& adders) {
 
 }  // namespace
 
+const char* facetVersion() { return FACET_VERSION; }
+
 int runCommands(int argc, char** argv, const std::vector<AddCommand>& commands) {
   // Every exception a command lets through ends here, as one line and an
   // exit code (app/exit_status.h): bad input 1 or 64, anything else 70.

@@ -18,4 +18,7 @@ using AddCommand = std::function<Command(CLI::App&)>;
 // returns the process's exit code; every exception ends as one line.
 int runCommands(int argc, char** argv, const std::vector<AddCommand>& commands);
 
+// facet's version, the project's (CMake's PROJECT_VERSION): "0.1.0".
+const char* facetVersion();
+
 }  // namespace facet

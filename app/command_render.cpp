@@ -10,6 +10,7 @@
 
 #include "command_line.h"
 #include "cpu/pixel_probe.h"
+#include "frame_setup.h"
 #include "progress_bar.h"
 #include "commands.h"
 #include "common/atomic_file.h"
@@ -57,17 +58,7 @@ RenderSettings rayCastingOf(RenderSettings settings) {
 }
 
 std::unique_ptr<Renderer> makeRenderer(const RenderOptions& options, ProgressBar& progress) {
-  if (options.backend == "cpu") return makeCpuRenderer(options.threads);
-  if (options.backend == "reference") return makeReferenceRenderer();
-  if (options.backend == "ray") return makeRayRenderer(options.threads, [&progress](double done) { progress.update(done); });
-#if FACET_HAVE_GL
-  GlContextKind kind = GlContextKind::OsMesa;
-  if (options.context == "egl") kind = GlContextKind::Egl;
-  else if (options.context != "osmesa") throw Error("--context '" + options.context + "': expected osmesa or egl");
-  return makeGlRenderer(kind);
-#else
-  throw Error("--backend gl: this build has no OpenGL backend (configured with FACET_BUILD_GL=OFF)");
-#endif
+  return makeBackend(options.backend, options.context, options.threads, [&progress](double done) { progress.update(done); });
 }
 
 }  // namespace
@@ -110,13 +101,11 @@ Command addRenderCommand(CLI::App& app) {
     }
     Scene scene = loadScene(options->common.scenePath);
     const RenderSettings asked = settingsFor(options->common, scene);
-    useDisplacement(scene, asked.material);
-    useBumpMap(scene, asked.material);
-    useEnvironment(scene, asked.environment);
-    SceneAdditions added;
-    const RenderSettings settings = addVolumeAndParticles(scene, asked, added, options->threads);
+    const PreparedFrame prepared = prepareFrame(scene, asked, options->threads);
+    const RenderSettings& settings = prepared.settings;
+    const SceneAdditions& added = prepared.added;
+    const FrameInputs& frame = prepared.frame;
     for (const std::string& warning : scene.warnings) std::fprintf(stderr, "warning: %s: %s\n", scene.source.c_str(), warning.c_str());
-    const FrameInputs frame = buildFrameInputs(scene, settings);
     for (const std::string& warning : frame.warnings) std::fprintf(stderr, "warning: %s: %s\n", scene.source.c_str(), warning.c_str());
 #if FACET_HAVE_GL
     if (options->backend == "gl") refuseCpuOnlyFrame(frame);  // before the driver is loaded

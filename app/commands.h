@@ -15,6 +15,7 @@ Command addSettingsCommand(CLI::App& app);
 Command addRenderCommand(CLI::App& app);
 Command addDiffCommand(CLI::App& app);
 Command addBenchCommand(CLI::App& app);
+Command addBatchCommand(CLI::App& app);
 
 // `facet view`: in facet, a launcher that runs the facet-view executable with
 // the same arguments (app/view_launcher.cpp); in facet-view, the window

@@ -8,7 +8,7 @@ int main(int argc, char** argv) {
   return facet::runCommands(argc, argv,
                             {
                                 facet::addInfoCommand, facet::addSettingsCommand, facet::addRenderCommand, facet::addDiffCommand,
-                                facet::addBenchCommand,
+                                facet::addBenchCommand, facet::addBatchCommand,
 #if FACET_HAVE_VIEWER
                                 facet::addViewLauncher,
 #endif

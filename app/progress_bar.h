@@ -18,6 +18,9 @@ class ProgressBar {
 
   // done in [0, 1]; redraws when the whole percentage changed.
   void update(double done);
+  // The same with `detail` after the bar ("12/500, 1 failed, 8.3 jobs/s"),
+  // redrawn when the percentage or the detail changed.
+  void update(double done, const std::string& detail);
   // Clears the bar's line; nothing is drawn after.
   void finish();
 
@@ -25,6 +28,7 @@ class ProgressBar {
   std::string label_;
   bool terminal_;
   int shown_ = -1;  // the percentage on screen; -1: nothing drawn
+  std::string detail_;  // the detail on screen
   std::chrono::steady_clock::time_point start_;
 };
 

@@ -1,0 +1,32 @@
+#pragma once
+// What `facet render` and `facet batch` do between a loaded scene and a drawn
+// frame, in one place: the settings' additions to the scene, the frame's
+// inputs, and the backend chosen by name.
+#include <memory>
+#include <string>
+
+#include "pipeline/frame_inputs.h"
+#include "pipeline/scene_additions.h"
+#include "ray/ray_renderer.h"
+#include "render/renderer.h"
+#include "scene/scene.h"
+#include "settings/render_settings.h"
+
+namespace facet {
+
+struct PreparedFrame {
+  RenderSettings settings;  // as the frame is built with (addVolumeAndParticles may resolve the camera and lights)
+  SceneAdditions added;
+  FrameInputs frame;
+};
+
+// Displacement, bump map, environment, volume and particles added to `scene`
+// as `asked` says, then the frame's inputs. Throws facet::Error naming the key.
+PreparedFrame prepareFrame(Scene& scene, const RenderSettings& asked, int threads);
+
+// The renderer `backend` names (gl, cpu, reference, ray); `context` is gl's
+// (osmesa or egl), `threads` the CPU backend's and ray tracer's (0: one per
+// core). Throws facet::Error for gl in a build without it.
+std::unique_ptr<Renderer> makeBackend(const std::string& backend, const std::string& context, int threads, RenderProgress progress = {});
+
+}  // namespace facet
