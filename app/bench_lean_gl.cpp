@@ -30,6 +30,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "common/error.h"
+#include "common/stopwatch.h"
 #include "gl/gl_functions.h"
 #include "gl/gl_object.h"
 #include "gl/headless_context.h"
@@ -40,8 +41,6 @@ namespace facet {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double millisecondsSince(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
 
 constexpr GLuint kShadowMapsUnit = 0;
 

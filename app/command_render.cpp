@@ -15,6 +15,7 @@
 #include "common/atomic_file.h"
 #include "common/error.h"
 #include "common/quote.h"
+#include "common/stopwatch.h"
 #include "compare/heat_map.h"
 #include "compare/image_diff.h"
 #include "cpu/cpu_renderer.h"
@@ -126,9 +127,6 @@ Command addRenderCommand(CLI::App& app) {
       throw UsageError("--probe " + options->probe + ": outside the " + std::to_string(frame.width) + "x" + std::to_string(frame.height) + " frame");
     ProgressBar progress("ray tracing");  // drawn on a terminal only
     // Where the time to the first PNG goes besides the passes: reading the scene, the renderer's start-up (GL: the context), the PNG.
-    const auto millisecondsSince = [](std::chrono::steady_clock::time_point t) {
-      return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
-    };
     const double loading = millisecondsSince(start);
     const auto startup = std::chrono::steady_clock::now();
     std::unique_ptr<Renderer> renderer = makeRenderer(*options, progress);
@@ -152,7 +150,7 @@ Command addRenderCommand(CLI::App& app) {
     const auto writing = std::chrono::steady_clock::now();
     writePng(output, result.image);
     const double written = millisecondsSince(writing);
-    const double total = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const double total = millisecondsSince(start);
 
     std::printf("rendered %s: %s, %dx%d, %s shading, %s, shadows %s\n", scene.source.c_str(), countOf(scene.triangleCount(), "triangle").c_str(),
                 frame.width, frame.height, std::string(kShadingModeNames[static_cast<std::size_t>(frame.shading)]).c_str(),

@@ -12,6 +12,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "common/error.h"
+#include "common/stopwatch.h"
 #include "gl/shader_variant.h"
 #include "cpu/blending.h"
 #include "pipeline/antialiasing.h"
@@ -61,8 +62,6 @@ constexpr std::size_t kMaxLitPrograms = 32;
 std::string litProgramKey(const FrameInputs& frame, DrawVariant variant, LitOutput output) {
   return std::to_string(static_cast<int>(frame.shading)) + "\n" + litShaderDefines(frame, variant, output);
 }
-
-double millisecondsSince(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
 
 }  // namespace
 

@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "common/error.h"
+#include "common/stopwatch.h"
 #include "gl/frame_renderer.h"
 #include "gl/headless_context.h"
 #include "pipeline/frame_checks.h"
@@ -11,8 +12,6 @@ namespace facet {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double millisecondsSince(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
 
 // What both renderers do with a frame, on whatever context is current.
 class GlFrames {
