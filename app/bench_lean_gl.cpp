@@ -234,7 +234,7 @@ class LeanGlRenderer final : public Renderer {
     Clock::time_point start = Clock::now();
     if (!scene.identity.is(uploaded_)) {
       upload(scene);
-      result.timings.push_back({"scene upload", millisecondsSince(start)});
+      result.timings.push_back({kSceneUploadPass, millisecondsSince(start)});
       start = Clock::now();
     }
     bool compiled = false;
@@ -246,7 +246,7 @@ class LeanGlRenderer final : public Renderer {
       compiled = true;
     }
     if (compiled) {
-      result.timings.push_back({"shader compile + link", millisecondsSince(start)});
+      result.timings.push_back({kShaderCompilePass, millisecondsSince(start)});
       start = Clock::now();
     }
 

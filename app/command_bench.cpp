@@ -267,7 +267,7 @@ Command addBenchCommand(CLI::App& app) {
           ms[r].push_back(millisecondsSince(start));
           double up = 0;
           for (const PassTiming& t : last[r].timings) {
-            if (t.pass == "scene upload") up = t.milliseconds;
+            if (t.pass == kSceneUploadPass) up = t.milliseconds;
             auto at = std::find_if(passes[r].begin(), passes[r].end(), [&](const auto& p) { return p.first == t.pass; });
             if (at == passes[r].end()) at = passes[r].insert(passes[r].end(), {t.pass, {}});
             at->second.push_back(t.milliseconds);

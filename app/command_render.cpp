@@ -11,6 +11,7 @@
 #include "command_line.h"
 #include "cpu/pixel_probe.h"
 #include "progress_bar.h"
+#include "render_report.h"
 #include "commands.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
@@ -160,16 +161,16 @@ Command addRenderCommand(CLI::App& app) {
     if (added.isosurface)
       std::printf("volume: %s (marching cubes)\n", countOf(added.isoTriangles, "iso-surface triangle").c_str());
     std::printf("backend: %s\n", renderer->description().c_str());
-    std::printf("  %-28s %9.2f ms\n", "scene and frame inputs", loading);
-    std::printf("  %-28s %9.2f ms\n", options->backend == "gl" ? "context and driver start-up" : "renderer start-up", startingUp);
+    std::printf("  %-28s %9.2f ms\n", kSceneInputsLine, loading);
+    std::printf("  %-28s %9.2f ms\n", options->backend == "gl" ? kGlStartupLine : kRendererStartupLine, startingUp);
     for (const PassTiming& t : result.timings) std::printf("  %-28s %9.2f ms\n", t.pass.c_str(), t.milliseconds);
-    std::printf("  %-28s %9.2f ms\n", "PNG encode and write", written);
+    std::printf("  %-28s %9.2f ms\n", kPngWriteLine, written);
     for (const std::string& note : result.notes) std::printf("%s\n", note.c_str());
     if (shadowDiff)
       std::printf("shadow report: %lld pixels differ from ray casting, %lld by more than 1 level, at most %d; heat map written to %s\n",
                   static_cast<long long>(shadowDiff->differingPixels), static_cast<long long>(shadowDiff->failingPixels), shadowDiff->maxDifference,
                   options->shadowReport.c_str());
-    std::printf("  %-28s %9.2f ms\n", "total (command)", total);
+    std::printf("  %-28s %9.2f ms\n", kCommandTotalLine, total);
     std::printf("image written to %s\n", output.c_str());
     if (probe) {
       const int x = (*probe)[0], y = frame.height - 1 - (*probe)[1];

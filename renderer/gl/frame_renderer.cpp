@@ -87,7 +87,7 @@ void GlFrameRenderer::beginFrame(const Scene& scene, const FrameInputs& frame, L
   gl_.glFinish();
   Clock::time_point start = Clock::now();
   if (preparePrograms(frame, output)) {
-    timings.push_back({"shader compile + link", millisecondsSince(start)});
+    timings.push_back({kShaderCompilePass, millisecondsSince(start)});
     start = Clock::now();
   }
 

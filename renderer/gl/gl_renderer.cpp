@@ -22,7 +22,7 @@ class GlFrames {
     check_(scene, frame);
     RenderResult result;
     Clock::time_point start = Clock::now();
-    if (upload(scene)) result.timings.push_back({"scene upload", millisecondsSince(start)});
+    if (upload(scene)) result.timings.push_back({kSceneUploadPass, millisecondsSince(start)});
     for (PassTiming& timing : frameRenderer_.drawFrame(scene, frame)) result.timings.push_back(std::move(timing));
     start = Clock::now();
     result.image = frameRenderer_.readImage();
