@@ -185,7 +185,7 @@ inline float shadowFactorLanes(const ShadowMaps& maps, const FrameLight& light, 
 // map with room for its last four-texel load (pcfFitsRows says when).
 inline int pcfLitCountRows(const ShadowMaps& maps, int layer, int tx, int ty, float zb, int r) {
   const __m128 z = _mm_set1_ps(zb);
-  const float* texels = maps.depth.data() + static_cast<std::size_t>(layer) * static_cast<std::size_t>(maps.size) * static_cast<std::size_t>(maps.size);
+  const float* texels = maps.layer(layer);
   int lit = 0;
   for (int y = ty - r; y <= ty + r; ++y) {
     const float* row = texels + static_cast<std::size_t>(y) * static_cast<std::size_t>(maps.size);
