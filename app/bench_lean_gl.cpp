@@ -30,6 +30,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "common/error.h"
+#include "common/stopwatch.h"
 #include "gl/gl_functions.h"
 #include "gl/gl_object.h"
 #include "gl/headless_context.h"
@@ -40,8 +41,6 @@ namespace facet {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double millisecondsSince(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
 
 constexpr GLuint kShadowMapsUnit = 0;
 
@@ -235,7 +234,7 @@ class LeanGlRenderer final : public Renderer {
     Clock::time_point start = Clock::now();
     if (!scene.identity.is(uploaded_)) {
       upload(scene);
-      result.timings.push_back({"scene upload", millisecondsSince(start)});
+      result.timings.push_back({kSceneUploadPass, millisecondsSince(start)});
       start = Clock::now();
     }
     bool compiled = false;
@@ -247,7 +246,7 @@ class LeanGlRenderer final : public Renderer {
       compiled = true;
     }
     if (compiled) {
-      result.timings.push_back({"shader compile + link", millisecondsSince(start)});
+      result.timings.push_back({kShaderCompilePass, millisecondsSince(start)});
       start = Clock::now();
     }
 

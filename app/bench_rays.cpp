@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "common/error.h"
+#include "common/stopwatch.h"
 #include "cpu/function_ref.h"
 #include "cpu/thread_pool.h"
 #include "ray/camera_rays.h"
@@ -39,7 +40,7 @@ double timed(cpu::ThreadPool& pool, std::size_t count, cpu::FunctionRef<void(std
     for (std::size_t begin = next.fetch_add(kChunk); begin < count; begin = next.fetch_add(kChunk))
       for (std::size_t k = begin; k < std::min(begin + kChunk, count); ++k) trace(k);
   });
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  return millisecondsSince(start);
 }
 
 // The three kinds of ray, the same for every tracer: a primary ray through
@@ -123,7 +124,7 @@ class EmbreePeer {
     triangles_ = static_cast<unsigned>(p.triangleCount());
     const auto start = Clock::now();
     rtcCommitScene(scene_);
-    buildMilliseconds_ = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    buildMilliseconds_ = millisecondsSince(start);
   }
   ~EmbreePeer() {
     rtcReleaseScene(scene_);
@@ -184,7 +185,7 @@ void printRayRates(const Scene& scene, const FrameInputs& frame, int threads, in
     traced.reset();
     const auto start = Clock::now();
     traced = std::make_unique<ray::TracedScene>(scene, frame, frame.ray.spheres, pool);
-    builds.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+    builds.push_back(millisecondsSince(start));
   }
   const RaySet rays = raysOf(*traced, frame);
   const ray::Bvh& bvh = traced->bvh();

@@ -10,6 +10,7 @@
 #include "svg_plot.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "common/stopwatch.h"
 #include "pipeline/frame_inputs.h"
 
 namespace facet {
@@ -89,7 +90,7 @@ PointTimes timePoint(const BenchScene& b, std::vector<std::unique_ptr<Renderer>>
       renderers[r]->forgetShadowMaps();  // each frame draws its maps: the lights axis is their cost
       const auto start = Clock::now();
       (void)renderers[r]->render(b.scene, frame);
-      if (timed) ms[r].push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+      if (timed) ms[r].push_back(millisecondsSince(start));
     } catch (const Error& e) {
       t.failures[r] = e.what();
     }

@@ -45,6 +45,7 @@
 #include "commands.h"
 #include "sample_summary.h"
 #include "common/error.h"
+#include "common/stopwatch.h"
 #include "compare/image_diff.h"
 #include "cpu/cpu_renderer.h"
 #include "ray/ray_renderer.h"
@@ -240,7 +241,7 @@ Command addBenchCommand(CLI::App& app) {
         b.scene = base;
         const auto start = Clock::now();
         b.settings = addVolumeAndParticles(b.scene, asked, added, o->threads);
-        if (i > 0) adding.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+        if (i > 0) adding.push_back(millisecondsSince(start));
         base.volume = b.scene.volume;
       }
       const FrameInputs frame = buildFrameInputs(b.scene, b.settings);
@@ -263,10 +264,10 @@ Command addBenchCommand(CLI::App& app) {
           if (!o->keepShadowMaps) renderers[r]->forgetShadowMaps();
           const auto start = Clock::now();
           last[r] = renderers[r]->render(b.scene, frame);
-          ms[r].push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+          ms[r].push_back(millisecondsSince(start));
           double up = 0;
           for (const PassTiming& t : last[r].timings) {
-            if (t.pass == "scene upload") up = t.milliseconds;
+            if (t.pass == kSceneUploadPass) up = t.milliseconds;
             auto at = std::find_if(passes[r].begin(), passes[r].end(), [&](const auto& p) { return p.first == t.pass; });
             if (at == passes[r].end()) at = passes[r].insert(passes[r].end(), {t.pass, {}});
             at->second.push_back(t.milliseconds);
@@ -340,7 +341,7 @@ Command addBenchCommand(CLI::App& app) {
           std::vector<std::string> args{self, "render", "--backend", backend, "-o", png};
           if (backend == "cpu" || backend == "ray") args.insert(args.end(), {"--threads", std::to_string(o->threads)});
           if (runChild(args, nullptr) != 0) throw Error("bench: `facet render --backend " + backend + "` failed");
-          runs.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+          runs.push_back(millisecondsSince(start));
         }
         const Summary s = summarize(runs);
         std::printf("  %-4s %8.1f ms median, %.1f..%.1f\n", backend.c_str(), s.median, s.min, s.max);

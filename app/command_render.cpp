@@ -12,10 +12,12 @@
 #include "cpu/pixel_probe.h"
 #include "frame_setup.h"
 #include "progress_bar.h"
+#include "render_report.h"
 #include "commands.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
 #include "common/quote.h"
+#include "common/stopwatch.h"
 #include "compare/heat_map.h"
 #include "compare/image_diff.h"
 #include "cpu/cpu_renderer.h"
@@ -115,9 +117,6 @@ Command addRenderCommand(CLI::App& app) {
       throw UsageError("--probe " + options->probe + ": outside the " + std::to_string(frame.width) + "x" + std::to_string(frame.height) + " frame");
     ProgressBar progress("ray tracing");  // drawn on a terminal only
     // Where the time to the first PNG goes besides the passes: reading the scene, the renderer's start-up (GL: the context), the PNG.
-    const auto millisecondsSince = [](std::chrono::steady_clock::time_point t) {
-      return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
-    };
     const double loading = millisecondsSince(start);
     const auto startup = std::chrono::steady_clock::now();
     std::unique_ptr<Renderer> renderer = makeRenderer(*options, progress);
@@ -144,7 +143,7 @@ Command addRenderCommand(CLI::App& app) {
     const auto writing = std::chrono::steady_clock::now();
     writePng(output, result.image);
     const double written = millisecondsSince(writing);
-    const double total = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const double total = millisecondsSince(start);
 
     std::printf("rendered %s: %s, %dx%d, %s shading, %s, shadows %s\n", scene.source.c_str(), countOf(scene.triangleCount(), "triangle").c_str(),
                 frame.width, frame.height, std::string(kShadingModeNames[static_cast<std::size_t>(frame.shading)]).c_str(),
@@ -154,16 +153,16 @@ Command addRenderCommand(CLI::App& app) {
     if (added.isosurface)
       std::printf("volume: %s (marching cubes)\n", countOf(added.isoTriangles, "iso-surface triangle").c_str());
     std::printf("backend: %s\n", renderer->description().c_str());
-    std::printf("  %-28s %9.2f ms\n", "scene and frame inputs", loading);
-    std::printf("  %-28s %9.2f ms\n", options->backend == "gl" ? "context and driver start-up" : "renderer start-up", startingUp);
+    std::printf("  %-28s %9.2f ms\n", kSceneInputsLine, loading);
+    std::printf("  %-28s %9.2f ms\n", options->backend == "gl" ? kGlStartupLine : kRendererStartupLine, startingUp);
     for (const PassTiming& t : result.timings) std::printf("  %-28s %9.2f ms\n", t.pass.c_str(), t.milliseconds);
-    std::printf("  %-28s %9.2f ms\n", "PNG encode and write", written);
+    std::printf("  %-28s %9.2f ms\n", kPngWriteLine, written);
     for (const std::string& note : result.notes) std::printf("%s\n", note.c_str());
     if (shadowDiff)
       std::printf("shadow report: %lld pixels differ from ray casting, %lld by more than 1 level, at most %d; heat map written to %s\n",
                   static_cast<long long>(shadowDiff->differingPixels), static_cast<long long>(shadowDiff->failingPixels), shadowDiff->maxDifference,
                   options->shadowReport.c_str());
-    std::printf("  %-28s %9.2f ms\n", "total (command)", total);
+    std::printf("  %-28s %9.2f ms\n", kCommandTotalLine, total);
     std::printf("image written to %s\n", output.c_str());
     if (probe) {
       const int x = (*probe)[0], y = frame.height - 1 - (*probe)[1];

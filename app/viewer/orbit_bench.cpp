@@ -13,6 +13,8 @@
 #include "child_process.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "render/renderer.h"
+#include "render_report.h"
 #include "sample_summary.h"
 #include "settings/settings_json.h"
 #include "viewer/camera_controls.h"
@@ -34,8 +36,8 @@ double framePassesMilliseconds(const std::string& report) {
   while (std::getline(in, text)) {
     if (!std::regex_match(text, m, line)) continue;
     const std::string pass = m[1];
-    static const std::set<std::string> notTheFrame{"scene upload",    "shader compile + link", "scene and frame inputs", "context and driver start-up",
-                                                   "renderer start-up", "PNG encode and write",  "total (command)"};
+    static const std::set<std::string> notTheFrame{kSceneUploadPass,     kShaderCompilePass, kSceneInputsLine, kGlStartupLine,
+                                                   kRendererStartupLine, kPngWriteLine,      kCommandTotalLine};
     if (notTheFrame.count(pass)) continue;
     sum += std::stod(m[2]);
     any = true;

@@ -5,6 +5,7 @@
 #include <new>
 #include <utility>
 
+#include "common/stopwatch.h"
 #include "compare/heat_map.h"
 #include "compare/image_diff.h"
 #include "cpu/cpu_renderer.h"
@@ -92,7 +93,7 @@ ReferenceResult ReferenceWorker::render(Renderer& renderer, const ReferenceReque
   try {
     const auto start = std::chrono::steady_clock::now();
     Image cpuImage = renderer.render(*request.scene, request.frame).image;
-    result.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    result.milliseconds = millisecondsSince(start);
     result.diff = compareImages(cpuImage, request.glImage, backendAgreement());
     result.heatMap = heatMap(cpuImage, request.glImage, backendAgreement());
     result.cpuImage = std::move(cpuImage);

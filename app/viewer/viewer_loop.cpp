@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/error.h"
+#include "common/stopwatch.h"
 #include "gl/gl_renderer.h"
 #include "image/png.h"
 #include "pipeline/frame_inputs.h"
@@ -38,8 +39,6 @@ namespace facet::viewer {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double millisecondsSince(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
 
 // How long an idle window sleeps in glfwWaitEventsTimeout: any input wakes it
 // at once; the timeout only paces ImGui's own delays (tooltips).

@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "common/quote.h"
+#include "common/stopwatch.h"
 #include "cpu/environment_mapping.h"
 #include "cpu/frame_buffers.h"
 #include "cpu/lighting.h"
@@ -23,10 +24,6 @@
 
 namespace facet {
 namespace {
-
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
 
 // One frame: world positions once, then pass 1 per shadow-map face and pass 2,
 // each in the phases of cpu/frame_buffers.h on a pool of threads that lives

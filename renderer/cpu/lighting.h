@@ -185,7 +185,7 @@ inline float shadowFactorLanes(const ShadowMaps& maps, const FrameLight& light, 
 // map with room for its last four-texel load (pcfFitsRows says when).
 inline int pcfLitCountRows(const ShadowMaps& maps, int layer, int tx, int ty, float zb, int r) {
   const __m128 z = _mm_set1_ps(zb);
-  const float* texels = maps.depth.data() + static_cast<std::size_t>(layer) * static_cast<std::size_t>(maps.size) * static_cast<std::size_t>(maps.size);
+  const float* texels = maps.layer(layer);
   int lit = 0;
   for (int y = ty - r; y <= ty + r; ++y) {
     const float* row = texels + static_cast<std::size_t>(y) * static_cast<std::size_t>(maps.size);
@@ -208,31 +208,36 @@ inline bool pcfFitsRows(int size, int tx, int ty, int r) {
 inline Float4 shadowFactorLanes(const ShadowMaps& maps, const FrameLight& light, const ShadowSettings& shadows, const Vec3x4& P, const Vec3x4& N,
                                 const Vec3x4& L, Mask4 active) {
   if (!light.hasShadowMap) return Float4(1.0f);
-  alignas(16) float p[3][4], S[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-  _mm_store_ps(p[0], P.x.v);
-  _mm_store_ps(p[1], P.y.v);
-  _mm_store_ps(p[2], P.z.v);
+  alignas(16) float S[4] = {1.0f, 1.0f, 1.0f, 1.0f};
   const int lanes = laneBits(active);
   const bool cube = light.light.kind == LightKind::Point;
-  int face = -1;
-  bool oneFace = true;
-  for (int k = 0; k < 4; ++k)
-    if (lanes & (1 << k)) {
-      const int f = cube ? cubeFace(glm::vec3(p[0][k], p[1][k], p[2][k]) - light.light.position) : 0;
-      oneFace = oneFace && (face < 0 || f == face);
-      face = f;
+  int face = 0;  // a spot or directional light has one map
+  if (cube) {
+    // Each lane's face of the cube, from its P; lanes on different faces are read one at a time.
+    alignas(16) float p[3][4];
+    _mm_store_ps(p[0], P.x.v);
+    _mm_store_ps(p[1], P.y.v);
+    _mm_store_ps(p[2], P.z.v);
+    face = -1;
+    bool oneFace = true;
+    for (int k = 0; k < 4; ++k)
+      if (lanes & (1 << k)) {
+        const int f = cubeFace(glm::vec3(p[0][k], p[1][k], p[2][k]) - light.light.position);
+        oneFace = oneFace && (face < 0 || f == face);
+        face = f;
+      }
+    if (!oneFace) {
+      alignas(16) float n[3][4], l[3][4];
+      _mm_store_ps(n[0], N.x.v), _mm_store_ps(n[1], N.y.v), _mm_store_ps(n[2], N.z.v);
+      _mm_store_ps(l[0], L.x.v), _mm_store_ps(l[1], L.y.v), _mm_store_ps(l[2], L.z.v);
+      for (int k = 0; k < 4; ++k)
+        if (lanes & (1 << k))
+          S[k] = shadowFactor(maps, light, shadows, {p[0][k], p[1][k], p[2][k]}, {n[0][k], n[1][k], n[2][k]}, {l[0][k], l[1][k], l[2][k]});
+      return Float4(_mm_load_ps(S));
     }
+  }
   const int r = shadows.pcfRadius, size = maps.size;
   const float taps = static_cast<float>((2 * r + 1) * (2 * r + 1));
-  if (!oneFace) {
-    alignas(16) float n[3][4], l[3][4];
-    _mm_store_ps(n[0], N.x.v), _mm_store_ps(n[1], N.y.v), _mm_store_ps(n[2], N.z.v);
-    _mm_store_ps(l[0], L.x.v), _mm_store_ps(l[1], L.y.v), _mm_store_ps(l[2], L.z.v);
-    for (int k = 0; k < 4; ++k)
-      if (lanes & (1 << k))
-        S[k] = shadowFactor(maps, light, shadows, {p[0][k], p[1][k], p[2][k]}, {n[0][k], n[1][k], n[2][k]}, {l[0][k], l[1][k], l[2][k]});
-    return Float4(_mm_load_ps(S));
-  }
   const ShadowCoordinates<Float4> at = shadowCoordinates<Float4>(light.shadowFromWorld[static_cast<std::size_t>(face)], size, shadows, P, N, L);
   alignas(16) float zb[4];
   alignas(16) std::int32_t tx[4], ty[4];

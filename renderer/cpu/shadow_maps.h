@@ -17,12 +17,16 @@ struct ShadowMaps {
 
   // All texels 1: allocates when S or the layer count changed.
   void reset(int s, int layerCount);
-  float* layer(int l) { return depth.data() + static_cast<std::size_t>(l) * static_cast<std::size_t>(size) * static_cast<std::size_t>(size); }
+  // Layer l's first texel; the layer's rows follow, S texels each.
+  float* layer(int l) { return depth.data() + texelIndex(l, 0, 0); }
+  const float* layer(int l) const { return depth.data() + texelIndex(l, 0, 0); }
   // The dirty flags of layer l's tiles of tileSize² texels, row-major.
   std::uint8_t* dirtyTiles(int l, int tileSize);
   // texelFetch: integer addressing, no filtering.
-  float texelFetch(int l, int x, int y) const {
-    return depth[(static_cast<std::size_t>(l) * static_cast<std::size_t>(size) + static_cast<std::size_t>(y)) * static_cast<std::size_t>(size) + static_cast<std::size_t>(x)];
+  float texelFetch(int l, int x, int y) const { return depth[texelIndex(l, x, y)]; }
+  // Where texel (x, y) of layer l sits in `depth`.
+  std::size_t texelIndex(int l, int x, int y) const {
+    return (static_cast<std::size_t>(l) * static_cast<std::size_t>(size) + static_cast<std::size_t>(y)) * static_cast<std::size_t>(size) + static_cast<std::size_t>(x);
   }
 };
 

@@ -12,6 +12,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "common/error.h"
+#include "common/stopwatch.h"
 #include "gl/shader_variant.h"
 #include "cpu/blending.h"
 #include "pipeline/antialiasing.h"
@@ -62,8 +63,6 @@ std::string litProgramKey(const FrameInputs& frame, DrawVariant variant, LitOutp
   return std::to_string(static_cast<int>(frame.shading)) + "\n" + litShaderDefines(frame, variant, output);
 }
 
-double millisecondsSince(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
-
 }  // namespace
 
 GlFrameRenderer::GlFrameRenderer(const GetProcAddress& getProcAddress)
@@ -88,7 +87,7 @@ void GlFrameRenderer::beginFrame(const Scene& scene, const FrameInputs& frame, L
   gl_.Finish();
   Clock::time_point start = Clock::now();
   if (preparePrograms(frame, output)) {
-    timings.push_back({"shader compile + link", millisecondsSince(start)});
+    timings.push_back({kShaderCompilePass, millisecondsSince(start)});
     start = Clock::now();
   }
 

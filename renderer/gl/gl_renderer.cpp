@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "common/error.h"
+#include "common/stopwatch.h"
 #include "gl/frame_renderer.h"
 #include "gl/headless_context.h"
 #include "pipeline/frame_checks.h"
@@ -11,8 +12,6 @@ namespace facet {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double millisecondsSince(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
 
 // What both renderers do with a frame, on whatever context is current.
 class GlFrames {
@@ -23,7 +22,7 @@ class GlFrames {
     check_(scene, frame);
     RenderResult result;
     Clock::time_point start = Clock::now();
-    if (upload(scene)) result.timings.push_back({"scene upload", millisecondsSince(start)});
+    if (upload(scene)) result.timings.push_back({kSceneUploadPass, millisecondsSince(start)});
     for (PassTiming& timing : frameRenderer_.drawFrame(scene, frame)) result.timings.push_back(std::move(timing));
     start = Clock::now();
     result.image = frameRenderer_.readImage();

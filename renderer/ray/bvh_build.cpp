@@ -15,6 +15,7 @@
 #include <string>
 
 #include "common/error.h"
+#include "common/stopwatch.h"
 #include "cpu/denormals.h"
 #include "cpu/thread_pool.h"
 #include "ray/bvh.h"
@@ -375,7 +376,7 @@ Bvh::Bvh(const Primitives& primitives, cpu::ThreadPool& pool) {
 
   stats_.nodes = nodes_.size();
   stats_.bytes = nodes_.size() * sizeof(BvhNode) + slots_.size() * sizeof(Slot);
-  stats_.buildMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  stats_.buildMilliseconds = millisecondsSince(start);
 }
 
 }  // namespace facet::ray

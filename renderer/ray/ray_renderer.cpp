@@ -10,6 +10,7 @@
 
 #include "common/error.h"
 #include "common/quote.h"
+#include "common/stopwatch.h"
 #include "cpu/blending.h"
 #include "cpu/resolve.h"
 #include "cpu/thread_pool.h"
@@ -30,10 +31,6 @@ using ray::TracedScene;
 constexpr int kTile = 16;  // pixels a side: a worker's unit of work
 // Motion blur places the scene at most this many times across the shutter (a BVH each).
 constexpr int kMaxShutterSlices = 16;
-
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
 
 class RayRenderer final : public Renderer {
  public:

@@ -19,6 +19,12 @@ struct PassTiming {
   double milliseconds = 0;
 };
 
+// Passes the GL renderers (the backend, bench's lean peer) time once for a
+// scene or a set of programs, not every frame: readers of the timings (facet
+// bench, facet view --bench-orbit) tell them from the frame's by these names.
+inline constexpr char kSceneUploadPass[] = "scene upload";
+inline constexpr char kShaderCompilePass[] = "shader compile + link";
+
 // Pass 1's output of a frame (Renderer::shadowMaps): every shadow map, one
 // layer per light face in FrameLight::shadowLayer order (the lights in
 // order; a point light's faces +x, -x, +y, -y, +z, -z).

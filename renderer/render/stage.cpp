@@ -7,6 +7,7 @@
 
 #include "common/error.h"
 #include "common/quote.h"
+#include "common/stopwatch.h"
 #include "compare/depth_complexity.h"
 #include "pipeline/stage_frames.h"
 #include "settings/render_settings.h"
@@ -28,10 +29,6 @@ std::string figure(const char* format, double value) {
   char text[64];
   std::snprintf(text, sizeof text, format, value);
   return text;
-}
-
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 std::string rangeText(const DepthRange& range) {

@@ -35,6 +35,7 @@
 
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "common/stopwatch.h"
 #include "compare/backend_agreement.h"
 #include "compare/compare_files.h"
 #include "compare/diff_format.h"
@@ -237,11 +238,12 @@ int main(int argc, char** argv) {
       const Scene scene = sceneOf(c, assetsDir);
       const FrameInputs frame = buildFrameInputs(scene, c.settings);
       const DiffThresholds thresholds = thresholdsOf(c);
-      const auto t0 = std::chrono::steady_clock::now();
+      const auto glStart = std::chrono::steady_clock::now();
       const Image glImage = renderStage(*gl, scene, frame, c.stage).image;
-      const auto t1 = std::chrono::steady_clock::now();
+      const double msGl = millisecondsSince(glStart);
+      const auto cpuStart = std::chrono::steady_clock::now();
       const Image cpuImage = renderStage(*cpu, scene, frame, c.stage).image;
-      const auto t2 = std::chrono::steady_clock::now();
+      const double msCpu = millisecondsSince(cpuStart);
       long covered = 0;
       const long mismatches = triangleMismatches(gl->visibleTriangles(scene, frame), cpu->visibleTriangles(scene, frame), covered);
       const long dataMismatches = stageDataMismatches(c.stage, *gl, *cpu, scene, frame);
@@ -314,8 +316,6 @@ int main(int argc, char** argv) {
         worstName = c.name;
         worst = d;
       }
-      const double msGl = std::chrono::duration<double, std::milli>(t1 - t0).count();
-      const double msCpu = std::chrono::duration<double, std::milli>(t2 - t1).count();
       const std::string size = std::to_string(cpuImage.width()) + "x" + std::to_string(cpuImage.height());
       std::printf("%-34s %9s %9ld %9lld %5d %7s %8s %4.0f/%-4.0f %s%s\n", c.name.c_str(), size.c_str(), mismatches,
                   static_cast<long long>(d.differingPixels), d.maxDifference, goldenVerdict.c_str(), scanline.c_str(), msGl, msCpu, ok ? "pass" : "FAIL",

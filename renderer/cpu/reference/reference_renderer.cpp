@@ -27,6 +27,7 @@
 
 #include "common/error.h"
 #include "common/quote.h"
+#include "common/stopwatch.h"
 #include "cpu/alpha_mask.h"
 #include "cpu/bump_mapping.h"
 #include "cpu/clipper.h"
@@ -363,7 +364,7 @@ class ReferenceRenderer final : public Renderer {
     result.image = Image(frame.width, frame.height);
     for (int y = 0; y < frame.height; ++y)
       for (int x = 0; x < frame.width; ++x) result.image.at(x, y) = encodePixel(unstored(color.at(x, y), frame.blending));
-    result.timings.push_back({"both passes", std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count()});
+    result.timings.push_back({"both passes", millisecondsSince(start)});
     return result;
   }
 
@@ -412,7 +413,7 @@ RenderResult renderAreaAveraged(const Scene& scene, const FrameInputs& frame) {
   result.image = Image(frame.width, frame.height);
   for (int y = 0; y < frame.height; ++y)
     for (int x = 0; x < frame.width; ++x) result.image.at(x, y) = encodePixel(unstored(sum.at(x, y), Blending::Premultiplied));
-  result.timings.push_back({"area-weighted averaging", std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count()});
+  result.timings.push_back({"area-weighted averaging", millisecondsSince(start)});
   result.notes.push_back(area.summary());
   return result;
 }
