@@ -1,5 +1,10 @@
 #include "command_line.h"
 
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
 #include "common/error.h"
 #include "common/quote.h"
 #include "pipeline/view_setup.h"
@@ -45,6 +50,18 @@ void addCommonOptions(CLI::App& command, CommonOptions& options, const std::stri
             return problem.empty() ? problem : quoteInput(text) + ": " + problem;
           },
           "WxH"));
+  // F3D's names (--camera-azimuth-angle, ...) too: an F3D command line's camera carries over.
+  command.add_option("--camera-azimuth,--camera-azimuth-angle", options.orbit.azimuthDeg,
+                     "degrees: turn the camera (the scene's, the fitted one or camera.eye) about camera.up through camera.reference; "
+                     "+ moves the eye to its right (F3D's --camera-azimuth-angle)")
+      ->check(numberIn(-1e6, 1e6));
+  command.add_option("--camera-elevation,--camera-elevation-angle", options.orbit.elevationDeg,
+                     "degrees: raise the eye about the camera's right axis through camera.reference, stopping 1 degree short of the "
+                     "pole (F3D's --camera-elevation-angle)")
+      ->check(numberIn(-1e6, 1e6));
+  command.add_option("--camera-zoom,--camera-zoom-factor", options.orbit.zoom,
+                     "factor: divide the eye's distance from camera.reference (2: twice as close; F3D's --camera-zoom-factor)")
+      ->check(numberIn(1e-6, 1e6));
   refuseEmptyName(command.add_option("-o,--output", options.output, outputHelp));
 }
 
@@ -91,8 +108,29 @@ CLI::Validator wholeNumberIn(int min, int max) {
       "INT in [" + std::to_string(min) + ", " + std::to_string(max) + "]");
 }
 
+CLI::Validator numberIn(double min, double max) {
+  const auto shortest = [](double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    return std::string(text);
+  };
+  return CLI::Validator(
+      [min, max, shortest](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double value = text.empty() || std::isspace(static_cast<unsigned char>(text[0])) ? NAN : std::strtod(text.c_str(), &end);
+        if (!std::isfinite(value) || end != text.c_str() + text.size()) return quoteInput(text) + " is not a number";
+        if (value < min || value > max) return text + " is out of range [" + shortest(min) + ", " + shortest(max) + "]";
+        return {};
+      },
+      "FLOAT in [" + shortest(min) + ", " + shortest(max) + "]");
+}
+
 RenderSettings settingsFor(const CommonOptions& options, const Scene& scene) {
-  return settingsFor(options.settingsPath.empty() ? RenderSettings{} : loadSettingsFile(options.settingsPath), options.assignments, options.size, scene);
+  RenderSettings settings =
+      settingsFor(options.settingsPath.empty() ? RenderSettings{} : loadSettingsFile(options.settingsPath), options.assignments, options.size, scene);
+  // After the size: the auto camera is fitted to the image's aspect.
+  if (options.orbit.moves()) settings.camera = orbitCamera(resolveCamera(scene, settings), options.orbit);
+  return settings;
 }
 
 RenderSettings settingsFor(RenderSettings settings, const std::vector<std::string>& assignments, const std::string& size, const Scene& scene) {

@@ -1,13 +1,15 @@
 #pragma once
 // The shape every facet subcommand shares: the scene file as the positional
 // argument (none: the default scene), --settings FILE.json, --set key=value
-// (repeatable), --size WxH, -o/--output FILE.
+// (repeatable), --size WxH, the camera moves --camera-azimuth,
+// --camera-elevation and --camera-zoom, -o/--output FILE.
 #include <array>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
+#include "pipeline/camera_orbit.h"
 #include "scene/scene.h"
 #include "settings/render_settings.h"
 
@@ -19,6 +21,7 @@ struct CommonOptions {
   std::vector<std::string> assignments;  // --set key=value, in order
   std::string size;                   // WxH, empty: from settings
   std::string output;                 // -o
+  CameraOrbit orbit;                  // --camera-azimuth, --camera-elevation, --camera-zoom
 };
 
 void addCommonOptions(CLI::App& command, CommonOptions& options, const std::string& outputHelp);
@@ -26,7 +29,9 @@ void addCommonOptions(CLI::App& command, CommonOptions& options, const std::stri
 // The settings a command runs with: the file (or the defaults), then each
 // --set in order, then --size. A --set of a camera or light key while that
 // source is auto first fixes the camera or lights where auto put them for
-// this scene, then changes the key.
+// this scene, then changes the key. Last, a camera move (--camera-azimuth,
+// -elevation, -zoom) turns the camera these settings resolve to (auto: the
+// scene's or the fitted one) and leaves it manual, as a --set of camera.eye would.
 RenderSettings settingsFor(const CommonOptions& options, const Scene& scene);
 // The same from `base` (a settings file's, a batch job's object), the
 // assignments and the size ("" none) given apart.
@@ -43,5 +48,8 @@ std::array<int, 2> parsePixel(const std::string& text, const std::string& option
 // message that says which of the two it is not (CLI::Range says "not in
 // range" for "abc" too).
 CLI::Validator wholeNumberIn(int min, int max);
+
+// The same for a real number in [min, max] (nan and inf are not numbers).
+CLI::Validator numberIn(double min, double max);
 
 }  // namespace facet

@@ -12,10 +12,14 @@
 
 namespace facet {
 
-PreparedFrame prepareFrame(Scene& scene, const RenderSettings& asked, int threads) {
+void addMaterialMaps(Scene& scene, const RenderSettings& asked) {
   useDisplacement(scene, asked.material);
   useBumpMap(scene, asked.material);
   useEnvironment(scene, asked.environment);
+}
+
+PreparedFrame prepareFrame(Scene& scene, const RenderSettings& asked, int threads) {
+  addMaterialMaps(scene, asked);
   PreparedFrame prepared;
   prepared.settings = addVolumeAndParticles(scene, asked, prepared.added, threads);
   prepared.frame = buildFrameInputs(scene, prepared.settings);

@@ -20,8 +20,12 @@ struct PreparedFrame {
   FrameInputs frame;
 };
 
-// Displacement, bump map, environment, volume and particles added to `scene`
-// as `asked` says, then the frame's inputs. Throws facet::Error naming the key.
+// The displacement, the bump map and the environment that `asked` names,
+// added to `scene`. Throws facet::Error naming the key.
+void addMaterialMaps(Scene& scene, const RenderSettings& asked);
+
+// addMaterialMaps, then the volume and particles added to `scene` as `asked`
+// says, then the frame's inputs. Throws facet::Error naming the key.
 PreparedFrame prepareFrame(Scene& scene, const RenderSettings& asked, int threads);
 
 // The renderer `backend` names (gl, cpu, reference, ray); `context` is gl's

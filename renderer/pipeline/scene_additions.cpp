@@ -151,11 +151,16 @@ glm::mat4 worldFromVolume(const Volume& volume, const VolumeSettings& settings) 
          glm::translate(glm::mat4(1.0f), -0.5f * extent);
 }
 
+bool addsSprites(const Scene& scene, const RenderSettings& settings) {
+  const bool volume = !settings.volume.file.empty() || !scene.volume.file.empty();
+  return !settings.particles.empty() || !scene.emitters.empty() || (volume && settings.volume.mode == VolumeMode::Splat);
+}
+
 RenderSettings addVolumeAndParticles(Scene& scene, const RenderSettings& settings, SceneAdditions& added, int threads) {
   added = {};
   const VolumeSettings& vs = settings.volume;
   const std::string file = vs.file.empty() ? scene.volume.file : vs.file;
-  bool sprites = !settings.particles.empty() || !scene.emitters.empty();
+  const bool sprites = addsSprites(scene, settings);
   if (!file.empty()) {
     readVolume(scene, vs, file);
     scene.volume.worldFromVolume = worldFromVolume(*scene.volume.data, vs);
@@ -170,7 +175,6 @@ RenderSettings addVolumeAndParticles(Scene& scene, const RenderSettings& setting
       }
       scene.identity.renew();
       added.rayCastVolume = vs.mode == VolumeMode::Raycast;
-      sprites = sprites || vs.mode == VolumeMode::Splat;
     }
   }
   if (!sprites) return settings;

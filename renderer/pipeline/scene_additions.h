@@ -30,4 +30,9 @@ glm::mat4 worldFromVolume(const Volume& volume, const VolumeSettings& settings);
 // particles' integration (0: one per core).
 RenderSettings addVolumeAndParticles(Scene& scene, const RenderSettings& settings, SceneAdditions& added, int threads = 0);
 
+// Whether addVolumeAndParticles adds sprites (particles, splats): they face
+// the camera they were added for, so a frame from another camera adds them
+// anew to the scene as it was before.
+bool addsSprites(const Scene& scene, const RenderSettings& settings);
+
 }  // namespace facet
