@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "common/error.h"
+#include "common/markup_text.h"
 #include "common/quote.h"
 
 namespace facet {
@@ -18,23 +19,6 @@ struct ReportCase {
   CaseKind kind = CaseKind::Passed;
   std::string element;  // "  <testcase .../>\n" or "  <testcase ...>...</testcase>\n"
 };
-
-// Text as XML character data or an attribute value; bytes XML 1.0 forbids
-// (control characters) become spaces.
-std::string xmlEscaped(std::string_view text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default:
-        out += static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t' ? ' ' : c;
-    }
-  }
-  return out;
-}
 
 std::string seconds3(double seconds) {
   char text[32];
@@ -54,16 +38,16 @@ std::string caseName(const JobOutcome& o) { return "line " + std::to_string(o.li
 ReportCase reportCase(const JobOutcome& o) {
   ReportCase c{o.line, kindOf(o), {}};
   std::string& e = c.element;
-  e = "    <testcase classname=\"facet.batch\" name=\"" + xmlEscaped(caseName(o)) + "\" time=\"" + seconds3(o.milliseconds / 1000.0) + "\"";
+  e = "    <testcase classname=\"facet.batch\" name=\"" + markupEscaped(caseName(o)) + "\" time=\"" + seconds3(o.milliseconds / 1000.0) + "\"";
   std::string body;
   const std::string verdict(verdictName(o.verdict));
   if (c.kind == CaseKind::Error)
-    body = "      <error message=\"" + xmlEscaped(o.message) + "\" type=\"" + verdict + "\"/>\n";
+    body = "      <error message=\"" + markupEscaped(o.message) + "\" type=\"" + verdict + "\"/>\n";
   else if (c.kind == CaseKind::Failure)
-    body = "      <failure message=\"" + xmlEscaped(verdict + ": " + o.message) + "\" type=\"" + verdict + "\">" + xmlEscaped(o.details) + "</failure>\n";
+    body = "      <failure message=\"" + markupEscaped(verdict + ": " + o.message) + "\" type=\"" + verdict + "\">" + markupEscaped(o.details) + "</failure>\n";
   else if (c.kind == CaseKind::Skipped)
     body = "      <skipped message=\"output up to date (--resume)\"/>\n";
-  if (o.verdict == Verdict::Warn) body += "      <system-out>" + xmlEscaped(o.details) + "</system-out>\n";
+  if (o.verdict == Verdict::Warn) body += "      <system-out>" + markupEscaped(o.details) + "</system-out>\n";
   e += body.empty() ? "/>\n" : ">\n" + body + "    </testcase>\n";
   return c;
 }

@@ -15,6 +15,7 @@
 #include "command_line.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "common/stopwatch.h"
 #include "compare/compare_files.h"
 #include "compare/diff_format.h"
 #include "compare/diff_text.h"
@@ -200,7 +201,7 @@ std::vector<JobOutcome> runBatch(const std::vector<JobLine>& jobs, const BatchOp
         fail(outcome, "out of memory");
         worker = Worker{};  // what it kept may be the cause
       }
-      outcome.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      outcome.milliseconds = millisecondsSince(start);
       report(outcome);
     }
   };

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "common/markup_text.h"
+
 namespace facet {
 namespace {
 
@@ -16,17 +18,6 @@ constexpr double kHeader = 80, kMargin = 12;
 
 constexpr std::array<const char*, 6> kColours = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};
 
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    if (c == '&') out += "&amp;";
-    else if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '"') out += "&quot;";
-    else out += c;
-  }
-  return out;
-}
 
 std::string number(double v) {
   char text[32];
@@ -133,24 +124,24 @@ void drawPanel(std::string& svg, const PlotPanel& panel, double left, double top
   const auto py = [&](double v) { return y1 - sy.fraction(v) * kAreaHeight; };
 
   svg += "<g>\n<text x=\"" + number(left + kCellWidth / 2) + "\" y=\"" + number(top + 18) + "\" text-anchor=\"middle\" font-weight=\"bold\">" +
-         escaped(panel.title) + "</text>\n";
+         markupEscaped(panel.title) + "</text>\n";
   svg += "<rect x=\"" + number(x0) + "\" y=\"" + number(y0) + "\" width=\"" + number(kAreaWidth) + "\" height=\"" + number(kAreaHeight) +
          "\" fill=\"#ffffff\" stroke=\"#444444\"/>\n";
   for (const auto& [value, label] : sx.ticks) {
     const double x = px(value);
     svg += "<line x1=\"" + number(x) + "\" y1=\"" + number(y0) + "\" x2=\"" + number(x) + "\" y2=\"" + number(y1) + "\" stroke=\"#e4e4e4\"/>";
     svg += "<line x1=\"" + number(x) + "\" y1=\"" + number(y1) + "\" x2=\"" + number(x) + "\" y2=\"" + number(y1 + 4) + "\" stroke=\"#444444\"/>";
-    svg += "<text x=\"" + number(x) + "\" y=\"" + number(y1 + 16) + "\" text-anchor=\"middle\">" + escaped(label) + "</text>\n";
+    svg += "<text x=\"" + number(x) + "\" y=\"" + number(y1 + 16) + "\" text-anchor=\"middle\">" + markupEscaped(label) + "</text>\n";
   }
   for (const auto& [value, label] : sy.ticks) {
     const double y = py(value);
     svg += "<line x1=\"" + number(x0) + "\" y1=\"" + number(y) + "\" x2=\"" + number(x1) + "\" y2=\"" + number(y) + "\" stroke=\"#e4e4e4\"/>";
     svg += "<line x1=\"" + number(x0 - 4) + "\" y1=\"" + number(y) + "\" x2=\"" + number(x0) + "\" y2=\"" + number(y) + "\" stroke=\"#444444\"/>";
-    svg += "<text x=\"" + number(x0 - 7) + "\" y=\"" + number(y + 4) + "\" text-anchor=\"end\">" + escaped(label) + "</text>\n";
+    svg += "<text x=\"" + number(x0 - 7) + "\" y=\"" + number(y + 4) + "\" text-anchor=\"end\">" + markupEscaped(label) + "</text>\n";
   }
-  svg += "<text x=\"" + number((x0 + x1) / 2) + "\" y=\"" + number(y1 + 36) + "\" text-anchor=\"middle\">" + escaped(panel.x.label) + "</text>\n";
+  svg += "<text x=\"" + number((x0 + x1) / 2) + "\" y=\"" + number(y1 + 36) + "\" text-anchor=\"middle\">" + markupEscaped(panel.x.label) + "</text>\n";
   svg += "<text transform=\"translate(" + number(left + 16) + " " + number((y0 + y1) / 2) + ") rotate(-90)\" text-anchor=\"middle\">" +
-         escaped(panel.y.label) + "</text>\n";
+         markupEscaped(panel.y.label) + "</text>\n";
 
   if (xs.empty())
     svg += "<text x=\"" + number((x0 + x1) / 2) + "\" y=\"" + number((y0 + y1) / 2) + "\" text-anchor=\"middle\" fill=\"#888888\">no data</text>\n";
@@ -191,14 +182,14 @@ std::string plotSvg(const Plot& plot) {
   svg += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + number(width) + "\" height=\"" + number(height) + "\" viewBox=\"0 0 " +
          number(width) + " " + number(height) + "\" font-family=\"DejaVu Sans, Arial, sans-serif\" font-size=\"11\">\n";
   svg += "<rect width=\"100%\" height=\"100%\" fill=\"#fafafa\"/>\n";
-  svg += "<text x=\"" + number(kMargin) + "\" y=\"24\" font-size=\"16\" font-weight=\"bold\">" + escaped(plot.title) + "</text>\n";
-  if (!plot.note.empty()) svg += "<text x=\"" + number(kMargin) + "\" y=\"43\" fill=\"#444444\">" + escaped(plot.note) + "</text>\n";
+  svg += "<text x=\"" + number(kMargin) + "\" y=\"24\" font-size=\"16\" font-weight=\"bold\">" + markupEscaped(plot.title) + "</text>\n";
+  if (!plot.note.empty()) svg += "<text x=\"" + number(kMargin) + "\" y=\"43\" fill=\"#444444\">" + markupEscaped(plot.note) + "</text>\n";
   for (std::size_t i = 0; i < names.size(); ++i) {
     const double x = kMargin + static_cast<double>(i) * 120;
     const char* colour = kColours[i % kColours.size()];
     svg += "<line x1=\"" + number(x) + "\" y1=\"64\" x2=\"" + number(x + 28) + "\" y2=\"64\" stroke=\"" + colour + "\" stroke-width=\"1.8\"/>";
     svg += marker(static_cast<int>(i), x + 14, 64, colour);
-    svg += "<text x=\"" + number(x + 34) + "\" y=\"68\">" + escaped(names[i]) + "</text>\n";
+    svg += "<text x=\"" + number(x + 34) + "\" y=\"68\">" + markupEscaped(names[i]) + "</text>\n";
   }
   for (std::size_t p = 0; p < plot.panels.size(); ++p) {
     const double left = kMargin + static_cast<double>(p % static_cast<std::size_t>(columns)) * kCellWidth;

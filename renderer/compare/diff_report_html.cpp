@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "common/markup_text.h"
 #include "compare/diff_format.h"
 #include "compare/diff_text.h"
 #include "compare/heat_map.h"
@@ -41,21 +42,6 @@ figcaption { margin-top: .3em; color: #a0a0a0; }
 .legend span { margin-right: 1em; white-space: nowrap; }
 )";
 
-std::string escape(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 std::string badge(Verdict v) {
   return "<span class=\"verdict v" + std::to_string(static_cast<int>(v)) + "\">" + std::string(verdictName(v)) + "</span>";
@@ -73,11 +59,11 @@ void writeFigure(std::ostringstream& out, const ReportImage& image, const std::s
     out << "<div class=\"none\">no image</div>";
   } else {
     const int scale = std::max(1, kSmallImageTarget / std::max(image.width, image.height));
-    out << "<a href=\"" << escape(image.path) << "\"><img src=\"" << escape(image.path) << "\" width=\"" << image.width * scale
-        << "\" height=\"" << image.height * scale << "\" alt=\"" << escape(caption) << "\"></a>";
+    out << "<a href=\"" << markupEscaped(image.path) << "\"><img src=\"" << markupEscaped(image.path) << "\" width=\"" << image.width * scale
+        << "\" height=\"" << image.height * scale << "\" alt=\"" << markupEscaped(caption) << "\"></a>";
   }
-  out << "<figcaption>" << escape(caption);
-  if (!detail.empty()) out << "<br><code>" << escape(detail) << "</code>";
+  out << "<figcaption>" << markupEscaped(caption);
+  if (!detail.empty()) out << "<br><code>" << markupEscaped(detail) << "</code>";
   out << "</figcaption></figure>\n";
 }
 
@@ -109,9 +95,9 @@ void writeFigures(std::ostringstream& out, const DiffResult& r, const DiffThresh
 
 void writeCase(std::ostringstream& out, const ReportCase& rc, int rank, const DiffThresholds& t) {
   const DiffCase& c = rc.diffCase;
-  out << "<section id=\"case-" << rank << "\" data-name=\"" << escape(c.name) << "\">\n<h2>" << rank << ". " << escape(c.name) << " "
+  out << "<section id=\"case-" << rank << "\" data-name=\"" << markupEscaped(c.name) << "\">\n<h2>" << rank << ". " << markupEscaped(c.name) << " "
       << badge(c.verdict) << "</h2>\n";
-  if (!c.problem.empty()) out << "<p class=\"problem\">" << escape(c.problem) << "</p>\n";
+  if (!c.problem.empty()) out << "<p class=\"problem\">" << markupEscaped(c.problem) << "</p>\n";
   out << "<div class=\"images\">\n";
   writeFigure(out, rc.expected, "expected", c.expectedPath);
   writeFigure(out, rc.actual, "actual", c.actualPath);
@@ -143,7 +129,7 @@ void writeThresholds(std::ostringstream& out, const DiffThresholds& t) {
 }
 
 std::string tocEntry(const DiffCase& c) {
-  if (!c.result) return escape(c.problem);
+  if (!c.result) return markupEscaped(c.problem);
   const DiffResult& r = *c.result;
   return formatNumber(r.failingPercent) + "% failing, max difference " + std::to_string(r.maxDifference) + ", PSNR " + formatNumber(r.psnr) +
          " dB";
@@ -161,15 +147,15 @@ std::string reportHtml(std::vector<ReportCase> cases, const ReportContext& conte
   out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>facet diff: " << verdictName(worst) << ", "
       << cases.size() << (cases.size() == 1 ? " case" : " cases") << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n<header>\n";
   out << "<h1>facet diff " << badge(worst) << "</h1>\n";
-  out << "<p>expected <code>" << escape(context.expectedSource) << "</code> &middot; actual <code>" << escape(context.actualSource)
+  out << "<p>expected <code>" << markupEscaped(context.expectedSource) << "</code> &middot; actual <code>" << markupEscaped(context.actualSource)
       << "</code></p>\n";
-  out << "<p>" << escape(summaryLine(plain)) << "</p>\n";
+  out << "<p>" << markupEscaped(summaryLine(plain)) << "</p>\n";
   writeThresholds(out, context.thresholds);
   writeLegend(out, context.thresholds);
   out << "</header>\n<nav>\n<h2>Cases, worst first</h2>\n<ol>\n";
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const DiffCase& c = cases[i].diffCase;
-    out << "<li><a href=\"#case-" << i + 1 << "\">" << escape(c.name) << "</a> " << badge(c.verdict) << " " << tocEntry(c) << "</li>\n";
+    out << "<li><a href=\"#case-" << i + 1 << "\">" << markupEscaped(c.name) << "</a> " << badge(c.verdict) << " " << tocEntry(c) << "</li>\n";
   }
   out << "</ol>\n</nav>\n";
   for (std::size_t i = 0; i < cases.size(); ++i) writeCase(out, cases[i], static_cast<int>(i + 1), context.thresholds);

@@ -28,7 +28,7 @@ TEST_CASE("a JUnit report counts failures, errors and skipped jobs and escapes t
   CHECK(xml.find("name=\"line 3: out/1.png\"") != std::string::npos);
   CHECK(xml.find("message=\"FAILURE: 3 pixels &lt;over&gt;\"") != std::string::npos);
   CHECK(xml.find(">a &amp; b</failure>") != std::string::npos);
-  CHECK(xml.find("<error message=\"jobs:5: unknown key 'x'\" type=\"FILE ERROR\"/>") != std::string::npos);
+  CHECK(xml.find("<error message=\"jobs:5: unknown key &#39;x&#39;\" type=\"FILE ERROR\"/>") != std::string::npos);
   CHECK(xml.find("<system-out>warned</system-out>") != std::string::npos);
   CHECK(batchExitCode(outcomes()) == 4);
 }
