@@ -73,6 +73,15 @@ int parseAndRun(int argc, char** argv, const std::vector<AddCommand>& adders) {
 const char* facetVersion() { return FACET_VERSION; }
 
 int runCommands(int argc, char** argv, const std::vector<AddCommand>& commands) {
+#if FACET_NEEDS_FMA
+  // The rasterizer's sources are built with -mfma where the building CPU has
+  // it (FACET_CPU_FMA): on a CPU without it that code would die of SIGILL.
+  // This file is built without it, so the check runs before any such code.
+  if (!__builtin_cpu_supports("fma")) {
+    printErrorLine(stderr, "", "this facet was built with FMA instructions (FACET_CPU_FMA=ON) and this CPU has none: build it with -DFACET_CPU_FMA=OFF");
+    return kExitInternal;
+  }
+#endif
   // Every exception a command lets through ends here, as one line and an
   // exit code (app/exit_status.h): bad input 1 or 64, anything else 70.
   try {
