@@ -25,6 +25,7 @@
 #include "inputs_hash.h"
 #include "render/stage.h"
 #include "scene/load_scene.h"
+#include "settings/settings_files.h"
 #include "settings/settings_json.h"
 #if FACET_HAVE_GL
 #include "gl/gl_renderer.h"
@@ -35,12 +36,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A scene file's bytes count toward its inputs hash; a glTF is far below this.
-constexpr std::uint64_t kMaxHashedSceneBytes = 2ull << 30;
+// A file's bytes count toward its inputs hash; a glTF or a map is far below this.
+constexpr std::uint64_t kMaxHashedFileBytes = 2ull << 30;
 
 struct LoadedScene {
   Scene scene;
-  std::string hashed;  // the file's bytes, or the builtin name
+  std::string hashed;  // the digest of the files it was read from, or the builtin name
 };
 
 // Each scene path loaded once, the first job to ask doing the work and the
@@ -63,7 +64,7 @@ class SceneCache {
       try {
         auto loaded = std::make_shared<LoadedScene>();
         loaded->scene = loadScene(path);
-        loaded->hashed = path.empty() || path.rfind("builtin:", 0) == 0 ? "builtin:" + path : readFile(path, kMaxHashedSceneBytes);
+        loaded->hashed = loaded->scene.files.empty() ? "builtin:" + path : filesDigest(loaded->scene.files, kMaxHashedFileBytes);
         mine->set_value(std::move(loaded));
       } catch (...) {
         mine->set_exception(std::current_exception());
@@ -126,7 +127,9 @@ void runJob(const BatchJob& job, const BatchOptions& options, SceneCache& scenes
   const std::shared_ptr<const LoadedScene> loaded = scenes.get(job.scene);
   const RenderSettings asked = settingsFor(baseSettings(job), job.assignments, job.size, loaded->scene);
   const std::string settingsText = settingsToJson(asked).dump();
-  const std::string hash = inputsHash(loaded->hashed, settingsText, asked.width, asked.height, job.backend, options.version);
+  // The scene's files, and the maps, volume and sprites the settings name.
+  const std::string files = loaded->hashed + filesDigest(namedFiles(asked), kMaxHashedFileBytes);
+  const std::string hash = inputsHash(files, settingsText, asked.width, asked.height, job.backend, options.version);
   if (options.resume && upToDate(job.output, hash)) {
     outcome.status = JobStatus::Skipped;
   } else {

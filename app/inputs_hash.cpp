@@ -2,6 +2,9 @@
 
 #include <cstdio>
 
+#include "common/atomic_file.h"
+#include "common/error.h"
+
 namespace facet {
 
 void Fnv1a64::add(std::string_view bytes) {
@@ -21,6 +24,19 @@ std::string Fnv1a64::hex() const {
   char text[17];
   std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(state_));
   return text;
+}
+
+std::string filesDigest(const std::vector<std::string>& files, std::uint64_t maxBytesEach) {
+  Fnv1a64 hash;
+  for (const std::string& file : files) {
+    hash.addField(file);
+    try {
+      hash.addField(readFile(file, maxBytesEach));
+    } catch (const Error&) {
+      hash.addField("");  // unreadable: loading it fails the job, which then writes nothing
+    }
+  }
+  return hash.hex();
 }
 
 std::string inputsHash(std::string_view sceneBytesOrName, std::string_view settingsJson, int width, int height,

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace facet {
 
@@ -21,11 +22,16 @@ class Fnv1a64 {
   std::uint64_t state_ = 0xcbf29ce484222325ull;
 };
 
-// The inputs of one frame: the scene file's bytes (or, for builtin:NAME and
-// the default scene, the name), the resolved settings as JSON text, the size,
-// the backend and facet's version. Files a glTF refers to (.bin, textures)
-// are not read: change the .gltf or the settings to force a new render.
-std::string inputsHash(std::string_view sceneBytesOrName, std::string_view settingsJson, int width, int height,
+// The bytes of `files` (each with its name; a file that cannot be read
+// counts by its name alone, and its job fails when it is loaded), as 16 hex
+// digits: what a scene was read from, or what its settings name.
+std::string filesDigest(const std::vector<std::string>& files, std::uint64_t maxBytesEach);
+
+// The inputs of one frame: the digest of the files it is drawn from (the
+// glTF and the buffers and images it names, the maps the settings name; for
+// builtin:NAME the name), the resolved settings as JSON text, the size, the
+// backend and facet's version.
+std::string inputsHash(std::string_view filesDigestOrName, std::string_view settingsJson, int width, int height,
                        std::string_view backend, std::string_view version);
 
 }  // namespace facet

@@ -84,6 +84,7 @@ int jsonDepth(const char* text, std::size_t length) {
 
 struct AssetFolder {
   std::filesystem::path root;  // canonical folder of the .gltf/.glb
+  std::vector<std::string> read;  // the files read from it (buffers, images), in order
 };
 
 // Whether a file is there at all: readWholeFile then says why it will not
@@ -98,7 +99,7 @@ std::string expandFilePath(const std::string& path, void*) { return path; }  // 
 
 bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
   namespace fs = std::filesystem;
-  const auto* folder = static_cast<const AssetFolder*>(user);
+  auto* folder = static_cast<AssetFolder*>(user);
   if (folder->root.empty()) {
     if (err) *err += quoteInput(path) + ": external files are not read here\n";
     return false;
@@ -114,6 +115,7 @@ bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std:
   try {
     const std::string bytes = readFile(canonical.string(), kMaxFileBytes);
     out->assign(bytes.begin(), bytes.end());
+    folder->read.push_back(canonical.string());
     return true;
   } catch (const Error& e) {
     if (err) *err += std::string(e.what()) + "\n";
@@ -1112,7 +1114,9 @@ Scene loadGltf(const std::string& path) {
   const std::string bytes = readFile(path, kMaxFileBytes);
   std::error_code ec;
   const std::string folder = fs::weakly_canonical(fs::absolute(path).parent_path(), ec).string();
-  return loadGltfFromMemory(bytes, path, folder.empty() ? "/" : folder);
+  Scene scene = loadGltfFromMemory(bytes, path, folder.empty() ? "/" : folder);
+  scene.files.insert(scene.files.begin(), path);
+  return scene;
 }
 
 Scene loadGltfFromMemory(const std::string& bytes, const std::string& path, const std::string& assetFolder) {
@@ -1174,6 +1178,7 @@ Scene loadGltfFromMemory(const std::string& bytes, const std::string& path, cons
 
   Scene scene;
   scene.source = path;
+  scene.files = std::move(folder.read);
   for (std::string line; !warn.empty();) {  // tinygltf's own warnings, one per line
     const auto newline = warn.find('\n');
     line = warn.substr(0, newline);

@@ -73,6 +73,7 @@ Scene loadScene(const std::string& path) {
   if (isVolumeName(path)) {  // a volume on its own, in an empty scene (pipeline/scene_additions.h reads it)
     Scene scene;
     scene.source = path;
+    scene.files = {path};
     scene.volume.file = path;
     return scene;
   }

@@ -210,6 +210,7 @@ class SceneIdentity {
 
 struct Scene {
   std::string source;                // file path, or "default scene"
+  std::vector<std::string> files;    // what it was read from: the glTF file, then each buffer and image it names; empty: built in
   std::vector<Mesh> meshes;
   std::vector<MeshInstance> instances;
   std::vector<Material> materials;

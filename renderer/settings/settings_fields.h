@@ -10,7 +10,9 @@
 
 namespace facet {
 
-enum class FieldKind { Value, Color };  // Color: a vec3 of linear RGB (the viewer shows a colour picker)
+// Color: a vec3 of linear RGB (the viewer shows a colour picker). A string
+// field is a file name unless it is Text (a transfer function's points).
+enum class FieldKind { Value, Color, Text };
 
 // One field: {key, label, unit, help, min, max, kind}.
 //
@@ -245,7 +247,8 @@ void visitSettings(Visitor& v, RenderSettings& s) {
     v.choice({"mode", "volume rendering mode", "", "raycast (v-buffer ray casting), splat (footprints back to front) or isosurface (marching cubes)"},
              vs.mode, kVolumeModeNames);
     v.field({"transfer", "transfer function", "",
-             "the transfer function: a preset (grey, mri, bone, rainbow, iso-surface) or points 'value r g b a, ...', values increasing"},
+             "the transfer function: a preset (grey, mri, bone, rainbow, iso-surface) or points 'value r g b a, ...', values increasing", 0, 0,
+             FieldKind::Text},
             vs.transfer);
     v.field({"center", "box centre", "world units", "world position of the volume box's centre"}, vs.center);
     v.field({"size", "box size", "world units", "world length of the volume box's longest side", 1e-6, 1e9}, vs.size);

@@ -132,10 +132,11 @@ struct JsonReader {
   }
   void field(const FieldInfo& f, std::string& v) {
     if (const json* j = find(f)) {
-      if (!j->is_string()) fail(f, "expected a file name (a string), got " + describeJson(*j));
+      const std::string what = f.kind == FieldKind::Text ? "a text" : "a file name";
+      if (!j->is_string()) fail(f, "expected " + what + " (a string), got " + describeJson(*j));
       const std::string text = j->get<std::string>();
-      if (text.size() > kMaxSettingsPathBytes) fail(f, "a file name of " + std::to_string(text.size()) + " bytes is longer than " + std::to_string(kMaxSettingsPathBytes));
-      if (text.find('\0') != std::string::npos) fail(f, "a file name cannot hold a NUL byte");
+      if (text.size() > kMaxSettingsPathBytes) fail(f, what + " of " + std::to_string(text.size()) + " bytes is longer than " + std::to_string(kMaxSettingsPathBytes));
+      if (text.find('\0') != std::string::npos) fail(f, what + " cannot hold a NUL byte");
       v = text;
     }
   }

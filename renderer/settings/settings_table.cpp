@@ -40,7 +40,7 @@ struct TableWriter {
   void field(const FieldInfo& f, bool v) { row(f, v ? "true" : "false", "true, false"); }
   void field(const FieldInfo& f, glm::vec3 v) { row(f, vec3(v), measured(f, f.min == f.max ? "" : "each " + range(f))); }
   void field(const FieldInfo& f, const std::optional<float>& v) { row(f, v ? number(*v) : "null", "null, or " + measured(f, range(f))); }
-  void field(const FieldInfo& f, const std::string& v) { row(f, v.empty() ? "\"\"" : v, "a file name"); }
+  void field(const FieldInfo& f, const std::string& v) { row(f, v.empty() ? "\"\"" : v, f.kind == FieldKind::Text ? "text" : "a file name"); }
   template <class E, std::size_t N>
   void choice(const FieldInfo& f, E v, const std::array<std::string_view, N>& names) {
     std::string choices;

@@ -5,7 +5,8 @@
 #    under a regular file: each bad job fails alone naming its line, the
 #    others are written, the exit code is the worst job's (4);
 #  - the JUnit report is well-formed XML (xmllint) with the counts;
-#  - --resume skips every written job, and renders again after a settings change;
+#  - --resume skips every written job, and renders again after a settings
+#    change or a new texture under a glTF (-DASSIMP: the assimp glTF2 models);
 #  - --shard I/N (N = 1, 2, 3, 7) of a 20-job file lists every job exactly once,
 #    and 0/0, 5/3, a/b are refused with 64;
 #  - the merged reports of 3 shards equal the whole run's, times apart.
@@ -72,6 +73,20 @@ file(WRITE ${DIR}/good.jsonl "${changed}")
 facet_run_command(COMMAND ${FACET} batch ${DIR}/good.jsonl --resume EXPECT 0)
 if(NOT out MATCHES "6 jobs: 1 rendered, 5 skipped" OR NOT out MATCHES "line 3 [^\n]*out/flat.png PASS")
   message(FATAL_ERROR "--resume did not render the changed job again${report}")
+endif()
+
+# --resume sees the files a glTF names: a new texture renders the job again.
+file(COPY ${ASSIMP}/BoxTextured-glTF/ DESTINATION ${DIR}/box)
+file(WRITE ${DIR}/box.jsonl "{\"scene\":\"box/BoxTextured.gltf\",\"size\":\"32x32\",\"backend\":\"cpu\",\"output\":\"out/box.png\"}\n")
+facet_run_command(COMMAND ${FACET} batch ${DIR}/box.jsonl --resume EXPECT 0)
+facet_run_command(COMMAND ${FACET} batch ${DIR}/box.jsonl --resume EXPECT 0)
+if(NOT out MATCHES "1 jobs?: 0 rendered, 1 skipped")
+  message(FATAL_ERROR "--resume did not skip the unchanged textured job${report}")
+endif()
+file(COPY_FILE ${DIR}/out/cpu.png ${DIR}/box/CesiumLogoFlat.png)
+facet_run_command(COMMAND ${FACET} batch ${DIR}/box.jsonl --resume EXPECT 0)
+if(NOT out MATCHES "1 jobs?: 1 rendered, 0 skipped")
+  message(FATAL_ERROR "--resume skipped a job whose texture changed${report}")
 endif()
 
 # Shards of a 20-job file (with comments and an empty line between).

@@ -52,6 +52,15 @@ TEST_CASE("BoxTextured (.gltf, .glb, embedded): 12 triangles in the unit cube, o
   }
 }
 
+TEST_CASE("a scene lists the files it was read from: the glTF, then the buffers and images it names") {
+  const Scene separate = loadGltf(kModels + "/BoxTextured-glTF/BoxTextured.gltf");
+  REQUIRE(separate.files.size() == 3);
+  CHECK(separate.files[0] == kModels + "/BoxTextured-glTF/BoxTextured.gltf");
+  CHECK(separate.files[1].ends_with("/BoxTextured0.bin"));
+  CHECK(separate.files[2].ends_with("/CesiumLogoFlat.png"));
+  CHECK(loadGltf(kModels + "/BoxTextured-glTF-Binary/BoxTextured.glb").files.size() == 1);  // everything inside
+}
+
 TEST_CASE("2CylinderEngine: 121496 triangles over 115 instances, bounds from its node transforms") {
   const Scene scene = loadGltf(kModels + "/2CylinderEngine-glTF-Binary/2CylinderEngine.glb");
   CHECK(scene.instances.size() == 115);

@@ -1,0 +1,16 @@
+#pragma once
+// The files a RenderSettings names (its string fields: the bump, displacement
+// and environment maps, a volume, the emitters' sprites), as written in it.
+// What an image depends on beyond the scene file and the values themselves:
+// `facet batch --resume` hashes their bytes.
+#include <string>
+#include <vector>
+
+#include "settings/render_settings.h"
+
+namespace facet {
+
+// Every non-empty file name in `settings`, in field-table order.
+std::vector<std::string> namedFiles(const RenderSettings& settings);
+
+}  // namespace facet
