@@ -4,7 +4,8 @@
 #    a line that is not JSON, an unknown key, a missing scene and an output
 #    under a regular file: each bad job fails alone naming its line, the
 #    others are written, the exit code is the worst job's (4);
-#  - the JUnit report is well-formed XML (xmllint) with the counts;
+#  - the JUnit report is well-formed XML (xmllint) with the counts, and a
+#    JUnit consumer (junitparser, -DPYTHON) reads the same counts and results;
 #  - --resume skips every written job, and renders again after a settings
 #    change or a new texture under a glTF (-DASSIMP: the assimp glTF2 models);
 #  - --shard I/N (N = 1, 2, 3, 7) of a 20-job file lists every job exactly once,
@@ -55,6 +56,14 @@ endforeach()
 execute_process(COMMAND xmllint --noout ${DIR}/report.xml RESULT_VARIABLE xml_rc ERROR_VARIABLE xml_err)
 if(NOT xml_rc EQUAL 0)
   message(FATAL_ERROR "report.xml is not well-formed XML: ${xml_err}")
+endif()
+# And as a JUnit consumer reads it (junitparser): counts and each case's result.
+execute_process(COMMAND ${PYTHON} ${CMAKE_CURRENT_LIST_DIR}/junit_consumer.py ${DIR}/report.xml 10 1 4 0
+                        "line 3: ${DIR}/out/gl.png=passed" "line 4: ${DIR}/out/flat.png=failure" "line 9: (no output)=error"
+                        "line 11: ${DIR}/out/missing.png=error"
+                RESULT_VARIABLE junit_rc OUTPUT_VARIABLE junit_out ERROR_VARIABLE junit_err)
+if(NOT junit_rc EQUAL 0)
+  message(FATAL_ERROR "junitparser does not read report.xml as expected:\n${junit_out}${junit_err}")
 endif()
 file(READ ${DIR}/report.xml xml)
 if(NOT xml MATCHES "<testsuite name=\"facet batch\" tests=\"10\" failures=\"1\" errors=\"4\" skipped=\"0\"")
