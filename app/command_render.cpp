@@ -72,7 +72,7 @@ RenderSettings rayCastingOf(RenderSettings settings) {
 std::vector<std::string> frameNames(const std::string& pattern, const std::string& option, const TemplateValues& values, int frames) {
   const OutputTemplate names(pattern, option);
   if (frames > 1 && !names.numbersFrames())
-    throw UsageError("--turntable " + std::to_string(frames) + ": " + option + " " + quoteInput(pattern) +
+    throw UsageError("--turntable " + std::to_string(frames) + ": " + option + " " + quotedPath(pattern) +
                      " has no {frame} or {n}, so every frame would get that one name (e.g. turntable_{frame}.png)");
   std::vector<std::string> files;
   for (int k = 0; k < frames; ++k) files.push_back(names.expand(values, k, frames));

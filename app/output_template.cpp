@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "common/atomic_file.h"
 #include "common/error.h"
 #include "common/quote.h"
 
@@ -21,7 +22,7 @@ int digitsOf(int n) {
 }  // namespace
 
 OutputTemplate::OutputTemplate(const std::string& pattern, const std::string& option) {
-  const auto refuse = [&](const std::string& fault) { throw UsageError(option + " " + quoteInput(pattern) + ": " + fault); };
+  const auto refuse = [&](const std::string& fault) { throw UsageError(option + " " + quotedPath(pattern) + ": " + fault); };
   std::string text;
   const auto flushText = [&] {
     if (!text.empty()) pieces_.push_back({Kind::Text, text, 0});

@@ -162,6 +162,11 @@ std::string shownPath(std::string_view path) {
   return quoteInput(path);
 }
 
+std::string quotedPath(std::string_view path) {
+  std::string shown = shownPath(path);
+  return shown == path ? "'" + shown + "'" : shown;
+}
+
 std::string describeErrno(int code) {
   std::string text = std::strerror(code);
   if (!text.empty() && text[0] >= 'A' && text[0] <= 'Z' && !(text.size() > 1 && text[1] >= 'A' && text[1] <= 'Z'))

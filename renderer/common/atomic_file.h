@@ -61,6 +61,9 @@ std::string readFile(const std::string& path, std::uint64_t maxBytes);
 // A path as an error line shows it: as given when it is printable UTF-8 of a
 // sensible length, otherwise quoteInput() (common/quote.h).
 std::string shownPath(std::string_view path);
+// The same in quotes, for a path inside a sentence: "'out/a.png'"; a path
+// shownPath would not show whole is quoteInput's short prefix.
+std::string quotedPath(std::string_view path);
 
 // strerror(code) as an error line says it, from a lower-case letter: "no
 // space left on device".
