@@ -12,6 +12,7 @@
 #include "cpu/frame_buffers.h"
 #include "cpu/lighting.h"
 #include "cpu/passes.h"
+#include "cpu/lane_width.h"
 #include "cpu/reference/reference_renderer.h"
 #include "cpu/resolve.h"
 #include "cpu/volume_pass.h"
@@ -31,10 +32,15 @@ namespace {
 // from frame to frame.
 class CpuRenderer final : public Renderer {
  public:
-  explicit CpuRenderer(int threads)
-      : pool_(threads > 0 ? threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()))) {}
+  CpuRenderer(int threads, int lanes)
+      : pool_(threads > 0 ? threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()))) {
+    buffers_.lanes = lanes > 0 ? lanes : cpu::widestLanes();
+    cpu::checkLanes(buffers_.lanes);
+  }
 
-  std::string description() const override { return "cpu rasterizer, " + countOf(pool_.size(), "thread"); }
+  std::string description() const override {
+    return "cpu rasterizer, " + countOf(pool_.size(), "thread") + ", " + std::to_string(buffers_.lanes) + " lanes";
+  }
 
   RenderResult render(const Scene& scene, const FrameInputs& frame) override {
     check_(scene, frame);
@@ -81,8 +87,8 @@ class CpuRenderer final : public Renderer {
       result.notes.push_back(line);
     }
     const auto resolveStart = std::chrono::steady_clock::now();
-    if (frame.samples.empty()) cpu::resolve(pool_, color_, frame.blending, 1, result.image);
-    else cpu::resolve(pool_, sum_, Blending::Premultiplied, static_cast<int>(frame.samples.size()), result.image);
+    if (frame.samples.empty()) cpu::resolve(pool_, color_, frame.blending, 1, buffers_.lanes, result.image);
+    else cpu::resolve(pool_, sum_, Blending::Premultiplied, static_cast<int>(frame.samples.size()), buffers_.lanes, result.image);
     result.timings.push_back({"resolve", millisecondsSince(resolveStart)});
     if (frame.hsr == HiddenSurface::Scanline) {
       const auto frameDepth = static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height) * sizeof(float);
@@ -182,6 +188,6 @@ class CpuRenderer final : public Renderer {
 
 }  // namespace
 
-std::unique_ptr<Renderer> makeCpuRenderer(int threads) { return std::make_unique<CpuRenderer>(threads); }
+std::unique_ptr<Renderer> makeCpuRenderer(int threads, int lanes) { return std::make_unique<CpuRenderer>(threads, lanes); }
 
 }  // namespace facet

@@ -7,6 +7,8 @@ namespace facet {
 
 // The CPU reference rasterizer: the pipeline of renderer/PIPELINE.md in
 // software, covering the same pixels as llvmpipe. threads = 0: one per core.
-std::unique_ptr<Renderer> makeCpuRenderer(int threads = 0);
+// lanes: pixels the per-pixel loops take at a time (cpu/lane_width.h), 8
+// (AVX2), 4 or 1; 0: the widest this CPU runs. Every width gives the same image.
+std::unique_ptr<Renderer> makeCpuRenderer(int threads = 0, int lanes = 0);
 
 }  // namespace facet

@@ -1,11 +1,13 @@
 #pragma once
 // The shading code is written once (shading_math.h, lighting.h) and runs on
-// one pixel or on four at a time. This header gives it the lane types: for
-// one pixel, float, bool, std::int32_t and glm::vec3; for four, Float4,
-// Mask4, Int4 and Vec3x4 over SSE2, whose every operation is the IEEE
-// operation of the one-pixel type lane by lane (no fused multiply-add, no
-// approximate reciprocal), so both give the same bits. Where SSE2 is
-// missing, only the one-pixel types exist.
+// one pixel or on four or eight at a time. This header gives it the lane
+// types: for one pixel, float, bool, std::int32_t and glm::vec3; for four,
+// Float4, Mask4, Int4 and Vec3x4 over SSE2; for eight, Float8, Mask8, Int8
+// and Vec3x8 over AVX2, in the one translation unit built for AVX2
+// (phong_batch_avx2.cpp). Every lane operation is the IEEE operation of the
+// one-pixel type lane by lane (no fused multiply-add, no approximate
+// reciprocal), so all three give the same bits. Where SSE2 is missing, only
+// the one-pixel types exist.
 #include <cmath>
 #include <cstdint>
 
@@ -13,6 +15,9 @@
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
+#endif
+#if defined(__AVX2__)
+#include <immintrin.h>
 #endif
 
 namespace facet::cpu {
@@ -113,6 +118,91 @@ inline Vec3x4 operator*(const Vec3x4& v, Float4 s) { return {v.x * s, v.y * s, v
 inline Vec3x4 operator*(const Vec3x4& a, const Vec3x4& b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
 inline Vec3x4 operator/(const Vec3x4& v, Float4 s) { return {v.x / s, v.y / s, v.z / s}; }
 inline Vec3x4 select(Mask4 mask, const Vec3x4& a, const Vec3x4& b) { return {select(mask, a.x, b.x), select(mask, a.y, b.y), select(mask, a.z, b.z)}; }
+// Four lanes from / to four floats aligned to 16 bytes.
+inline void loadLanes(Float4& x, const float* p) { x = Float4(_mm_load_ps(p)); }
+inline void storeLanes(float* p, Float4 x) { _mm_store_ps(p, x.v); }
+
+#endif
+
+#if defined(__AVX2__)
+
+// [SECTION] Eight lanes: the four-lane operations on 256-bit registers.
+
+struct Mask8 {
+  __m256 m;  // all ones or all zeros per lane
+};
+inline Mask8 operator&(Mask8 a, Mask8 b) { return {_mm256_and_ps(a.m, b.m)}; }
+inline Mask8 operator|(Mask8 a, Mask8 b) { return {_mm256_or_ps(a.m, b.m)}; }
+inline Mask8 operator!(Mask8 a) { return {_mm256_xor_ps(a.m, _mm256_castsi256_ps(_mm256_set1_epi32(-1)))}; }
+inline Mask8 both(Mask8 a, Mask8 b) { return a & b; }
+inline bool anyLane(Mask8 a) { return _mm256_movemask_ps(a.m) != 0; }
+inline int laneBits(Mask8 a) { return _mm256_movemask_ps(a.m); }
+
+struct Float8 {
+  __m256 v;
+  Float8() = default;
+  explicit Float8(__m256 value) : v(value) {}
+  Float8(float value) : v(_mm256_set1_ps(value)) {}
+};
+inline Float8 operator+(Float8 a, Float8 b) { return Float8(_mm256_add_ps(a.v, b.v)); }
+inline Float8 operator-(Float8 a, Float8 b) { return Float8(_mm256_sub_ps(a.v, b.v)); }
+inline Float8 operator*(Float8 a, Float8 b) { return Float8(_mm256_mul_ps(a.v, b.v)); }
+inline Float8 operator/(Float8 a, Float8 b) { return Float8(_mm256_div_ps(a.v, b.v)); }
+inline Float8 operator-(Float8 a) { return Float8(_mm256_xor_ps(a.v, _mm256_set1_ps(-0.0f))); }
+// The ordered predicates: false where either side is NaN, as SSE's cmplt..cmpge and float's comparisons.
+inline Mask8 operator<(Float8 a, Float8 b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_LT_OS)}; }
+inline Mask8 operator>(Float8 a, Float8 b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_GT_OS)}; }
+inline Mask8 operator<=(Float8 a, Float8 b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_LE_OS)}; }
+inline Mask8 operator>=(Float8 a, Float8 b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_GE_OS)}; }
+inline Float8 select(Mask8 mask, Float8 a, Float8 b) { return Float8(_mm256_blendv_ps(b.v, a.v, mask.m)); }
+inline Float8 squareRoot(Float8 x) { return Float8(_mm256_sqrt_ps(x.v)); }
+
+struct Int8 {
+  __m256i v;
+  Int8() = default;
+  explicit Int8(__m256i value) : v(value) {}
+  Int8(std::int32_t value) : v(_mm256_set1_epi32(value)) {}
+};
+inline Int8 operator+(Int8 a, Int8 b) { return Int8(_mm256_add_epi32(a.v, b.v)); }
+inline Int8 operator-(Int8 a, Int8 b) { return Int8(_mm256_sub_epi32(a.v, b.v)); }
+inline Int8 operator&(Int8 a, Int8 b) { return Int8(_mm256_and_si256(a.v, b.v)); }
+inline Int8 operator|(Int8 a, Int8 b) { return Int8(_mm256_or_si256(a.v, b.v)); }
+inline Int8 operator>>(Int8 a, int n) { return Int8(_mm256_srai_epi32(a.v, n)); }
+inline Int8 operator<<(Int8 a, int n) { return Int8(_mm256_slli_epi32(a.v, n)); }
+inline Int8 select(Mask8 mask, Int8 a, Int8 b) { return Int8(_mm256_blendv_epi8(b.v, a.v, _mm256_castps_si256(mask.m))); }
+inline Int8 bitsOf(Float8 x) { return Int8(_mm256_castps_si256(x.v)); }
+inline Float8 floatOfBits(Int8 i) { return Float8(_mm256_castsi256_ps(i.v)); }
+inline Float8 toFloat(Int8 i) { return Float8(_mm256_cvtepi32_ps(i.v)); }
+inline Int8 truncateToInt(Float8 x) { return Int8(_mm256_cvttps_epi32(x.v)); }
+inline Float8 floorOf(Float8 x) {  // as Float4's: truncate, then one less where that went up
+  const Float8 t = toFloat(truncateToInt(x));
+  return select(x < t, t - Float8(1.0f), t);
+}
+
+struct Vec3x8 {
+  Float8 x, y, z;
+  Vec3x8() = default;
+  Vec3x8(Float8 a, Float8 b, Float8 c) : x(a), y(b), z(c) {}
+  explicit Vec3x8(glm::vec3 v) : x(v.x), y(v.y), z(v.z) {}
+};
+inline Vec3x8 operator+(const Vec3x8& a, const Vec3x8& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline Vec3x8 operator-(const Vec3x8& a, const Vec3x8& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline Vec3x8 operator-(const Vec3x8& a) { return {-a.x, -a.y, -a.z}; }
+inline Vec3x8 operator*(Float8 s, const Vec3x8& v) { return {s * v.x, s * v.y, s * v.z}; }
+inline Vec3x8 operator*(const Vec3x8& v, Float8 s) { return {v.x * s, v.y * s, v.z * s}; }
+inline Vec3x8 operator*(const Vec3x8& a, const Vec3x8& b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
+inline Vec3x8 operator/(const Vec3x8& v, Float8 s) { return {v.x / s, v.y / s, v.z / s}; }
+inline Vec3x8 select(Mask8 mask, const Vec3x8& a, const Vec3x8& b) { return {select(mask, a.x, b.x), select(mask, a.y, b.y), select(mask, a.z, b.z)}; }
+// Eight lanes from / to eight floats aligned to 32 bytes.
+inline void loadLanes(Float8& x, const float* p) { x = Float8(_mm256_load_ps(p)); }
+inline void storeLanes(float* p, Float8 x) { _mm256_store_ps(p, x.v); }
+
+// The four low lanes (half 0) or high lanes (half 1), for code written for four lanes.
+inline Float4 halfOf(Float8 a, int half) { return Float4(half == 0 ? _mm256_castps256_ps128(a.v) : _mm256_extractf128_ps(a.v, 1)); }
+inline Mask4 halfOf(Mask8 a, int half) { return {half == 0 ? _mm256_castps256_ps128(a.m) : _mm256_extractf128_ps(a.m, 1)}; }
+inline Vec3x4 halfOf(const Vec3x8& a, int half) { return {halfOf(a.x, half), halfOf(a.y, half), halfOf(a.z, half)}; }
+inline Float8 joined(Float4 low, Float4 high) { return Float8(_mm256_set_m128(high.v, low.v)); }
+inline Vec3x8 joined(const Vec3x4& low, const Vec3x4& high) { return {joined(low.x, high.x), joined(low.y, high.y), joined(low.z, high.z)}; }
 
 #endif
 
@@ -131,6 +221,14 @@ struct LaneTypes<Float4> {
   using Vec3 = Vec3x4;
   using Int = Int4;
   using Mask = Mask4;
+};
+#endif
+#if defined(__AVX2__)
+template <>
+struct LaneTypes<Float8> {
+  using Vec3 = Vec3x8;
+  using Int = Int8;
+  using Mask = Mask8;
 };
 #endif
 template <class F>

@@ -1,6 +1,6 @@
 #pragma once
 // The course's illumination equation on the CPU, written once for one pixel
-// (F = float) or four at a time (F = Float4, lanes.h): the vertex stage of
+// (F = float) or four or eight at a time (F = Float4, Float8; lanes.h): the vertex stage of
 // Gouraud, flat shading's triangles and Phong's pixels all call it.
 // Mirror: shaders/lighting.glsl, the same functions in the same order with
 // the same names, arguments and float operations. Change one, change the other.
@@ -269,6 +269,20 @@ inline Vec3x4 environmentLanes(const EnvironmentMap& map, const Vec3x4& R) {
     out[0][k] = c.x, out[1][k] = c.y, out[2][k] = c.z;
   }
   return Vec3x4(Float4(_mm_load_ps(out[0])), Float4(_mm_load_ps(out[1])), Float4(_mm_load_ps(out[2])));
+}
+#endif
+#if defined(__AVX2__)
+// Eight lanes: the four-lane lookups on each half (the shadow reads are per lane either way).
+inline Float8 shadowFactorLanes(const ShadowMaps& maps, const FrameLight& light, const ShadowSettings& shadows, const Vec3x8& P, const Vec3x8& N,
+                                const Vec3x8& L, Mask8 active) {
+  if (!light.hasShadowMap) return Float8(1.0f);
+  Float4 S[2];
+  for (int h = 0; h < 2; ++h)
+    S[h] = anyLane(halfOf(active, h)) ? shadowFactorLanes(maps, light, shadows, halfOf(P, h), halfOf(N, h), halfOf(L, h), halfOf(active, h)) : Float4(1.0f);
+  return joined(S[0], S[1]);
+}
+inline Vec3x8 environmentLanes(const EnvironmentMap& map, const Vec3x8& R) {
+  return joined(environmentLanes(map, halfOf(R, 0)), environmentLanes(map, halfOf(R, 1)));
 }
 #endif
 

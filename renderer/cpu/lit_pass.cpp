@@ -61,7 +61,7 @@ LaneMaterial<float> vertexMaterial(const CourseMaterial& material, const Mesh& m
 // place, or Phong's and pbr's bent, normalized and two-sided normal).
 template <ShadingMode kMode>
 void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, WorkerBins::TileScratch& scratch, const std::uint32_t* ids,
-               const TileRect& r, const TileRect& box, ColorBuffer& color, bool normals) {
+               const TileRect& r, const TileRect& box, ColorBuffer& color, bool normals, int lanes) {
   const int tx0 = box.x0, ty0 = box.y0, tx1 = box.x1, ty1 = box.y1;
   constexpr VaryingLayout layout = varyingLayout(kMode);
   std::uint32_t current = kNoTriangle;
@@ -78,7 +78,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
   const bool foggy = frame.fog.mode != FogMode::None;  // fog reads 1/w, set up with the varyings
   bool back = false;
   const Illumination* flat = nullptr;
-  PhongBatch batch(frame, maps, color.data());  // Phong: four pixels' illumination at a time
+  PhongBatch batch(frame, maps, color.data(), lanes);  // Phong: four or eight pixels' illumination at a time
   for (int py = ty0; py <= ty1; ++py)
     for (int px = tx0; px <= tx1; ++px) {
       const std::uint32_t id = ids[(py - r.y0) * kTileSize + (px - r.x0)];
@@ -100,6 +100,9 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         bumpable = layout.tangent >= 0 && frame.bump.map && !mesh.tangents.empty();
         colored = !mesh.colors.empty();
         used = procedural ? layout.count : colored ? layout.model : (kMode == ShadingMode::Flat && !texture && !emissiveMap ? 0 : layout.color);
+        // Phong reads P and N, the texture coordinates only with a texture, the tangent only with a normal map or a bump map.
+        if constexpr (kMode == ShadingMode::Phong)
+          if (used == layout.color && !normalMap && !bumpable) used = texture || emissiveMap ? layout.tangent : layout.uv;
         back = !t.snapped.frontFacing;
         if (used || foggy) in->setUpVaryings(used);
         if constexpr (kMode == ShadingMode::Flat) flat = &bins.flat[2 * index];
@@ -131,9 +134,12 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         glm::vec3 n(0.0f);
         if constexpr (kMode == ShadingMode::Pbr || kMode == ShadingMode::Phong) {
           n = {v[3], v[4], v[5]};
-          const glm::vec4 tangent{v[layout.tangent], v[layout.tangent + 1], v[layout.tangent + 2], v[layout.tangent + 3]};
-          if (normalMap) n = normalMapped(*normalMap, *material, normalize3(n), tangent, stAt(material->normalMap.set), derivativesAt(material->normalMap.set));
-          if (bumpable) n = bumped(*frame.bump.map, frame.bump.scale, normalize3(n), tangent, stAt(0));
+          if (normalMap || bumpable) {  // the tangent is set up only then
+            const glm::vec4 tangent{v[layout.tangent], v[layout.tangent + 1], v[layout.tangent + 2], v[layout.tangent + 3]};
+            if (normalMap)
+              n = normalMapped(*normalMap, *material, normalize3(n), tangent, stAt(material->normalMap.set), derivativesAt(material->normalMap.set));
+            if (bumpable) n = bumped(*frame.bump.map, frame.bump.scale, normalize3(n), tangent, stAt(0));
+          }
         }
         return n;
       };
@@ -225,12 +231,12 @@ void gatherVisible(const std::vector<WorkerBins>& workers, const PolygonNumberin
 
 // Shading in the frame's mode.
 void shadeIn(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, WorkerBins::TileScratch& scratch, const std::uint32_t* ids,
-             const TileRect& r, const TileRect& box, ColorBuffer& color, bool normals = false) {
+             const TileRect& r, const TileRect& box, ColorBuffer& color, int lanes, bool normals = false) {
   switch (frame.shading) {
-    case ShadingMode::Pbr: shadeTile<ShadingMode::Pbr>(scene, frame, maps, scratch, ids, r, box, color, normals); break;
-    case ShadingMode::Phong: shadeTile<ShadingMode::Phong>(scene, frame, maps, scratch, ids, r, box, color, normals); break;
-    case ShadingMode::Gouraud: shadeTile<ShadingMode::Gouraud>(scene, frame, maps, scratch, ids, r, box, color, normals); break;
-    default: shadeTile<ShadingMode::Flat>(scene, frame, maps, scratch, ids, r, box, color, normals); break;
+    case ShadingMode::Pbr: shadeTile<ShadingMode::Pbr>(scene, frame, maps, scratch, ids, r, box, color, normals, lanes); break;
+    case ShadingMode::Phong: shadeTile<ShadingMode::Phong>(scene, frame, maps, scratch, ids, r, box, color, normals, lanes); break;
+    case ShadingMode::Gouraud: shadeTile<ShadingMode::Gouraud>(scene, frame, maps, scratch, ids, r, box, color, normals, lanes); break;
+    default: shadeTile<ShadingMode::Flat>(scene, frame, maps, scratch, ids, r, box, color, normals, lanes); break;
   }
 }
 
@@ -239,7 +245,7 @@ void shadeIn(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
 // depth test (no depth write) get their α, are shaded as a visible fragment
 // is (into `fragments`), and blend into the colour buffer.
 void blendTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, VaryingLayout layout, WorkerBins::TileScratch& scratch,
-               const TileRect& r, ColorBuffer& fragments, ColorBuffer& color) {
+               const TileRect& r, ColorBuffer& fragments, ColorBuffer& color, int lanes) {
   std::fill(std::begin(scratch.fragment), std::end(scratch.fragment), kNoTriangle);
   for (const WorkerBins::TileScratch::Blended& blended : scratch.blended) {
     WorkerBins::TileTriangle& triangle = scratch.triangles[blended.id];
@@ -275,7 +281,7 @@ void blendTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
           if (first <= last) reach(first, last, py);
         });
     if (drawn.x0 > drawn.x1) continue;
-    shadeIn(scene, frame, maps, scratch, scratch.fragment, r, drawn, fragments);
+    shadeIn(scene, frame, maps, scratch, scratch.fragment, r, drawn, fragments, lanes);
     for (int py = drawn.y0; py <= drawn.y1; ++py)
       for (int px = drawn.x0; px <= drawn.x1; ++px) {
         const int k = (py - r.y0) * kTileSize + (px - r.x0);
@@ -482,9 +488,9 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
         }
       return;
     }
-    shadeIn(scene, frame, maps, scratch, scratch.id, r, r, color, normals);
+    shadeIn(scene, frame, maps, scratch, scratch.id, r, r, color, buffers.lanes, normals);
     drawLines(frame, buffers.lines, r, painter ? nullptr : scratch.depth, kTileSize, color);  // the painter has no depth to test
-    if (!scratch.blended.empty() && !normals) blendTile(scene, frame, maps, layout, scratch, r, buffers.fragments, color);
+    if (!scratch.blended.empty() && !normals) blendTile(scene, frame, maps, layout, scratch, r, buffers.fragments, color, buffers.lanes);
     if (keepDepth)
       for (int py = r.y0; py <= r.y1; ++py)
         std::copy_n(scratch.depth + (py - r.y0) * kTileSize, r.x1 - r.x0 + 1,

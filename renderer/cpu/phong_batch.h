@@ -1,14 +1,17 @@
 #pragma once
-// Phong shading's per-pixel illumination four pixels at a time: the lanes of
-// lighting.h's illuminate<Float4>, shade and viewVector, the same code as one
+// Phong shading's per-pixel illumination four or eight pixels at a time: the
+// lanes of lighting.h's illuminate<Float4> (SSE2) or illuminate<Float8>
+// (AVX2, where the CPU has it), shade and viewVector, the same code as one
 // pixel's illuminate<float> (lanes.h: every operation the same IEEE
 // operation per lane), so the result is bit-identical to shading each pixel
-// alone; tests/cpu/test_fast_paths.cpp holds the two against each other.
-// Pixels of different triangles and materials share a batch. Without SSE2
-// the batch shades its pixels one by one.
+// alone whatever the width; tests/cpu/test_fast_paths.cpp holds both widths
+// against it. Pixels of different triangles and materials share a batch.
+// Without SSE2 the batch shades its pixels one by one.
 #include <cstdint>
 
+#include "cpu/lane_width.h"
 #include "cpu/lighting.h"
+#include "cpu/phong_lanes.h"
 #include "image/color_buffer.h"
 
 #if defined(__SSE2__)
@@ -17,38 +20,42 @@
 
 namespace facet::cpu {
 
+#if defined(FACET_AVX2_LANES)
+// shadeLanes<Float8> (phong_lanes.h); call only where widestLanes() is 8 (phong_batch_avx2.cpp, built for AVX2).
+void shadeEightLanes(const FrameInputs& frame, const ShadowMaps& maps, const PhongLanes& in, float (&rgb)[3][PhongLanes::kMost]);
+#endif
+
 class PhongBatch {
  public:
-  static constexpr int kLanes = 4;  // add4 and flush assume four
-
-  PhongBatch(const FrameInputs& frame, const ShadowMaps& maps, glm::vec4* pixels)
-      : frame_(frame), maps_(maps), pixels_(pixels) {}
+  // lanes: 8, 4 or 1, at most widestLanes().
+  PhongBatch(const FrameInputs& frame, const ShadowMaps& maps, glm::vec4* pixels, int lanes);
 
   // Queues the pixel at pixels[offset]: world position P, the interpolated
   // normal (normalized here, and negated for a back face, as the scalar path
   // does), O_d, the material and the pixel's k_e (the material's, or k_e·E
-  // with an emissive texture) and its eye depth d (fog); shades when four are queued.
+  // with an emissive texture) and its eye depth d (fog); shades when the batch is full.
   void add(std::size_t offset, glm::vec3 P, glm::vec3 interpolatedNormal, bool back, glm::vec3 baseColor, const CourseMaterial& material,
            glm::vec3 emissive, float depth) {
     const int k = count_++;
     offset_[k] = offset;
-    D_[k] = depth;
+    in_.D[k] = depth;
     for (int c = 0; c < 3; ++c) {
-      P_[c][k] = P[c];
-      N_[c][k] = interpolatedNormal[c];
-      O_[c][k] = baseColor[c];
-      E_[c][k] = emissive[c];
+      in_.P[c][k] = P[c];
+      in_.N[c][k] = interpolatedNormal[c];
+      in_.O[c][k] = baseColor[c];
+      in_.E[c][k] = emissive[c];
     }
-    back_[k] = back ? 1.0f : 0.0f;  // a back face: N is negated
+    in_.back[k] = back ? 1.0f : 0.0f;  // a back face: N is negated
     material_[k] = &material;
-    if (count_ == kLanes) flush();
+    if (count_ == lanes_) flush();
   }
 
 #if defined(__SSE2__)
   // add() for the four pixels pixels[offset .. offset+3] of one triangle, as lanes; frames without fog only.
   void add4(std::size_t offset, const __m128 (&P)[3], const __m128 (&interpolatedNormal)[3], bool back, glm::vec3 baseColor,
             const CourseMaterial& material) {
-    if (count_ != 0) {
+    const int at = count_;
+    if (at % 4 != 0 || lanes_ < 4) {  // not on a four-lane column: one pixel at a time
       alignas(16) float p[3][4], n[3][4];
       for (int c = 0; c < 3; ++c) _mm_store_ps(p[c], P[c]), _mm_store_ps(n[c], interpolatedNormal[c]);
       for (int k = 0; k < 4; ++k)
@@ -56,15 +63,16 @@ class PhongBatch {
             0.0f);
       return;
     }
-    for (int k = 0; k < 4; ++k) offset_[k] = offset + static_cast<std::size_t>(k), material_[k] = &material, back_[k] = back ? 1.0f : 0.0f;
+    for (int k = 0; k < 4; ++k)
+      offset_[at + k] = offset + static_cast<std::size_t>(k), material_[at + k] = &material, in_.back[at + k] = back ? 1.0f : 0.0f;
     for (int c = 0; c < 3; ++c) {
-      _mm_store_ps(P_[c], P[c]);
-      _mm_store_ps(N_[c], interpolatedNormal[c]);
-      _mm_store_ps(O_[c], _mm_set1_ps(baseColor[c]));
-      _mm_store_ps(E_[c], _mm_set1_ps(material.emissive[c]));
+      _mm_store_ps(in_.P[c] + at, P[c]);
+      _mm_store_ps(in_.N[c] + at, interpolatedNormal[c]);
+      _mm_store_ps(in_.O[c] + at, _mm_set1_ps(baseColor[c]));
+      _mm_store_ps(in_.E[c] + at, _mm_set1_ps(material.emissive[c]));
     }
-    count_ = 4;
-    flush();
+    count_ += 4;
+    if (count_ == lanes_) flush();
   }
 #endif
 
@@ -75,11 +83,11 @@ class PhongBatch {
   const FrameInputs& frame_;
   const ShadowMaps& maps_;
   glm::vec4* pixels_;  // the colour buffer, linear RGBA
+  int lanes_;
   int count_ = 0;
-  std::size_t offset_[kLanes];
-  const CourseMaterial* material_[kLanes];
-  alignas(16) float P_[3][kLanes], N_[3][kLanes], O_[3][kLanes], E_[3][kLanes], D_[kLanes], back_[kLanes];
-  alignas(16) float ka_[kLanes], kd_[kLanes], ks_[kLanes], n_[kLanes], m_[kLanes];  // filled by flush
+  std::size_t offset_[PhongLanes::kMost];
+  const CourseMaterial* material_[PhongLanes::kMost];
+  PhongLanes in_;
 };
 
 }  // namespace facet::cpu

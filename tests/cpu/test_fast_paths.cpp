@@ -12,11 +12,14 @@
 #include <random>
 #include <set>
 #include <deque>
+#include <vector>
 
 #include <doctest/doctest.h>
 
+#include "common/error.h"
 #include "cpu/cpu_renderer.h"
 #include "cpu/depth_rows.h"
+#include "cpu/lane_width.h"
 #include "cpu/lighting.h"
 #include "cpu/phong_batch.h"
 #include "cpu/resolve.h"
@@ -102,18 +105,22 @@ TEST_CASE("Resolve: the CPU's four-channel resolve gives encodePixel's bytes for
     if (i % 7 == 0) c[i % 4] = specials[static_cast<std::size_t>(i / 7) % std::size(specials)];
   }
   cpu::ThreadPool pool(3);
-  Image image;
-  cpu::resolve(pool, buffer, Blending::Straight, 1, image);
-  REQUIRE(image.width() == kWidth);
-  REQUIRE(image.height() == kHeight);
-  int differing = 0;
-  std::set<int> alphas;
-  for (int i = 0; i < kWidth * kHeight; ++i) {
-    differing += image.data()[i] == encodePixel(buffer.data()[i]) ? 0 : 1;
-    alphas.insert(image.data()[i].a);
+  for (int lanes : {1, 4, 8}) {
+    if (lanes > cpu::widestLanes()) continue;
+    CAPTURE(lanes);
+    Image image;
+    cpu::resolve(pool, buffer, Blending::Straight, 1, lanes, image);
+    REQUIRE(image.width() == kWidth);
+    REQUIRE(image.height() == kHeight);
+    int differing = 0;
+    std::set<int> alphas;
+    for (int i = 0; i < kWidth * kHeight; ++i) {
+      differing += image.data()[i] == encodePixel(buffer.data()[i]) ? 0 : 1;
+      alphas.insert(image.data()[i].a);
+    }
+    CHECK(differing == 0);
+    CHECK(alphas.size() > 200);  // alpha is carried, not set to 255
   }
-  CHECK(differing == 0);
-  CHECK(alphas.size() > 200);  // alpha is carried, not set to 255
   // floor(255·a + 0.5) of the clamped alpha, NaN to 0.
   CHECK(alphaLevel(0.0f) == 0);
   CHECK(alphaLevel(1.0f) == 255);
@@ -154,7 +161,11 @@ TEST_CASE("CPU renderer: the image does not depend on the thread count, nor on t
   }
 }
 
-TEST_CASE("Phong batch: four lanes at a time give the bits of illuminate<float>, shade and the sRGB encode, per pixel") {
+TEST_CASE("Phong batch: four and eight lanes at a time give the bits of illuminate<float>, shade and the sRGB encode, per pixel") {
+  INFO("this CPU runs " << cpu::widestLanes() << " lanes");
+  std::vector<int> widths{1, 4};
+  if (cpu::widestLanes() == 8) widths.push_back(8);
+  for (int lanes : widths) {
   const Scene scene = makeDefaultScene();
   std::mt19937 random(12345);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f), coordinate(-3.0f, 3.0f);
@@ -189,7 +200,7 @@ TEST_CASE("Phong batch: four lanes at a time give the bits of illuminate<float>,
       constexpr int kPixels = 4001;  // not a multiple of the four lanes
       ColorBuffer batched(kPixels, 1, glm::vec4(0.0f)), scalar(kPixels, 1, glm::vec4(0.0f));
       std::deque<CourseMaterial> materials;  // each pixel its own material; the batch keeps pointers until it shades
-      cpu::PhongBatch batch(frame, maps, batched.data());
+      cpu::PhongBatch batch(frame, maps, batched.data(), lanes);
       for (int i = 0; i < kPixels; ++i) {
         const glm::vec3 P{coordinate(random), coordinate(random) * 0.3f, coordinate(random)};
         const glm::vec3 N = glm::normalize(glm::vec3(coordinate(random), coordinate(random), coordinate(random)));
@@ -209,6 +220,7 @@ TEST_CASE("Phong batch: four lanes at a time give the bits of illuminate<float>,
       CAPTURE(static_cast<int>(model));
       CAPTURE(perspective);
       CAPTURE(pcfRadius);
+      CAPTURE(lanes);
       int differing = 0;
       for (int i = 0; i < kPixels; ++i) differing += std::memcmp(&batched.at(i, 0), &scalar.at(i, 0), sizeof(glm::vec4)) == 0 ? 0 : 1;  // to the bit
       CHECK(differing == 0);
@@ -217,6 +229,17 @@ TEST_CASE("Phong batch: four lanes at a time give the bits of illuminate<float>,
       for (int i = 0; i < kPixels; ++i) levels.insert(encodeLevel(scalar.at(i, 0).r));
       CHECK(levels.size() > 100);
     }
+  }
+}
+
+TEST_CASE("Phong batch: a width this CPU or build does not run is refused") {
+  const Scene scene = makeDefaultScene();
+  const FrameInputs frame = buildFrameInputs(scene, RenderSettings{});
+  cpu::ShadowMaps maps;
+  ColorBuffer pixels(4, 1, glm::vec4(0.0f));
+  CHECK_THROWS_AS(cpu::PhongBatch(frame, maps, pixels.data(), 2), Error);
+  CHECK_THROWS_AS(cpu::PhongBatch(frame, maps, pixels.data(), 16), Error);
+  if (cpu::widestLanes() < 8) CHECK_THROWS_AS(cpu::PhongBatch(frame, maps, pixels.data(), 8), Error);
 }
 
 TEST_CASE("Depth rows: lessRow's four-lane test writes the depths and ids the one-pixel test writes") {

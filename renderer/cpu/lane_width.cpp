@@ -1,0 +1,25 @@
+#include "cpu/lane_width.h"
+
+#include <string>
+
+#include "common/error.h"
+
+namespace facet::cpu {
+
+int widestLanes() {
+#if defined(FACET_AVX2_LANES)
+  if (__builtin_cpu_supports("avx2")) return 8;  // libgcc also checks that the OS saves the 256-bit registers
+#endif
+#if defined(__SSE2__)
+  return 4;
+#else
+  return 1;
+#endif
+}
+
+void checkLanes(int lanes) {
+  if (lanes != 1 && lanes != 4 && lanes != 8) throw Error("cpu: " + std::to_string(lanes) + " lanes (1, 4 or 8)");
+  if (lanes > widestLanes()) throw Error("cpu: " + std::to_string(lanes) + " lanes, this CPU runs at most " + std::to_string(widestLanes()));
+}
+
+}  // namespace facet::cpu

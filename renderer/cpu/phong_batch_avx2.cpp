@@ -1,0 +1,21 @@
+// The eight-lane Phong batch: the only translation unit built with -mavx2
+// (renderer/cpu/CMakeLists.txt). Nothing here may leave an out-of-line copy
+// of a function other translation units also define: the linker keeps one
+// copy of such a function for the whole program, and an AVX2 copy would run
+// on CPUs without AVX2. So the entry point is flattened (every call in it
+// inlined), and the test cpu.avx2_symbols fails when this object defines any
+// symbol but its own and the eight-lane types' instances.
+#include "cpu/phong_batch.h"
+
+#if !defined(__AVX2__)
+#error "phong_batch_avx2.cpp is built with -mavx2"
+#endif
+
+namespace facet::cpu {
+
+__attribute__((flatten)) void shadeEightLanes(const FrameInputs& frame, const ShadowMaps& maps, const PhongLanes& in,
+                                              float (&rgb)[3][PhongLanes::kMost]) {
+  shadeLanes<Float8>(frame, maps, in, 0, rgb);
+}
+
+}  // namespace facet::cpu

@@ -1,0 +1,37 @@
+#pragma once
+// What a Phong batch (phong_batch.h) shades on its lanes: the queued
+// pixels' inputs, one column per lane, and the shading of F's width of them
+// (Float4 or Float8), the same steps as one pixel's in lit_pass.cpp.
+#include "cpu/fog.h"
+#include "cpu/lighting.h"
+
+namespace facet::cpu {
+
+struct PhongLanes {
+  static constexpr int kMost = 8;
+  alignas(32) float P[3][kMost], N[3][kMost], O[3][kMost], E[3][kMost], D[kMost], back[kMost];
+  alignas(32) float ka[kMost], kd[kMost], ks[kMost], n[kMost], m[kMost];
+};
+
+// Linear RGB of lanes [first, first + width of F) into rgb[c][first..].
+template <class F>
+void shadeLanes(const FrameInputs& frame, const ShadowMaps& maps, const PhongLanes& in, int first, float (&rgb)[3][PhongLanes::kMost]) {
+  using Vec3 = Vec3Of<F>;
+  const auto lanes = [&](const float* column) {
+    F x;
+    loadLanes(x, column + first);
+    return x;
+  };
+  const auto vec3 = [&](const float (&columns)[3][PhongLanes::kMost]) { return Vec3(lanes(columns[0]), lanes(columns[1]), lanes(columns[2])); };
+  const Vec3 P = vec3(in.P);
+  // N = normalize(interpolated N), then -N on a back face (two-sided lighting; back is 0 or 1)
+  const Vec3 unit = normalize3(vec3(in.N));
+  const Vec3 N = select(F(0.0f) < lanes(in.back), -unit, unit);
+  const LaneMaterial<F> material{vec3(in.E), lanes(in.ka), lanes(in.kd), lanes(in.ks), lanes(in.n), lanes(in.m)};
+  const Vec3 color = fogged(frame.fog, shade(illuminate(frame, maps, material, P, N, viewVector<F>(frame, P)), vec3(in.O)), lanes(in.D));
+  storeLanes(rgb[0] + first, color.x);
+  storeLanes(rgb[1] + first, color.y);
+  storeLanes(rgb[2] + first, color.z);
+}
+
+}  // namespace facet::cpu
