@@ -1,0 +1,29 @@
+# One build runs on any x86-64: facet under QEMU's user-mode emulation of a
+# CPU with FMA but no AVX2 (AMD Piledriver, -cpu Opteron_G5) takes four
+# lanes, runs no AVX2 instruction (QEMU would stop it with SIGILL) and
+# writes the same bytes as the native run, at the widest lanes this CPU runs.
+#   cmake -DFACET=... -DQEMU=qemu-x86_64 -DSCENE=... -DOUT=folder -P without_avx2.cmake
+include(${CMAKE_CURRENT_LIST_DIR}/../run_command.cmake)
+if(NOT EXISTS "${QEMU}")
+  message(FATAL_ERROR "qemu-x86_64 not found: Debian's qemu-user runs this test (scripts/install-deps.sh installs it)")
+endif()
+file(MAKE_DIRECTORY ${OUT})
+string(REGEX REPLACE "^.*[/:]" "" name "${SCENE}")
+string(REGEX REPLACE "[.][^.]*$" "" name "${name}")
+set(native ${OUT}/${name}-native.png)
+set(emulated ${OUT}/${name}-without-avx2.png)
+file(REMOVE ${native} ${emulated})
+set(render render ${SCENE} --backend cpu --size 160x120 --threads 2)
+facet_run_command(COMMAND ${FACET} ${render} -o ${native} EXPECT 0)
+set(native_out "${out}")
+facet_run_command(COMMAND ${QEMU} -cpu Opteron_G5 ${FACET} ${render} -o ${emulated} EXPECT 0)
+if(NOT out MATCHES "cpu rasterizer, 2 threads, 4 lanes")
+  message(FATAL_ERROR "without AVX2 the CPU backend should take four lanes:\n${out}")
+endif()
+if(NOT native_out MATCHES "cpu rasterizer, 2 threads, [48] lanes")
+  message(FATAL_ERROR "the native run names no lane width:\n${native_out}")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${native} ${emulated} RESULT_VARIABLE different)
+if(different)
+  message(FATAL_ERROR "without AVX2 the image differs from the native run's (${native}, ${emulated})")
+endif()
