@@ -38,7 +38,9 @@ class Interpolation {
   // The interpolated 1/w at pixel (px, py) (fog's eye depth); after setUpVaryings.
   float oneOverWAt(int px, int py) const { return oneOverW_.at(px, py); }
 
-  // Sets up the planes of 1/w and of varyings [0, count); once, before the calls below.
+  // Sets up the planes of 1/w and of varyings [0, count), before the calls
+  // below; a call for no more varyings than are set up does nothing (a tile
+  // meets a triangle's pixels row after row, in runs between other triangles').
   void setUpVaryings(int count);
 
   // The same planes with each one's value at pixel (0, 0)'s centre moved to
@@ -47,7 +49,7 @@ class Interpolation {
   // cell at its centroid this way, as a sample's pass at that offset would.
   Interpolation movedBy(float dx, float dy) const;
 
-  // The varyings [0, count) at pixel (px, py): plane(a·(1/w)) · (1 / plane(1/w)).
+  // The varyings set up at pixel (px, py): plane(a·(1/w)) · (1 / plane(1/w)).
   void varyingsAt(int px, int py, float* out) const {
     const float w = 1.0f / oneOverW_.at(px, py);
     for (int k = 0; k < count_; ++k) out[k] = varying_[static_cast<std::size_t>(k)].at(px, py) * w;
@@ -79,7 +81,7 @@ class Interpolation {
   InterpolationVertex vertex_[3]{};
   PlaneSetup setup_;
   Plane z_, oneOverW_;
-  int count_ = 0;
+  int count_ = -1;  // varyings set up; -1: not 1/w either
   std::array<Plane, kMaxVaryings> varying_{};
 };
 

@@ -20,7 +20,7 @@ void PhongBatch::flush() {
     const glm::vec3 N = in_.back[0] != 0.0f ? -unit : unit;
     const glm::vec3 O{in_.O[0][0], in_.O[1][0], in_.O[2][0]};
     const glm::vec3 E{in_.E[0][0], in_.E[1][0], in_.E[2][0]};
-    const glm::vec3 lit = shade(illuminate(frame_, maps_, laneMaterial(*material_[0], E), P, N, viewVector<float>(frame_, P)), O);
+    const glm::vec3 lit = shade(illuminate(frame_, maps_, LaneMaterial<float>{E, in_.ka[0], in_.kd[0], in_.ks[0], in_.n[0], in_.m[0]}, P, N, viewVector<float>(frame_, P)), O);
     pixels_[offset_[0]] = opaque(fogged(frame_.fog, lit, in_.D[0]));
     count_ = 0;
     return;
@@ -31,11 +31,7 @@ void PhongBatch::flush() {
     for (int c = 0; c < 3; ++c) in_.P[c][k] = in_.P[c][0], in_.N[c][k] = in_.N[c][0], in_.O[c][k] = in_.O[c][0], in_.E[c][k] = in_.E[c][0];
     in_.back[k] = in_.back[0];
     in_.D[k] = in_.D[0];
-    material_[k] = material_[0];
-  }
-  for (int k = 0; k < shaded; ++k) {
-    const CourseMaterial& m = *material_[k];
-    in_.ka[k] = m.ka, in_.kd[k] = m.kd, in_.ks[k] = m.ks, in_.n[k] = m.shininess, in_.m[k] = m.metallic;
+    in_.ka[k] = in_.ka[0], in_.kd[k] = in_.kd[0], in_.ks[k] = in_.ks[0], in_.n[k] = in_.n[0], in_.m[k] = in_.m[0];
   }
   alignas(32) float rgb[3][PhongLanes::kMost];
 #if defined(FACET_AVX2_LANES)
@@ -45,7 +41,8 @@ void PhongBatch::flush() {
 #if defined(__SSE2__)
     for (int first = 0; first < shaded; first += 4) shadeLanes<Float4>(frame_, maps_, in_, first, rgb);
 #endif
-  for (int k = 0; k < count_; ++k) pixels_[offset_[k]] = {rgb[0][k], rgb[1][k], rgb[2][k], 1.0f};
+  for (int k = 0; k < count_; ++k)
+    if (offset_[k] != kDropped) pixels_[offset_[k]] = {rgb[0][k], rgb[1][k], rgb[2][k], 1.0f};
   count_ = 0;
 }
 

@@ -46,25 +46,32 @@ class PhongBatch {
       in_.E[c][k] = emissive[c];
     }
     in_.back[k] = back ? 1.0f : 0.0f;  // a back face: N is negated
-    material_[k] = &material;
+    in_.ka[k] = material.ka, in_.kd[k] = material.kd, in_.ks[k] = material.ks, in_.n[k] = material.shininess, in_.m[k] = material.metallic;
     if (count_ == lanes_) flush();
   }
 
 #if defined(__SSE2__)
-  // add() for the four pixels pixels[offset .. offset+3] of one triangle, as lanes; frames without fog only.
-  void add4(std::size_t offset, const __m128 (&P)[3], const __m128 (&interpolatedNormal)[3], bool back, glm::vec3 baseColor,
-            const CourseMaterial& material) {
+  // add() for the pixels pixels[offset .. offset+live-1] of one triangle
+  // (live: 1 to 4), as lanes; frames without fog only. Lanes from `live` on
+  // are shaded with the others and not written.
+  __attribute__((always_inline)) void add4(std::size_t offset, int live, const __m128 (&P)[3], const __m128 (&interpolatedNormal)[3], bool back,
+                                           glm::vec3 baseColor, const CourseMaterial& material) {
     const int at = count_;
     if (at % 4 != 0 || lanes_ < 4) {  // not on a four-lane column: one pixel at a time
       alignas(16) float p[3][4], n[3][4];
       for (int c = 0; c < 3; ++c) _mm_store_ps(p[c], P[c]), _mm_store_ps(n[c], interpolatedNormal[c]);
-      for (int k = 0; k < 4; ++k)
+      for (int k = 0; k < live; ++k)
         add(offset + static_cast<std::size_t>(k), {p[0][k], p[1][k], p[2][k]}, {n[0][k], n[1][k], n[2][k]}, back, baseColor, material, material.emissive,
             0.0f);
       return;
     }
-    for (int k = 0; k < 4; ++k)
-      offset_[at + k] = offset + static_cast<std::size_t>(k), material_[at + k] = &material, in_.back[at + k] = back ? 1.0f : 0.0f;
+    for (int k = 0; k < 4; ++k) offset_[at + k] = k < live ? offset + static_cast<std::size_t>(k) : kDropped;
+    _mm_store_ps(in_.back + at, _mm_set1_ps(back ? 1.0f : 0.0f));
+    _mm_store_ps(in_.ka + at, _mm_set1_ps(material.ka));
+    _mm_store_ps(in_.kd + at, _mm_set1_ps(material.kd));
+    _mm_store_ps(in_.ks + at, _mm_set1_ps(material.ks));
+    _mm_store_ps(in_.n + at, _mm_set1_ps(material.shininess));
+    _mm_store_ps(in_.m + at, _mm_set1_ps(material.metallic));
     for (int c = 0; c < 3; ++c) {
       _mm_store_ps(in_.P[c] + at, P[c]);
       _mm_store_ps(in_.N[c] + at, interpolatedNormal[c]);
@@ -83,10 +90,10 @@ class PhongBatch {
   const FrameInputs& frame_;
   const ShadowMaps& maps_;
   glm::vec4* pixels_;  // the colour buffer, linear RGBA
+  static constexpr std::size_t kDropped = ~std::size_t{0};  // a lane whose result is not written
   int lanes_;
   int count_ = 0;
   std::size_t offset_[PhongLanes::kMost];
-  const CourseMaterial* material_[PhongLanes::kMost];
   PhongLanes in_;
 };
 
