@@ -41,8 +41,7 @@ void PhongBatch::flush() {
 #if defined(__SSE2__)
     for (int first = 0; first < shaded; first += 4) shadeLanes<Float4>(frame_, maps_, in_, first, rgb);
 #endif
-  for (int k = 0; k < count_; ++k)
-    if (offset_[k] != kDropped) pixels_[offset_[k]] = {rgb[0][k], rgb[1][k], rgb[2][k], 1.0f};
+  for (int k = 0; k < count_; ++k) pixels_[offset_[k]] = {rgb[0][k], rgb[1][k], rgb[2][k], 1.0f};
   count_ = 0;
 }
 

@@ -51,21 +51,19 @@ class PhongBatch {
   }
 
 #if defined(__SSE2__)
-  // add() for the pixels pixels[offset .. offset+live-1] of one triangle
-  // (live: 1 to 4), as lanes; frames without fog only. Lanes from `live` on
-  // are shaded with the others and not written.
-  __attribute__((always_inline)) void add4(std::size_t offset, int live, const __m128 (&P)[3], const __m128 (&interpolatedNormal)[3], bool back,
+  // add() for the four pixels pixels[offset .. offset+3] of one triangle, as lanes; frames without fog only.
+  __attribute__((always_inline)) void add4(std::size_t offset, const __m128 (&P)[3], const __m128 (&interpolatedNormal)[3], bool back,
                                            glm::vec3 baseColor, const CourseMaterial& material) {
     const int at = count_;
     if (at % 4 != 0 || lanes_ < 4) {  // not on a four-lane column: one pixel at a time
       alignas(16) float p[3][4], n[3][4];
       for (int c = 0; c < 3; ++c) _mm_store_ps(p[c], P[c]), _mm_store_ps(n[c], interpolatedNormal[c]);
-      for (int k = 0; k < live; ++k)
+      for (int k = 0; k < 4; ++k)
         add(offset + static_cast<std::size_t>(k), {p[0][k], p[1][k], p[2][k]}, {n[0][k], n[1][k], n[2][k]}, back, baseColor, material, material.emissive,
             0.0f);
       return;
     }
-    for (int k = 0; k < 4; ++k) offset_[at + k] = k < live ? offset + static_cast<std::size_t>(k) : kDropped;
+    for (int k = 0; k < 4; ++k) offset_[at + k] = offset + static_cast<std::size_t>(k);
     _mm_store_ps(in_.back + at, _mm_set1_ps(back ? 1.0f : 0.0f));
     _mm_store_ps(in_.ka + at, _mm_set1_ps(material.ka));
     _mm_store_ps(in_.kd + at, _mm_set1_ps(material.kd));
@@ -90,7 +88,6 @@ class PhongBatch {
   const FrameInputs& frame_;
   const ShadowMaps& maps_;
   glm::vec4* pixels_;  // the colour buffer, linear RGBA
-  static constexpr std::size_t kDropped = ~std::size_t{0};  // a lane whose result is not written
   int lanes_;
   int count_ = 0;
   std::size_t offset_[PhongLanes::kMost];
