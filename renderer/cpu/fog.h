@@ -1,6 +1,6 @@
 #pragma once
 // The course's fog (renderer/PIPELINE.md, section 7, "Fog"), for one pixel
-// or four lanes: C = C_fog + f·(C - C_fog) by the eye-space depth d.
+// or four or eight lanes: C = C_fog + f·(C - C_fog) by the eye-space depth d.
 // Mirror: shaders/fog.glsl, the same operations in the same order.
 #include "cpu/shading_math.h"
 #include "pipeline/frame_inputs.h"

@@ -1,7 +1,8 @@
 #pragma once
 // encodePixel (image/srgb.h) of one linear RGBA pixel: the clamp, the three
 // buckets and the alpha level four lanes at a time where SSE2 is there, then
-// the same look-ups; the tables are passed in so a loop looks them up once.
+// the same look-ups (resolve_avx2.cpp: two pixels to a register, with
+// gathers); the tables are passed in so a loop looks them up once.
 #include <cstddef>
 #include <cstdint>
 
