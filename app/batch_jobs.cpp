@@ -36,13 +36,12 @@ double thresholdOf(const json& value, std::string_view key) {
   return value.get<double>();
 }
 
-// A path from the job file, taken from the job file's folder when relative.
-std::string resolved(const std::string& path, const std::string& folder) {
+}  // namespace
+
+std::string resolvedPath(const std::string& path, const std::string& folder) {
   if (path.rfind("builtin:", 0) == 0 || std::filesystem::path(path).is_absolute() || folder.empty() || folder == ".") return path;
   return (std::filesystem::path(folder) / path).lexically_normal().string();
 }
-
-}  // namespace
 
 BatchJob parseJob(std::string_view text, const std::string& folder) {
   json object;
@@ -53,10 +52,11 @@ BatchJob parseJob(std::string_view text, const std::string& folder) {
   }
   if (!object.is_object()) throw Error("expected a JSON object, got " + describeJson(object));
   BatchJob job;
+  job.folder = folder;
   bool haveOutput = false, haveExpected = false, haveThreshold = false;
   for (const auto& [key, value] : object.items()) {
     if (key == "scene") {
-      job.scene = resolved(stringOf(value, key), folder);
+      job.scene = resolvedPath(stringOf(value, key), folder);
     } else if (key == "set") {
       if (!value.is_array()) throw Error(keyName(key) + ": expected an array of \"key=value\" strings, got " + describeJson(value));
       for (const json& item : value) job.assignments.push_back(stringOf(item, key));
@@ -76,10 +76,10 @@ BatchJob parseJob(std::string_view text, const std::string& folder) {
       if (std::find(std::begin(kBatchBackends), std::end(kBatchBackends), job.backend) == std::end(kBatchBackends))
         throw Error(keyName(key) + ": " + quoteInput(job.backend) + ": expected cpu, gl, ray or reference");
     } else if (key == "output") {
-      job.output = resolved(stringOf(value, key), folder);
+      job.output = resolvedPath(stringOf(value, key), folder);
       haveOutput = true;
     } else if (key == "expected") {
-      job.expected = resolved(stringOf(value, key), folder);
+      job.expected = resolvedPath(stringOf(value, key), folder);
       haveExpected = true;
     } else if (key == "fail") {
       job.thresholds.failThreshold = thresholdOf(value, key), haveThreshold = true;

@@ -24,6 +24,7 @@ struct BatchJob {
   std::string backend = "cpu";
   std::string output;                    // resolved against the job file's folder
   std::string expected;                  // "" no comparison
+  std::string folder;                    // the job file's folder: the settings' relative file names are taken from it
   DiffThresholds thresholds;             // facet diff's, when "expected" is given
 };
 
@@ -34,6 +35,9 @@ struct JobLine {
   std::string problem;            // "JOBS.jsonl:LINE: ..." when there is no job
   std::string output;             // the job's output when known (for reports), else ""
 };
+
+// `path` taken from `folder` when relative (a builtin: name or an absolute path as it is).
+std::string resolvedPath(const std::string& path, const std::string& folder);
 
 // A job from one line's text. Relative paths are taken from `folder`.
 // Throws facet::Error with the key and the problem (no file or line).

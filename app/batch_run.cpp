@@ -78,6 +78,29 @@ class SceneCache {
   std::map<std::string, std::shared_future<std::shared_ptr<const LoadedScene>>> scenes_;
 };
 
+// The digest of the files a job's settings name (maps, volume, sprites),
+// read once per list for the whole batch: a thousand jobs over one
+// environment map read it once, not a thousand times.
+class NamedFilesDigests {
+ public:
+  std::string of(const std::vector<std::string>& files) {
+    if (files.empty()) return filesDigest(files, kMaxHashedFileBytes);
+    std::string key;
+    for (const std::string& file : files) key += file + '\n';
+    {
+      const std::lock_guard lock(mutex_);
+      if (const auto found = digests_.find(key); found != digests_.end()) return found->second;
+    }
+    std::string digest = filesDigest(files, kMaxHashedFileBytes);  // outside the lock: other workers go on
+    const std::lock_guard lock(mutex_);
+    return digests_.emplace(key, std::move(digest)).first->second;
+  }
+
+ private:
+  std::mutex mutex_;
+  std::map<std::string, std::string> digests_;
+};
+
 // What one worker thread keeps between jobs.
 struct Worker {
   std::map<std::string, std::unique_ptr<Renderer>> renderers;  // by backend, made on first use
@@ -121,14 +144,15 @@ bool upToDate(const std::string& output, const std::string& hash) {
 }
 
 // One job, start to end; throws facet::Error for what makes it fail.
-void runJob(const BatchJob& job, const BatchOptions& options, SceneCache& scenes, Worker& worker, JobOutcome& outcome) {
+void runJob(const BatchJob& job, const BatchOptions& options, SceneCache& scenes, NamedFilesDigests& digests, Worker& worker, JobOutcome& outcome) {
   // Before any work: a frame nobody can write is not drawn.
   checkOutputFile(job.output, {job.scene, job.expected}, MissingFolders::Created);
   const std::shared_ptr<const LoadedScene> loaded = scenes.get(job.scene);
-  const RenderSettings asked = settingsFor(baseSettings(job), job.assignments, job.size, loaded->scene);
+  RenderSettings asked = settingsFor(baseSettings(job), job.assignments, job.size, loaded->scene);
+  forEachNamedFile(asked, [&](std::string& file) { file = resolvedPath(file, job.folder); });  // as the job's other paths
   const std::string settingsText = settingsToJson(asked).dump();
   // The scene's files, and the maps, volume and sprites the settings name.
-  const std::string files = loaded->hashed + filesDigest(namedFiles(asked), kMaxHashedFileBytes);
+  const std::string files = loaded->hashed + digests.of(namedFiles(asked));
   const std::string hash = inputsHash(files, settingsText, asked.width, asked.height, job.backend, options.version);
   if (options.resume && upToDate(job.output, hash)) {
     outcome.status = JobStatus::Skipped;
@@ -187,6 +211,7 @@ std::vector<JobOutcome> runBatch(const std::vector<JobLine>& jobs, const BatchOp
     }
   }
   SceneCache scenes;
+  NamedFilesDigests digests;
   std::atomic<std::size_t> next{0};
   const auto work = [&]() {
     Worker worker;
@@ -195,7 +220,7 @@ std::vector<JobOutcome> runBatch(const std::vector<JobLine>& jobs, const BatchOp
       JobOutcome& outcome = outcomes[k];
       const auto start = std::chrono::steady_clock::now();
       try {
-        runJob(*jobs[k].job, options, scenes, worker, outcome);
+        runJob(*jobs[k].job, options, scenes, digests, worker, outcome);
       } catch (const Error& e) {
         fail(outcome, e.what());
       } catch (const fs::filesystem_error& e) {

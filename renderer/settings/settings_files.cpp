@@ -8,13 +8,13 @@ namespace facet {
 namespace {
 
 // Walks the field table; the string fields not marked Text are file names.
-struct FileCollector {
-  std::vector<std::string>* files;
+struct FileVisitor {
+  const std::function<void(std::string&)>* visit;
 
   template <class T>
-  void field(const FieldInfo&, const T&) {}
-  void field(const FieldInfo& info, const std::string& value) {
-    if (info.kind != FieldKind::Text && !value.empty()) files->push_back(value);
+  void field(const FieldInfo&, T&) {}
+  void field(const FieldInfo& info, std::string& value) {
+    if (info.kind != FieldKind::Text && !value.empty()) (*visit)(value);
   }
   template <class E, std::size_t N>
   void choice(const FieldInfo&, E, const std::array<std::string_view, N>&) {}
@@ -30,11 +30,15 @@ struct FileCollector {
 
 }  // namespace
 
+void forEachNamedFile(RenderSettings& settings, const std::function<void(std::string&)>& visit) {
+  FileVisitor visitor{&visit};
+  visitSettings(visitor, settings);
+}
+
 std::vector<std::string> namedFiles(const RenderSettings& settings) {
   std::vector<std::string> files;
-  FileCollector collector{&files};
-  RenderSettings copy = settings;  // the visitors take the fields as they would edit them
-  visitSettings(collector, copy);
+  RenderSettings copy = settings;  // the visitor takes the fields as it would edit them
+  forEachNamedFile(copy, [&](std::string& file) { files.push_back(file); });
   return files;
 }
 

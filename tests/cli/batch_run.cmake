@@ -6,6 +6,7 @@
 #    others are written, the exit code is the worst job's (4);
 #  - the JUnit report is well-formed XML (xmllint) with the counts, and a
 #    JUnit consumer (junitparser, -DPYTHON) reads the same counts and results;
+#  - --resume renders again when a file the settings name changes;
 #  - --resume skips every written job, and renders again after a settings
 #    change or a new texture under a glTF (-DASSIMP: the assimp glTF2 models);
 #  - --shard I/N (N = 1, 2, 3, 7) of a 20-job file lists every job exactly once,
@@ -96,6 +97,32 @@ file(COPY_FILE ${DIR}/out/cpu.png ${DIR}/box/CesiumLogoFlat.png)
 facet_run_command(COMMAND ${FACET} batch ${DIR}/box.jsonl --resume EXPECT 0)
 if(NOT out MATCHES "1 jobs?: 1 rendered, 0 skipped")
   message(FATAL_ERROR "--resume skipped a job whose texture changed${report}")
+endif()
+
+# The settings' file names (here a volume) are taken from the job file's
+# folder too, and --resume sees their bytes, read once for the two jobs
+# that share one: a change to it renders both again.
+function(write_volume first)
+  set(values "")
+  foreach(k RANGE 63)
+    math(EXPR v "(${k} * 4 + ${first}) % 256")
+    string(APPEND values "${v} ")
+  endforeach()
+  file(WRITE ${DIR}/named/v.nrrd "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 4 4 4\nencoding: ascii\n\n${values}\n")
+endfunction()
+write_volume(0)
+file(WRITE ${DIR}/named.jsonl
+  "{\"scene\":\"builtin:cube\",\"set\":[\"volume.file=named/v.nrrd\"],\"size\":\"24x24\",\"backend\":\"cpu\",\"output\":\"out/named-1.png\"}\n"
+  "{\"scene\":\"builtin:cube\",\"set\":[\"volume.file=named/v.nrrd\"],\"size\":\"24x24\",\"backend\":\"cpu\",\"output\":\"out/named-2.png\"}\n")
+facet_run_command(COMMAND ${FACET} batch ${DIR}/named.jsonl --resume EXPECT 0)
+facet_run_command(COMMAND ${FACET} batch ${DIR}/named.jsonl --resume EXPECT 0)
+if(NOT out MATCHES "2 jobs: 0 rendered, 2 skipped")
+  message(FATAL_ERROR "--resume did not skip the unchanged volume jobs${report}")
+endif()
+write_volume(1)
+facet_run_command(COMMAND ${FACET} batch ${DIR}/named.jsonl --resume EXPECT 0)
+if(NOT out MATCHES "2 jobs: 2 rendered, 0 skipped")
+  message(FATAL_ERROR "--resume skipped jobs whose volume changed${report}")
 endif()
 
 # Shards of a 20-job file (with comments and an empty line between).
