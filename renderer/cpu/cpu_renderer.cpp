@@ -87,8 +87,8 @@ class CpuRenderer final : public Renderer {
       result.notes.push_back(line);
     }
     const auto resolveStart = std::chrono::steady_clock::now();
-    if (frame.samples.empty()) cpu::resolve(pool_, color_, frame.blending, 1, buffers_.lanes, result.image);
-    else cpu::resolve(pool_, sum_, Blending::Premultiplied, static_cast<int>(frame.samples.size()), buffers_.lanes, result.image);
+    if (frame.samples.empty()) cpu::resolve(pool_, color_, frame.blending, 1, result.image);
+    else cpu::resolve(pool_, sum_, Blending::Premultiplied, static_cast<int>(frame.samples.size()), result.image);
     result.timings.push_back({"resolve", millisecondsSince(resolveStart)});
     if (frame.hsr == HiddenSurface::Scanline) {
       const auto frameDepth = static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height) * sizeof(float);

@@ -126,7 +126,7 @@ struct FrameBuffers {
   ColorBuffer fragments;
   // Volume ray casting: each pixel's window z after the opaque surfaces and lines, where its rays stop.
   std::vector<float> depth;
-  // Pixels Phong's lighting and the resolve take at a time: 8, 4 or 1 (lane_width.h).
+  // Pixels Phong's lighting takes at a time: 8, 4 or 1 (lane_width.h).
   int lanes = 1;
 };
 

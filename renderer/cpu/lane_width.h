@@ -1,5 +1,5 @@
 #pragma once
-// How many pixels the CPU backend's per-pixel loops take at a time: 8 where
+// How many pixels the CPU backend's Phong lighting takes at a time: 8 where
 // the CPU has AVX2 (and facet was built with its eight-lane code: x86-64),
 // else 4 with SSE2, else 1. Each width gives the same bits (lanes.h); the
 // eight-lane code lives in the translation units built for AVX2

@@ -1,15 +1,13 @@
 #include "cpu/resolve.h"
 
 #include "cpu/blending.h"
-#include "cpu/lane_width.h"
 #include "cpu/passes.h"
 #include "cpu/srgb_table.h"
 #include "image/srgb.h"
 
 namespace facet::cpu {
 
-void resolve(ThreadPool& pool, const ColorBuffer& buffer, Blending holding, int samples, int lanes, Image& image) {
-  checkLanes(lanes);
+void resolve(ThreadPool& pool, const ColorBuffer& buffer, Blending holding, int samples, Image& image) {
   image = Image(buffer.width(), buffer.height());
   const auto width = static_cast<std::size_t>(buffer.width());
   const auto count = static_cast<float>(samples);
@@ -19,12 +17,6 @@ void resolve(ThreadPool& pool, const ColorBuffer& buffer, Blending holding, int 
     const glm::vec4* in = buffer.data();
     Rgba8* out = image.data();
     if (plain) {
-#if defined(FACET_AVX2_LANES)
-      if (lanes == 8) {
-        encodePixelsEightLanes(tables, &in[begin * width].r, out + begin * width, (end - begin) * width);
-        return;
-      }
-#endif
       for (std::size_t i = begin * width; i < end * width; ++i) out[i] = encodePixel4(tables, &in[i].r);
       return;
     }

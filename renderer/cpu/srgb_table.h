@@ -1,9 +1,7 @@
 #pragma once
 // encodePixel (image/srgb.h) of one linear RGBA pixel: the clamp, the three
 // buckets and the alpha level four lanes at a time where SSE2 is there, then
-// the same look-ups (resolve_avx2.cpp: two pixels to a register, with
-// gathers); the tables are passed in so a loop looks them up once.
-#include <cstddef>
+// the same look-ups; the tables are passed in so a loop looks them up once.
 #include <cstdint>
 
 #include "image/image.h"
@@ -38,12 +36,5 @@ inline Rgba8 encodePixel4(const SrgbTables& t, const float* rgba) {
   return encodePixel(glm::vec4(rgba[0], rgba[1], rgba[2], rgba[3]));
 #endif
 }
-
-#if defined(FACET_AVX2_LANES)
-// encodePixel4 of `count` pixels (rgba: 4·count floats) into out, eight
-// lanes (two pixels) at a time; call only where widestLanes() is 8
-// (resolve_avx2.cpp, built for AVX2).
-void encodePixelsEightLanes(const SrgbTables& t, const float* rgba, Rgba8* out, std::size_t count);
-#endif
 
 }  // namespace facet::cpu

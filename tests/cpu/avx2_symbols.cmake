@@ -6,7 +6,7 @@
 # series' constants) is the same bytes whichever copy is kept.
 #   cmake -DNM=nm "-DOBJECTS=a.o;b.o" -P avx2_symbols.cmake
 cmake_policy(SET CMP0057 NEW)  # if(... IN_LIST ...)
-set(entries "shadeEightLanes;encodePixelsEightLanes")
+set(entries "shadeEightLanes")
 set(found "")
 foreach(object IN LISTS OBJECTS)
   execute_process(COMMAND ${NM} -C --defined-only --extern-only -f sysv ${object} RESULT_VARIABLE rc OUTPUT_VARIABLE symbols ERROR_VARIABLE err)
