@@ -1,6 +1,5 @@
 #include "cpu/phong_batch.h"
 
-#include <algorithm>
 #include <cmath>
 
 #include "cpu/blending.h"
@@ -20,7 +19,8 @@ void PhongBatch::flush() {
     const glm::vec3 N = in_.back[0] != 0.0f ? -unit : unit;
     const glm::vec3 O{in_.O[0][0], in_.O[1][0], in_.O[2][0]};
     const glm::vec3 E{in_.E[0][0], in_.E[1][0], in_.E[2][0]};
-    const glm::vec3 lit = shade(illuminate(frame_, maps_, LaneMaterial<float>{E, in_.ka[0], in_.kd[0], in_.ks[0], in_.n[0], in_.m[0]}, P, N, viewVector<float>(frame_, P)), O);
+    const LaneMaterial<float> material{E, in_.ka[0], in_.kd[0], in_.ks[0], in_.n[0], in_.m[0]};
+    const glm::vec3 lit = shade(illuminate(frame_, maps_, material, P, N, viewVector<float>(frame_, P)), O);
     pixels_[offset_[0]] = opaque(fogged(frame_.fog, lit, in_.D[0]));
     count_ = 0;
     return;

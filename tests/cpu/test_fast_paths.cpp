@@ -105,20 +105,18 @@ TEST_CASE("Resolve: the CPU's four-channel resolve gives encodePixel's bytes for
     if (i % 7 == 0) c[i % 4] = specials[static_cast<std::size_t>(i / 7) % std::size(specials)];
   }
   cpu::ThreadPool pool(3);
-  {
-    Image image;
-    cpu::resolve(pool, buffer, Blending::Straight, 1, image);
-    REQUIRE(image.width() == kWidth);
-    REQUIRE(image.height() == kHeight);
-    int differing = 0;
-    std::set<int> alphas;
-    for (int i = 0; i < kWidth * kHeight; ++i) {
-      differing += image.data()[i] == encodePixel(buffer.data()[i]) ? 0 : 1;
-      alphas.insert(image.data()[i].a);
-    }
-    CHECK(differing == 0);
-    CHECK(alphas.size() > 200);  // alpha is carried, not set to 255
+  Image image;
+  cpu::resolve(pool, buffer, Blending::Straight, 1, image);
+  REQUIRE(image.width() == kWidth);
+  REQUIRE(image.height() == kHeight);
+  int differing = 0;
+  std::set<int> alphas;
+  for (int i = 0; i < kWidth * kHeight; ++i) {
+    differing += image.data()[i] == encodePixel(buffer.data()[i]) ? 0 : 1;
+    alphas.insert(image.data()[i].a);
   }
+  CHECK(differing == 0);
+  CHECK(alphas.size() > 200);  // alpha is carried, not set to 255
   // floor(255·a + 0.5) of the clamped alpha, NaN to 0.
   CHECK(alphaLevel(0.0f) == 0);
   CHECK(alphaLevel(1.0f) == 255);
@@ -164,69 +162,69 @@ TEST_CASE("Phong batch: four and eight lanes at a time give the bits of illumina
   std::vector<int> widths{1, 4};
   if (cpu::widestLanes() == 8) widths.push_back(8);
   for (int lanes : widths) {
-  const Scene scene = makeDefaultScene();
-  std::mt19937 random(12345);
-  std::uniform_real_distribution<float> unit(0.0f, 1.0f), coordinate(-3.0f, 3.0f);
-  // PCF radius 0, 1 (one four-texel load a row) and 2 (two): the shadow lookups' row loads and their per-texel fallback.
-  for (int pcfRadius : {1, 0, 2})
-  for (SpecularModel model : {SpecularModel::BlinnPhong, SpecularModel::Phong})
-    for (bool perspective : {true, false}) {
-      if (pcfRadius != 1 && (model != SpecularModel::BlinnPhong || !perspective)) continue;
-      RenderSettings s;
-      s.shadows.pcfRadius = pcfRadius;
-      s.specular = model;
-      s.camera.projection = perspective ? ProjectionKind::Perspective : ProjectionKind::Parallel;
-      s.shadows.mapSize = 64;
-      s.lightSource = Source::Manual;
-      s.lights.clear();
-      for (LightKind kind : {LightKind::Point, LightKind::Spot, LightKind::Directional, LightKind::Point}) {
-        Light light;
-        light.kind = kind;
-        light.position = {coordinate(random), 4.0f + unit(random), coordinate(random)};
-        light.direction = glm::normalize(glm::vec3(coordinate(random), -4.0f, coordinate(random)));
-        light.attenuation = {1.0f, 0.1f * unit(random), 0.02f * unit(random)};
-        light.spotCutoffDeg = 35.0f;
-        light.castsShadow = s.lights.size() != 3;  // the last light has no map
-        s.lights.push_back(light);
-      }
-      const FrameInputs frame = buildFrameInputs(scene, s);
-      REQUIRE(frame.shadowLayerCount > 0);
-      cpu::ShadowMaps maps;
-      maps.reset(frame.shadows.mapSize, frame.shadowLayerCount);
-      for (float& d : maps.depth) d = unit(random);  // some texels nearer than the points, some farther
+    const Scene scene = makeDefaultScene();
+    std::mt19937 random(12345);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f), coordinate(-3.0f, 3.0f);
+    // PCF radius 0, 1 (one four-texel load a row) and 2 (two): the shadow lookups' row loads and their per-texel fallback.
+    for (int pcfRadius : {1, 0, 2})
+    for (SpecularModel model : {SpecularModel::BlinnPhong, SpecularModel::Phong})
+      for (bool perspective : {true, false}) {
+        if (pcfRadius != 1 && (model != SpecularModel::BlinnPhong || !perspective)) continue;
+        RenderSettings s;
+        s.shadows.pcfRadius = pcfRadius;
+        s.specular = model;
+        s.camera.projection = perspective ? ProjectionKind::Perspective : ProjectionKind::Parallel;
+        s.shadows.mapSize = 64;
+        s.lightSource = Source::Manual;
+        s.lights.clear();
+        for (LightKind kind : {LightKind::Point, LightKind::Spot, LightKind::Directional, LightKind::Point}) {
+          Light light;
+          light.kind = kind;
+          light.position = {coordinate(random), 4.0f + unit(random), coordinate(random)};
+          light.direction = glm::normalize(glm::vec3(coordinate(random), -4.0f, coordinate(random)));
+          light.attenuation = {1.0f, 0.1f * unit(random), 0.02f * unit(random)};
+          light.spotCutoffDeg = 35.0f;
+          light.castsShadow = s.lights.size() != 3;  // the last light has no map
+          s.lights.push_back(light);
+        }
+        const FrameInputs frame = buildFrameInputs(scene, s);
+        REQUIRE(frame.shadowLayerCount > 0);
+        cpu::ShadowMaps maps;
+        maps.reset(frame.shadows.mapSize, frame.shadowLayerCount);
+        for (float& d : maps.depth) d = unit(random);  // some texels nearer than the points, some farther
 
-      constexpr int kPixels = 4001;  // not a multiple of the four lanes
-      ColorBuffer batched(kPixels, 1, glm::vec4(0.0f)), scalar(kPixels, 1, glm::vec4(0.0f));
-      std::deque<CourseMaterial> materials;  // each pixel its own material; the batch keeps pointers until it shades
-      cpu::PhongBatch batch(frame, maps, batched.data(), lanes);
-      for (int i = 0; i < kPixels; ++i) {
-        const glm::vec3 P{coordinate(random), coordinate(random) * 0.3f, coordinate(random)};
-        const glm::vec3 N = glm::normalize(glm::vec3(coordinate(random), coordinate(random), coordinate(random)));
-        const glm::vec3 baseColor{unit(random), unit(random), unit(random)};
-        CourseMaterial material;
-        material.emissive = glm::vec3(0.05f * unit(random));
-        material.ka = unit(random), material.kd = unit(random), material.ks = unit(random);
-        material.shininess = 1.0f + 200.0f * unit(random);
-        const bool back = i % 5 == 0;
-        const glm::vec3 interpolated = N * (0.5f + unit(random));  // not unit length, as interpolated normals are
-        materials.push_back(material);
-        batch.add(static_cast<std::size_t>(i), P, interpolated, back, baseColor, materials.back(), materials.back().emissive, 0.0f);
-        const glm::vec3 lit = back ? -cpu::normalize3(interpolated) : cpu::normalize3(interpolated);
-        scalar.at(i, 0) = glm::vec4(cpu::shade(cpu::illuminate(frame, maps, cpu::laneMaterial(material), P, lit, cpu::viewVector<float>(frame, P)), baseColor), 1.0f);
+        constexpr int kPixels = 4001;  // not a multiple of the four lanes
+        ColorBuffer batched(kPixels, 1, glm::vec4(0.0f)), scalar(kPixels, 1, glm::vec4(0.0f));
+        std::deque<CourseMaterial> materials;  // each pixel its own material
+        cpu::PhongBatch batch(frame, maps, batched.data(), lanes);
+        for (int i = 0; i < kPixels; ++i) {
+          const glm::vec3 P{coordinate(random), coordinate(random) * 0.3f, coordinate(random)};
+          const glm::vec3 N = glm::normalize(glm::vec3(coordinate(random), coordinate(random), coordinate(random)));
+          const glm::vec3 baseColor{unit(random), unit(random), unit(random)};
+          CourseMaterial material;
+          material.emissive = glm::vec3(0.05f * unit(random));
+          material.ka = unit(random), material.kd = unit(random), material.ks = unit(random);
+          material.shininess = 1.0f + 200.0f * unit(random);
+          const bool back = i % 5 == 0;
+          const glm::vec3 interpolated = N * (0.5f + unit(random));  // not unit length, as interpolated normals are
+          materials.push_back(material);
+          batch.add(static_cast<std::size_t>(i), P, interpolated, back, baseColor, materials.back(), materials.back().emissive, 0.0f);
+          const glm::vec3 lit = back ? -cpu::normalize3(interpolated) : cpu::normalize3(interpolated);
+          scalar.at(i, 0) = glm::vec4(cpu::shade(cpu::illuminate(frame, maps, cpu::laneMaterial(material), P, lit, cpu::viewVector<float>(frame, P)), baseColor), 1.0f);
+        }
+        batch.flush();
+        CAPTURE(static_cast<int>(model));
+        CAPTURE(perspective);
+        CAPTURE(pcfRadius);
+        CAPTURE(lanes);
+        int differing = 0;
+        for (int i = 0; i < kPixels; ++i) differing += std::memcmp(&batched.at(i, 0), &scalar.at(i, 0), sizeof(glm::vec4)) == 0 ? 0 : 1;  // to the bit
+        CHECK(differing == 0);
+        // The comparison means something: lit, shadowed and unlit pixels all occur.
+        std::set<int> levels;
+        for (int i = 0; i < kPixels; ++i) levels.insert(encodeLevel(scalar.at(i, 0).r));
+        CHECK(levels.size() > 100);
       }
-      batch.flush();
-      CAPTURE(static_cast<int>(model));
-      CAPTURE(perspective);
-      CAPTURE(pcfRadius);
-      CAPTURE(lanes);
-      int differing = 0;
-      for (int i = 0; i < kPixels; ++i) differing += std::memcmp(&batched.at(i, 0), &scalar.at(i, 0), sizeof(glm::vec4)) == 0 ? 0 : 1;  // to the bit
-      CHECK(differing == 0);
-      // The comparison means something: lit, shadowed and unlit pixels all occur.
-      std::set<int> levels;
-      for (int i = 0; i < kPixels; ++i) levels.insert(encodeLevel(scalar.at(i, 0).r));
-      CHECK(levels.size() > 100);
-    }
   }
 }
 
