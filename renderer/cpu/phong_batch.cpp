@@ -33,15 +33,15 @@ void PhongBatch::flush() {
     in_.D[k] = in_.D[0];
     in_.ka[k] = in_.ka[0], in_.kd[k] = in_.kd[0], in_.ks[k] = in_.ks[0], in_.n[k] = in_.n[0], in_.m[k] = in_.m[0];
   }
-  alignas(32) float rgb[3][PhongLanes::kMost];
+  static_assert(sizeof(glm::vec4) == 4 * sizeof(float));
+  float* const rgba = &pixels_[0].x;  // the colour buffer as floats, four a pixel
 #if defined(FACET_AVX2_LANES)
-  if (shaded == 8) shadeEightLanes(frame_, maps_, in_, rgb);
+  if (shaded == 8) shadeEightLanes(frame_, maps_, in_, rgba, offset_, count_);
   else
 #endif
 #if defined(__SSE2__)
-    for (int first = 0; first < shaded; first += 4) shadeLanes<Float4>(frame_, maps_, in_, first, rgb);
+    for (int first = 0; first < shaded; first += 4) shadeLanes<Float4>(frame_, maps_, in_, first, rgba, offset_, count_);
 #endif
-  for (int k = 0; k < count_; ++k) pixels_[offset_[k]] = {rgb[0][k], rgb[1][k], rgb[2][k], 1.0f};
   count_ = 0;
 }
 

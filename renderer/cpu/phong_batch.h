@@ -22,7 +22,7 @@ namespace facet::cpu {
 
 #if defined(FACET_AVX2_LANES)
 // shadeLanes<Float8> (phong_lanes.h); call only where widestLanes() is 8 (phong_batch_avx2.cpp, built for AVX2).
-void shadeEightLanes(const FrameInputs& frame, const ShadowMaps& maps, const PhongLanes& in, float (&rgb)[3][PhongLanes::kMost]);
+void shadeEightLanes(const FrameInputs& frame, const ShadowMaps& maps, const PhongLanes& in, float* rgba, const std::size_t* offsets, int count);
 #endif
 
 class PhongBatch {

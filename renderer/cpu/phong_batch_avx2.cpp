@@ -13,9 +13,9 @@
 
 namespace facet::cpu {
 
-__attribute__((flatten)) void shadeEightLanes(const FrameInputs& frame, const ShadowMaps& maps, const PhongLanes& in,
-                                              float (&rgb)[3][PhongLanes::kMost]) {
-  shadeLanes<Float8>(frame, maps, in, 0, rgb);
+__attribute__((flatten)) void shadeEightLanes(const FrameInputs& frame, const ShadowMaps& maps, const PhongLanes& in, float* rgba,
+                                              const std::size_t* offsets, int count) {
+  shadeLanes<Float8>(frame, maps, in, 0, rgba, offsets, count);
 }
 
 }  // namespace facet::cpu

@@ -13,9 +13,10 @@ struct PhongLanes {
   alignas(32) float ka[kMost], kd[kMost], ks[kMost], n[kMost], m[kMost];
 };
 
-// Linear RGB of lanes [first, first + width of F) into rgb[c][first..].
+// Lanes [first, first + width of F) shaded; those below count written, opaque, to the RGBA
+// pixels at rgba + 4·offsets[lane].
 template <class F>
-void shadeLanes(const FrameInputs& frame, const ShadowMaps& maps, const PhongLanes& in, int first, float (&rgb)[3][PhongLanes::kMost]) {
+void shadeLanes(const FrameInputs& frame, const ShadowMaps& maps, const PhongLanes& in, int first, float* rgba, const std::size_t* offsets, int count) {
   using Vec3 = Vec3Of<F>;
   const auto lanes = [&](const float* column) {
     F x;
@@ -29,9 +30,7 @@ void shadeLanes(const FrameInputs& frame, const ShadowMaps& maps, const PhongLan
   const Vec3 N = select(F(0.0f) < lanes(in.back), -unit, unit);
   const LaneMaterial<F> material{vec3(in.E), lanes(in.ka), lanes(in.kd), lanes(in.ks), lanes(in.n), lanes(in.m)};
   const Vec3 color = fogged(frame.fog, shade(illuminate(frame, maps, material, P, N, viewVector<F>(frame, P)), vec3(in.O)), lanes(in.D));
-  storeLanes(rgb[0] + first, color.x);
-  storeLanes(rgb[1] + first, color.y);
-  storeLanes(rgb[2] + first, color.z);
+  storeOpaquePixels(rgba, offsets + first, count - first, color);
 }
 
 }  // namespace facet::cpu
