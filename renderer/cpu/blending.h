@@ -6,6 +6,8 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "cpu/lanes.h"
+#include "cpu/shading_math.h"
 #include "image/srgb.h"
 #include "settings/render_settings.h"
 
@@ -31,23 +33,52 @@ inline glm::vec4 premultipliedOf(glm::vec4 held, Blending blending) {
   return blending == Blending::Premultiplied ? held : glm::vec4(glm::vec3(held) * held.a, held.a);
 }
 
+// What the buffer holds at a pixel, for F's lanes: colour and alpha.
+template <class F>
+struct HeldColor {
+  Vec3Of<F> color;
+  F alpha;
+};
+
 // A fragment of linear colour C_f and alpha α (clamped to [0, 1], NaN to 0)
 // over what the buffer holds at its pixel:
 //   straight       t = α_b·(1 − α_f), α_o = α_f + t, C_o = (C_f·α_f + C_b·t) / α_o (0 where α_o = 0)
 //   premultiplied  k = 1 − α_f, C_o = C_f·α_f + C_b·k, α_o = α_f + α_b·k
 // and, additive, what is behind keeps its weight: C_b·α_b in place of C_b·t
 // (straight), C_b in place of C_b·k (premultiplied); α_o as above.
-inline glm::vec4 blend(glm::vec4 held, glm::vec3 fragment, float alpha, Blending blending, bool additive) {
-  const float a = clampUnit(alpha);
-  const glm::vec3 b(held);
+// One pixel (F = float) or four or eight at a time, the same operations per lane.
+template <class F>
+HeldColor<F> blendLanes(const HeldColor<F>& held, const Vec3Of<F>& fragment, F alpha, Blending blending, bool additive) {
+  const F a = select(alpha > F(0.0f), minOne(alpha), F(0.0f));  // clampUnit
+  const Vec3Of<F>& b = held.color;
   if (blending == Blending::Premultiplied) {
-    const float k = 1.0f - a;
-    return glm::vec4(additive ? fragment * a + b : fragment * a + b * k, a + held.a * k);
+    const F k = F(1.0f) - a;
+    return {additive ? fragment * a + b : fragment * a + b * k, a + held.alpha * k};
   }
-  const float t = held.a * (1.0f - a);
-  const float out = a + t;
-  const float behind = additive ? held.a : t;
-  return out > 0.0f ? glm::vec4((fragment * a + b * behind) / out, out) : glm::vec4(0.0f);
+  const F t = held.alpha * (F(1.0f) - a);
+  const F out = a + t;
+  const F behind = additive ? held.alpha : t;
+  const auto some = out > F(0.0f);
+  return {select(some, (fragment * a + b * behind) / out, splat<F>(glm::vec3(0.0f))), select(some, out, F(0.0f))};
 }
+
+inline glm::vec4 blend(glm::vec4 held, glm::vec3 fragment, float alpha, Blending blending, bool additive) {
+  const HeldColor<float> out = blendLanes<float>({glm::vec3(held), held.a}, fragment, alpha, blending, additive);
+  return glm::vec4(out.color, out.alpha);
+}
+
+#if defined(__SSE2__)
+// blend for four neighbouring pixels of a row, four lanes: held and fragments
+// point at four RGBA pixels each (the fragments' alpha unread), alpha at four floats.
+inline void blendFour(float* held, const float* fragments, const float* alpha, Blending blending, bool additive) {
+  HeldColor<Float4> behind;
+  Vec3x4 fragment;
+  Float4 unread;
+  loadPixels(held, behind.color, behind.alpha);
+  loadPixels(fragments, fragment, unread);
+  const HeldColor<Float4> out = blendLanes<Float4>(behind, fragment, Float4(_mm_loadu_ps(alpha)), blending, additive);
+  storePixels(held, out.color, out.alpha);
+}
+#endif
 
 }  // namespace facet::cpu

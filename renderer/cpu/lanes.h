@@ -122,6 +122,18 @@ inline Vec3x4 select(Mask4 mask, const Vec3x4& a, const Vec3x4& b) { return {sel
 // Four lanes from / to four floats aligned to 16 bytes.
 inline void loadLanes(Float4& x, const float* p) { x = Float4(_mm_load_ps(p)); }
 inline void storeLanes(float* p, Float4 x) { _mm_store_ps(p, x.v); }
+// Four neighbouring RGBA pixels as lanes, and back (a transpose in registers).
+inline void loadPixels(const float* rgba, Vec3x4& color, Float4& alpha) {
+  __m128 r = _mm_loadu_ps(rgba), g = _mm_loadu_ps(rgba + 4), b = _mm_loadu_ps(rgba + 8), a = _mm_loadu_ps(rgba + 12);
+  _MM_TRANSPOSE4_PS(r, g, b, a);
+  color = {Float4(r), Float4(g), Float4(b)}, alpha = Float4(a);
+}
+inline void storePixels(float* rgba, const Vec3x4& color, Float4 alpha) {
+  __m128 pixel0 = color.x.v, pixel1 = color.y.v, pixel2 = color.z.v, pixel3 = alpha.v;
+  _MM_TRANSPOSE4_PS(pixel0, pixel1, pixel2, pixel3);
+  _mm_storeu_ps(rgba, pixel0), _mm_storeu_ps(rgba + 4, pixel1), _mm_storeu_ps(rgba + 8, pixel2), _mm_storeu_ps(rgba + 12, pixel3);
+}
+
 // Lanes [0, count) of the colour (r, g, b, 1) to the RGBA pixels at rgba + 4·offsets[k]: a
 // transpose in registers and one 16-byte store a pixel. (Storing the lanes and reading them
 // back a float at a time waits on store forwarding: 7 % of a blended full-screen frame.)

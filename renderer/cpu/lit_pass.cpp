@@ -288,6 +288,15 @@ void blendTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
       for (int px = drawn.x0; px <= drawn.x1; ++px) {
         const int k = (py - r.y0) * kTileSize + (px - r.x0);
         if (scratch.fragment[k] != blended.id) continue;
+#if defined(__SSE2__)
+        const std::uint32_t* taken = &scratch.fragment[k];  // four of the triangle's pixels in a row: blended on four lanes
+        if (px + 3 <= drawn.x1 && taken[1] == blended.id && taken[2] == blended.id && taken[3] == blended.id) {
+          blendFour(&color.at(px, py).x, &fragments.at(px, py).x, &scratch.alpha[k], frame.blending, material.additive);
+          std::fill_n(&scratch.fragment[k], 4, kNoTriangle);
+          px += 3;
+          continue;
+        }
+#endif
         scratch.fragment[k] = kNoTriangle;
         color.at(px, py) = blend(color.at(px, py), glm::vec3(fragments.at(px, py)), scratch.alpha[k], frame.blending, material.additive);
       }

@@ -17,6 +17,7 @@
 #include <doctest/doctest.h>
 
 #include "common/error.h"
+#include "cpu/blending.h"
 #include "cpu/cpu_renderer.h"
 #include "cpu/depth_rows.h"
 #include "cpu/lane_width.h"
@@ -258,3 +259,30 @@ TEST_CASE("Depth rows: lessRow's four-lane test writes the depths and ids the on
     CHECK(std::memcmp(fastIds, plainIds, sizeof fastIds) == 0);
   }
 }
+
+#if defined(__SSE2__)
+TEST_CASE("Blending: blendFour's four lanes give blend's bits per pixel, both equations, additive or not, alpha out of range or NaN") {
+  std::mt19937 random(47);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f), wide(-0.5f, 1.5f);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (const Blending blending : {Blending::Straight, Blending::Premultiplied})
+    for (const bool additive : {false, true})
+      for (int trial = 0; trial < 200; ++trial) {
+        float held[16], fragments[16], alpha[4];
+        for (float& c : held) c = unit(random);
+        for (float& c : fragments) c = wide(random);
+        for (float& a : alpha) a = wide(random);
+        if (trial % 5 == 0) alpha[trial % 4] = nan;
+        if (trial % 7 == 0) held[3 + 4 * (trial % 4)] = 0.0f, alpha[trial % 4] = 0.0f;  // nothing behind, nothing in front: α_o = 0
+        if (trial % 3 == 0) held[3 + 4 * ((trial + 1) % 4)] = 1.0f;
+        float plain[16];
+        for (int k = 0; k < 4; ++k) {
+          const glm::vec4 out = cpu::blend({held[4 * k], held[4 * k + 1], held[4 * k + 2], held[4 * k + 3]},
+                                           {fragments[4 * k], fragments[4 * k + 1], fragments[4 * k + 2]}, alpha[k], blending, additive);
+          std::memcpy(plain + 4 * k, &out, sizeof out);
+        }
+        cpu::blendFour(held, fragments, alpha, blending, additive);
+        CHECK(std::memcmp(held, plain, sizeof plain) == 0);
+      }
+}
+#endif
