@@ -13,6 +13,7 @@
 #include <fstream>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -102,6 +103,14 @@ std::string teemProblem() {
     if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
   if (problem.size() > kMaxTeemMessage) problem = problem.substr(0, kMaxTeemMessage) + "...";
   return problem;
+}
+
+// teem keeps its messages (biff) and its readers' state in process globals, so
+// one NRRD file is read at a time in the process: batch's workers load volumes
+// side by side, and two ASCII reads at once corrupted teem's memory.
+std::mutex& teemLock() {
+  static std::mutex lock;
+  return lock;
 }
 
 // Drops what teem has said so far: biff keeps messages until they are taken,
@@ -255,6 +264,7 @@ Volume readNrrd(const std::string& path) {
 
   // The header, with the data file opened and positioned but not read:
   // the samples are checked and priced first.
+  const std::lock_guard<std::mutex> oneAtATime(teemLock());
   discardTeemMessages();
   TeemNrrd teem;
   if (!teem.nrrd() || !teem.io()) throw Error(shown + ": teem cannot start reading");

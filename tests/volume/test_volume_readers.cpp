@@ -1,6 +1,7 @@
 // Volume data: NRRD and NIfTI-1 files written here, nibabel's MRI, the
 // Marschner-Lobb signal, trilinear interpolation and gradients.
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -11,6 +12,7 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <doctest/doctest.h>
@@ -202,6 +204,35 @@ Volume smallVolume(glm::ivec3 size, glm::vec3 spacing, const std::function<float
 
 // [SECTION] NRRD
 
+// loadVolume of `good` and (every third read) `broken` on 8 threads at once, as
+// batch's workers load volumes: every good read gives `size`, every broken one
+// an error naming `problem`.
+void readOnThreads(const fs::path& good, const fs::path& broken, glm::ivec3 size, const std::string& problem) {
+  constexpr int kThreads = 8, kReads = 40;
+  std::atomic<int> read{0}, refused{0}, expectedRefusals{0};
+  std::vector<std::string> wrong(kThreads);
+  {
+    std::vector<std::jthread> threads;
+    for (int t = 0; t < kThreads; ++t)
+      threads.emplace_back([&, t] {
+        for (int i = 0; i < kReads; ++i) {
+          const bool bad = (t + i) % 3 == 0;
+          expectedRefusals += bad ? 1 : 0;
+          try {
+            const Volume v = loadVolume((bad ? broken : good).string(), 64);
+            if (!bad && v.size == size) ++read;
+          } catch (const Error& e) {
+            if (bad && std::string(e.what()).find(problem) != std::string::npos) ++refused;
+            else wrong[static_cast<std::size_t>(t)] = e.what();
+          }
+        }
+      });
+  }
+  for (const std::string& message : wrong) CHECK_MESSAGE(message.empty(), message);
+  CHECK(refused == expectedRefusals);
+  CHECK(read == kThreads * kReads - expectedRefusals);
+}
+
 TEST_CASE("NRRD reader: uint8, int8, int16, uint16 and float samples with spacings round-trip") {
   const fs::path dir = test::scratchFolder("volume_readers", "nrrd_types");
   const std::string more = "spacings: 0.5 1.25 3\nencoding: raw\nendian: little\n";
@@ -261,6 +292,15 @@ TEST_CASE("NRRD reader: gzip and ascii encodings, a byte skip, no spacing given"
   writeFile(dir / "skip.raw", "JUNKJUNK" + samples);
   writeFile(dir / "skip.nhdr", nrrdHeader("uint16", "2 3 4", "encoding: raw\nendian: little\nbyte skip: 8\ndata file: skip.raw\n"));
   checkRamp(readNrrd((dir / "skip.nhdr").string()));
+}
+
+TEST_CASE("NRRD reader: files read on many threads at once, ascii and broken ones too (teem keeps its state in globals)") {
+  const fs::path dir = test::scratchFolder("volume_readers", "nrrd_threads");
+  std::string text;
+  for (const float value : rampValues<float>(2, 3, 4)) text += std::to_string(value) + "\n";
+  writeFile(dir / "ascii.nrrd", nrrdHeader("float", "2 3 4", "encoding: ascii\n") + "\n" + text);
+  writeFile(dir / "broken.nrrd", nrrdHeader("float", "2 3 x", "encoding: ascii\n") + "\n" + text);
+  readOnThreads(dir / "ascii.nrrd", dir / "broken.nrrd", {2, 3, 4}, "sizes");
 }
 
 TEST_CASE("NRRD reader: broken files are refused with one line naming the file") {
@@ -410,6 +450,14 @@ TEST_CASE("NIfTI reader: int16 with scl_slope and scl_inter, uint8, float32, big
     CHECK(v.size == glm::ivec3(5, 4, 3));
     checkRamp(v, 1);
   }
+}
+
+TEST_CASE("NIfTI reader: files read on many threads at once, broken ones too") {
+  const fs::path dir = test::scratchFolder("volume_readers", "nifti_threads");
+  const std::string samples = samplesOf(rampValues<std::int16_t>(4, 3, 2, -40));
+  writeFile(dir / "good.nii", niftiFile(niftiHeader(4, 3, 2, DT_INT16, 16), samples));
+  writeFile(dir / "short.nii", niftiFile(niftiHeader(4, 3, 2, DT_INT16, 16), samples.substr(0, 10)));
+  readOnThreads(dir / "good.nii", dir / "short.nii", {4, 3, 2}, "short.nii");
 }
 
 TEST_CASE("NIfTI reader: broken files are refused with one line naming the file") {
