@@ -132,6 +132,16 @@ std::vector<JobLine> parseJobFile(std::string_view text, const std::string& path
     }
     lines.push_back(std::move(entry));
   }
+  // A comparison with a file the batch writes would read it before, while or after it is
+  // written, as the jobs' order on the threads falls; this job's own output, after.
+  for (JobLine& entry : lines) {
+    if (!entry.job || entry.job->expected.empty()) continue;
+    const auto writer = outputLines.find(std::filesystem::path(entry.job->expected).lexically_normal().string());
+    if (writer == outputLines.end()) continue;
+    entry.problem = path + ":" + std::to_string(entry.line) + ": expected " + shownPath(entry.job->expected) +
+                    (writer->second == entry.line ? " is this job's own output" : " is written by line " + std::to_string(writer->second));
+    entry.job.reset();
+  }
   return lines;
 }
 

@@ -80,4 +80,24 @@ TEST_CASE("a job file: comments and empty lines skipped, a bad line fails alone 
   CHECK(lines[4].problem.find("dir/jobs.jsonl:8: output dir/a.png is written by line 2 already") == 0);
 }
 
+TEST_CASE("a job file: a comparison with a file the batch writes is refused, whichever line writes it") {
+  const std::vector<JobLine> lines = parseJobFile(
+      "{\"output\":\"a.png\",\"expected\":\"./b.png\"}\n"
+      "{\"output\":\"b.png\"}\n"
+      "{\"output\":\"c.png\",\"expected\":\"c.png\"}\n"
+      "{\"output\":\"d.png\",\"expected\":\"a.png\"}\n"
+      "{\"output\":\"e.png\",\"expected\":\"golden/e.png\"}\n",
+      "dir/jobs.jsonl");
+  REQUIRE(lines.size() == 5);
+  CHECK_FALSE(lines[0].job);
+  CHECK(lines[0].problem == "dir/jobs.jsonl:1: expected dir/b.png is written by line 2");
+  CHECK(lines[0].output == "dir/a.png");
+  CHECK(lines[1].job);
+  CHECK_FALSE(lines[2].job);
+  CHECK(lines[2].problem == "dir/jobs.jsonl:3: expected dir/c.png is this job's own output");
+  CHECK(lines[3].problem == "dir/jobs.jsonl:4: expected dir/a.png is written by line 1");
+  REQUIRE(lines[4].job);
+  CHECK(lines[4].job->expected == "dir/golden/e.png");
+}
+
 }  // namespace facet
