@@ -15,7 +15,9 @@ namespace facet::cpu {
 // buffer holds colours as `holding` says, summed over `samples` passes
 // (divided by that count first: anti-aliasing's box filter). Four lanes
 // (srgb_table.h): an eight-lane encode with gathers measured slower (3.7
-// against 3.2 ms at 1920x1080), the pass being bound by memory.
+// against 3.2 ms at 1920x1080): gathers are slow, and a quarter of the pass
+// is reading the float buffer from memory (resolving each tile in the cache
+// instead saved no more than that; README, "Eight lanes").
 void resolve(ThreadPool& pool, const ColorBuffer& buffer, Blending holding, int samples, Image& image);
 
 // Anti-aliasing: one sample's colour buffer, held as `blending` says, added
