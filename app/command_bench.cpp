@@ -182,7 +182,7 @@ int runCallgrindMode(const BenchOptions& o, int width, int height) {
 Command addBenchCommand(CLI::App& app) {
   auto o = std::make_shared<BenchOptions>();
   CLI::App* command = app.add_subcommand("bench", "Benchmark the CPU rasterizer against OpenGL on llvmpipe, same scenes, same threads");
-  command->add_option("--scenes", o->scenes, "scenes (default: all): sphere-100k sphere-1m sphere-100k-shadow sphere-1m-shadow fill-10x fill-10x-blended default default-aa4")
+  command->add_option("--scenes", o->scenes, "scenes (default: all twelve; particles-100k and the volume-* ones take seconds a frame, so minutes in all)")
       ->delimiter(',')
       ->check(CLI::IsMember(allSceneNames()));
   command->add_option("--backends", o->backends,

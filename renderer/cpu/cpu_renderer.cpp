@@ -128,7 +128,7 @@ class CpuRenderer final : public Renderer {
     cpu::prepareFrame(pool_, buffers_, scene, frame);
     RenderResult unused;
     shadowPasses(scene, frame, unused);  // or the maps kept from an earlier frame with the same pass 1
-    return {maps_.size, maps_.layers, maps_.depth};
+    return {maps_.size, maps_.layers, {maps_.depth.begin(), maps_.depth.end()}};
   }
 
   void forgetShadowMaps() override { mapsDrawn_ = {}; }

@@ -7,12 +7,14 @@
 #include <cstdint>
 #include <vector>
 
+#include "common/large_pages.h"
+
 namespace facet::cpu {
 
 struct ShadowMaps {
   int size = 0;                // S
   int layers = 0;
-  std::vector<float> depth;    // layer-major, then rows bottom first; 1 where nothing was drawn
+  LargeVector<float> depth;    // layer-major, then rows bottom first; 1 where nothing was drawn
   std::vector<std::uint8_t> dirty;  // per layer and tile: drawn into since the last clear
 
   // All texels 1: allocates when S or the layer count changed.

@@ -8,6 +8,8 @@
 
 #include <glm/vec4.hpp>
 
+#include "common/large_pages.h"
+
 namespace facet {
 
 class ColorBuffer {
@@ -33,7 +35,7 @@ class ColorBuffer {
 
   int width_ = 0;
   int height_ = 0;
-  std::vector<glm::vec4> pixels_;
+  LargeVector<glm::vec4> pixels_;
 };
 
 }  // namespace facet

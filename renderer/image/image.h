@@ -2,6 +2,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "common/large_pages.h"
+
 namespace facet {
 
 // An RGBA8 image. Rows are stored bottom row first, as OpenGL's window
@@ -35,7 +37,7 @@ class Image {
 
   int width_ = 0;
   int height_ = 0;
-  std::vector<Rgba8> pixels_;
+  LargeVector<Rgba8> pixels_;
 };
 
 }  // namespace facet
