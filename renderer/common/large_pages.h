@@ -8,6 +8,7 @@
 // Debian); elsewhere the request is a no-op and the pages stay small.
 #include <cstddef>
 #include <new>
+#include <utility>
 #include <vector>
 
 namespace facet {
@@ -29,6 +30,14 @@ struct LargePageAllocator {
     return static_cast<T*>(allocateLarge(n * sizeof(T)));
   }
   void deallocate(T* p, std::size_t n) { deallocateLarge(p, n * sizeof(T)); }
+  // resize(n) default-initializes: new floats are left as the kernel hands
+  // them over, untouched, for a user that sets every element itself (the
+  // shadow maps clear tile by tile on the pass's threads, ShadowMaps::reset).
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    if constexpr (sizeof...(Args) == 0) ::new (static_cast<void*>(p)) U;
+    else ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
   friend bool operator==(const LargePageAllocator&, const LargePageAllocator&) { return true; }
 };
 
