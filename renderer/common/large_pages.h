@@ -1,6 +1,6 @@
 #pragma once
-// Storage for a frame's large buffers (shadow maps, colour and depth
-// buffers, the image) on the kernel's 2 MiB pages where it grants them.
+// Storage for a frame's large buffers (the CPU's shadow maps and colour
+// buffer, the image) on the kernel's 2 MiB pages where it grants them.
 // A PCF window reads 2r + 1 rows of a 2048² map, each row 8 KiB from the
 // next: on 4 KiB pages every row is another page and another TLB entry, and
 // a fresh buffer takes a page fault per 4 KiB. Linux hands an anonymous
