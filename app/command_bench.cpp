@@ -105,6 +105,7 @@ struct BenchOptions {
 std::unique_ptr<Renderer> makeBackend(const std::string& backend, int threads) {
   if (backend == "cpu") return makeCpuRenderer(threads);
   if (backend == "cpu4") return makeCpuRenderer(threads, 4);  // Phong on four lanes, as on a CPU without AVX2
+  if (backend == "cpu8") return makeCpuRenderer(threads, 8);  // eight, as on a CPU with AVX2 and without AVX-512
   if (backend == "ray") return makeRayRenderer(threads);
 #if FACET_HAVE_GL
   if (backend == "gl") return makeGlRenderer(GlContextKind::OsMesa);
@@ -124,7 +125,7 @@ std::string skipNote(const std::string& backend, const Scene& scene, const Frame
   (void)scene;
 #endif
   // OpenGL does not ray cast volumes; the CPU backend alone draws that scene.
-  if (frame.volume.placed && backend != "cpu" && backend != "cpu4") {
+  if (frame.volume.placed && backend != "cpu" && backend != "cpu4" && backend != "cpu8") {
     char line[64];
     std::snprintf(line, sizeof line, "%-4s does not ray cast volumes", backend.c_str());
     return line;
@@ -186,11 +187,11 @@ Command addBenchCommand(CLI::App& app) {
       ->delimiter(',')
       ->check(CLI::IsMember(allSceneNames()));
   command->add_option("--backends", o->backends,
-                      "cpu,gl,lean (default all three): lean is llvmpipe with minimal shaders, bench only; cpu4: the CPU rasterizer shading "
-                      "four pixels at a time, as where AVX2 is missing; and ray: the ray tracer's frame, "
+                      "cpu,gl,lean (default all three): lean is llvmpipe with minimal shaders, bench only; cpu4, cpu8: the CPU rasterizer shading "
+                      "four or eight pixels at a time, as where AVX2 or AVX-512 is missing; and ray: the ray tracer's frame, "
                       "its rays by kind and its BVH, against Embree where built with it")
       ->delimiter(',')
-      ->check(CLI::IsMember({"cpu", "cpu4", "gl", "lean", "ray"}));
+      ->check(CLI::IsMember({"cpu", "cpu4", "cpu8", "gl", "lean", "ray"}));
   command->add_option("--frames", o->frames, "timed frames per backend and scene")->check(wholeNumberIn(1, 1000));
   command->add_option("--warmup", o->warmup, "untimed frames first")->check(wholeNumberIn(0, 100));
   command->add_option("--threads", o->threads, "threads of every backend (LP_NUM_THREADS for llvmpipe)")->check(wholeNumberIn(1, 256));
@@ -325,8 +326,9 @@ Command addBenchCommand(CLI::App& app) {
         return nullptr;
       };
       if (const RenderResult *cpu = drawn("cpu"), *lean = drawn("lean"); cpu && lean) printLeanAgainstCpu(cpu->image, lean->image);
-      if (const RenderResult *cpu = drawn("cpu"), *cpu4 = drawn("cpu4"); cpu && cpu4)
-        std::printf("  cpu4 vs cpu: %s\n", cpu4->image == cpu->image ? "the same image, byte for byte" : "DIFFERENT images");
+      for (const char* narrower : {"cpu4", "cpu8"})
+        if (const RenderResult *cpu = drawn("cpu"), *other = drawn(narrower); cpu && other)
+          std::printf("  %s vs cpu: %s\n", narrower, other->image == cpu->image ? "the same image, byte for byte" : "DIFFERENT images");
       if (std::find(o->backends.begin(), o->backends.end(), "ray") != o->backends.end()) printRayRates(b.scene, frame, o->threads, o->frames);
       std::fflush(stdout);
     }
@@ -339,8 +341,8 @@ Command addBenchCommand(CLI::App& app) {
           std::printf("  lean  bench only: `facet render` has no lean backend\n");
           continue;
         }
-        if (backend == "cpu4") {
-          std::printf("  cpu4  bench only: `facet render` shades on the widest lanes the CPU runs\n");
+        if (backend == "cpu4" || backend == "cpu8") {
+          std::printf("  %s  bench only: `facet render` shades on the widest lanes the CPU runs\n", backend.c_str());
           continue;
         }
         std::vector<double> runs;

@@ -27,7 +27,7 @@ packages=(
   python3-yaml           # the test that reads the README's Kubernetes Job (tests/cli/batch_docs.py)
   python3-junitparser    # a JUnit consumer: the test that reads facet batch's report with it (tests/cli/junit_consumer.py)
   openimageio-tools      # OpenImageIO's idiff: only the test that cross-checks facet diff against it (tests/compare/idiff_crosscheck.cpp)
-  qemu-user              # a CPU without AVX2, emulated: the test that the eight-lane code is chosen at run time (tests/cpu/without_avx2.cmake)
+  qemu-user              # CPUs without AVX2 or AVX-512, emulated: the tests that the wide code is chosen at run time (tests/cpu/emulated_lanes.cmake)
 )
 
 missing=()

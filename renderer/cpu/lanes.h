@@ -1,12 +1,14 @@
 #pragma once
 // The shading code is written once (shading_math.h, lighting.h) and runs on
-// one pixel or on four or eight at a time. This header gives it the lane
-// types: for one pixel, float, bool, std::int32_t and glm::vec3; for four,
-// Float4, Mask4, Int4 and Vec3x4 over SSE2; for eight, Float8, Mask8, Int8
-// and Vec3x8 over AVX2, in the one translation unit built for AVX2
-// (phong_batch_avx2.cpp). Every lane operation is the IEEE operation of the
-// one-pixel type lane by lane (no fused multiply-add, no approximate
-// reciprocal), so all three give the same bits. Where SSE2 is missing, only
+// one pixel or on four, eight or sixteen at a time. This header gives it the
+// lane types: for one pixel, float, bool, std::int32_t and glm::vec3; for
+// four, Float4, Mask4, Int4 and Vec3x4 over SSE2; for eight, Float8, Mask8,
+// Int8 and Vec3x8 over AVX2, in the translation units built for AVX2
+// (phong_batch_avx2.cpp, phong_batch_avx512.cpp); for sixteen, Float16,
+// Mask16, Int16 and Vec3x16 over AVX-512F, in the one built for it
+// (phong_batch_avx512.cpp). Every lane operation is the IEEE operation of
+// the one-pixel type lane by lane (no fused multiply-add, no approximate
+// reciprocal), so all four give the same bits. Where SSE2 is missing, only
 // the one-pixel types exist.
 #include <cmath>
 #include <cstddef>
@@ -17,7 +19,7 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
-#if defined(__AVX2__)
+#if defined(__AVX2__) || defined(__AVX512F__)
 #include <immintrin.h>
 #endif
 
@@ -77,6 +79,7 @@ inline Mask4 operator<=(Float4 a, Float4 b) { return {_mm_cmple_ps(a.v, b.v)}; }
 inline Mask4 operator>=(Float4 a, Float4 b) { return {_mm_cmpge_ps(a.v, b.v)}; }
 inline Float4 select(Mask4 mask, Float4 a, Float4 b) { return Float4(_mm_or_ps(_mm_and_ps(mask.m, a.v), _mm_andnot_ps(mask.m, b.v))); }
 inline Float4 squareRoot(Float4 x) { return Float4(_mm_sqrt_ps(x.v)); }
+inline Float4 absOf(Float4 x) { return Float4(_mm_andnot_ps(_mm_set1_ps(-0.0f), x.v)); }  // the sign bit cleared
 
 struct Int4 {
   __m128i v;
@@ -242,6 +245,106 @@ inline Vec3x8 joined(const Vec3x4& low, const Vec3x4& high) { return {joined(low
 
 #endif
 
+#if defined(__AVX512F__)
+
+// [SECTION] Sixteen lanes: the eight-lane operations on 512-bit registers.
+// AVX-512F alone (no DQ, no VL): the bit operations on floats go through the
+// integer ones, and a mask is the comparison's 16-bit mask register.
+
+struct Mask16 {
+  __mmask16 m;  // one bit per lane
+};
+inline Mask16 operator&(Mask16 a, Mask16 b) { return {static_cast<__mmask16>(a.m & b.m)}; }
+inline Mask16 operator|(Mask16 a, Mask16 b) { return {static_cast<__mmask16>(a.m | b.m)}; }
+inline Mask16 operator!(Mask16 a) { return {static_cast<__mmask16>(~a.m)}; }
+inline Mask16 both(Mask16 a, Mask16 b) { return a & b; }
+inline bool anyLane(Mask16 a) { return a.m != 0; }
+inline int laneBits(Mask16 a) { return a.m; }
+
+struct Float16 {
+  __m512 v;
+  Float16() = default;
+  explicit Float16(__m512 value) : v(value) {}
+  Float16(float value) : v(_mm512_set1_ps(value)) {}
+};
+inline Float16 operator+(Float16 a, Float16 b) { return Float16(_mm512_add_ps(a.v, b.v)); }
+inline Float16 operator-(Float16 a, Float16 b) { return Float16(_mm512_sub_ps(a.v, b.v)); }
+inline Float16 operator*(Float16 a, Float16 b) { return Float16(_mm512_mul_ps(a.v, b.v)); }
+inline Float16 operator/(Float16 a, Float16 b) { return Float16(_mm512_div_ps(a.v, b.v)); }
+inline Float16 operator-(Float16 a) {  // the sign bit
+  return Float16(_mm512_castsi512_ps(_mm512_xor_si512(_mm512_castps_si512(a.v), _mm512_set1_epi32(static_cast<std::int32_t>(0x80000000u)))));
+}
+// The ordered predicates, as Float8's.
+inline Mask16 operator<(Float16 a, Float16 b) { return {_mm512_cmp_ps_mask(a.v, b.v, _CMP_LT_OS)}; }
+inline Mask16 operator>(Float16 a, Float16 b) { return {_mm512_cmp_ps_mask(a.v, b.v, _CMP_GT_OS)}; }
+inline Mask16 operator<=(Float16 a, Float16 b) { return {_mm512_cmp_ps_mask(a.v, b.v, _CMP_LE_OS)}; }
+inline Mask16 operator>=(Float16 a, Float16 b) { return {_mm512_cmp_ps_mask(a.v, b.v, _CMP_GE_OS)}; }
+inline Float16 select(Mask16 mask, Float16 a, Float16 b) { return Float16(_mm512_mask_blend_ps(mask.m, b.v, a.v)); }
+inline Float16 squareRoot(Float16 x) { return Float16(_mm512_sqrt_ps(x.v)); }
+
+struct Int16 {
+  __m512i v;
+  Int16() = default;
+  explicit Int16(__m512i value) : v(value) {}
+  Int16(std::int32_t value) : v(_mm512_set1_epi32(value)) {}
+};
+inline Int16 operator+(Int16 a, Int16 b) { return Int16(_mm512_add_epi32(a.v, b.v)); }
+inline Int16 operator-(Int16 a, Int16 b) { return Int16(_mm512_sub_epi32(a.v, b.v)); }
+inline Int16 operator&(Int16 a, Int16 b) { return Int16(_mm512_and_si512(a.v, b.v)); }
+inline Int16 operator|(Int16 a, Int16 b) { return Int16(_mm512_or_si512(a.v, b.v)); }
+inline Int16 operator>>(Int16 a, int n) { return Int16(_mm512_srai_epi32(a.v, static_cast<unsigned>(n))); }
+inline Int16 operator<<(Int16 a, int n) { return Int16(_mm512_slli_epi32(a.v, static_cast<unsigned>(n))); }
+inline Int16 select(Mask16 mask, Int16 a, Int16 b) { return Int16(_mm512_mask_blend_epi32(mask.m, b.v, a.v)); }
+inline Int16 bitsOf(Float16 x) { return Int16(_mm512_castps_si512(x.v)); }
+inline Float16 floatOfBits(Int16 i) { return Float16(_mm512_castsi512_ps(i.v)); }
+inline Float16 toFloat(Int16 i) { return Float16(_mm512_cvtepi32_ps(i.v)); }
+inline Int16 truncateToInt(Float16 x) { return Int16(_mm512_cvttps_epi32(x.v)); }
+inline Float16 floorOf(Float16 x) {  // as Float4's: truncate, then one less where that went up (so floor(-0) is +0 here too)
+  const Float16 t = toFloat(truncateToInt(x));
+  return select(x < t, t - Float16(1.0f), t);
+}
+
+struct Vec3x16 {
+  Float16 x, y, z;
+  Vec3x16() = default;
+  Vec3x16(Float16 a, Float16 b, Float16 c) : x(a), y(b), z(c) {}
+  explicit Vec3x16(glm::vec3 v) : x(v.x), y(v.y), z(v.z) {}
+};
+inline Vec3x16 operator+(const Vec3x16& a, const Vec3x16& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline Vec3x16 operator-(const Vec3x16& a, const Vec3x16& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline Vec3x16 operator-(const Vec3x16& a) { return {-a.x, -a.y, -a.z}; }
+inline Vec3x16 operator*(Float16 s, const Vec3x16& v) { return {s * v.x, s * v.y, s * v.z}; }
+inline Vec3x16 operator*(const Vec3x16& v, Float16 s) { return {v.x * s, v.y * s, v.z * s}; }
+inline Vec3x16 operator*(const Vec3x16& a, const Vec3x16& b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
+inline Vec3x16 operator/(const Vec3x16& v, Float16 s) { return {v.x / s, v.y / s, v.z / s}; }
+inline Vec3x16 select(Mask16 mask, const Vec3x16& a, const Vec3x16& b) {
+  return {select(mask, a.x, b.x), select(mask, a.y, b.y), select(mask, a.z, b.z)};
+}
+// Sixteen lanes from / to sixteen floats aligned to 64 bytes.
+inline void loadLanes(Float16& x, const float* p) { x = Float16(_mm512_load_ps(p)); }
+inline void storeLanes(float* p, Float16 x) { _mm512_store_ps(p, x.v); }
+
+// The eight low lanes (half 0) or high lanes (half 1), for code written for eight lanes.
+inline Float8 halfOf(Float16 a, int half) {
+  return Float8(half == 0 ? _mm512_castps512_ps256(a.v) : _mm256_castpd_ps(_mm512_extractf64x4_pd(_mm512_castps_pd(a.v), 1)));
+}
+inline Mask8 halfOf(Mask16 a, int half) {
+  const __m512i lanes = _mm512_maskz_set1_epi32(a.m, -1);  // all ones where the bit is set
+  return {_mm256_castsi256_ps(half == 0 ? _mm512_castsi512_si256(lanes) : _mm512_extracti64x4_epi64(lanes, 1))};
+}
+inline Vec3x8 halfOf(const Vec3x16& a, int half) { return {halfOf(a.x, half), halfOf(a.y, half), halfOf(a.z, half)}; }
+inline Float16 joined(Float8 low, Float8 high) {
+  return Float16(_mm512_castpd_ps(_mm512_insertf64x4(_mm512_castpd256_pd512(_mm256_castps_pd(low.v)), _mm256_castps_pd(high.v), 1)));
+}
+inline Vec3x16 joined(const Vec3x8& low, const Vec3x8& high) { return {joined(low.x, high.x), joined(low.y, high.y), joined(low.z, high.z)}; }
+// Float8's storeOpaquePixels on each half.
+inline void storeOpaquePixels(float* rgba, const std::size_t* offsets, int count, const Vec3x16& color) {
+  storeOpaquePixels(rgba, offsets, count, halfOf(color, 0));
+  if (count > 8) storeOpaquePixels(rgba, offsets + 8, count - 8, halfOf(color, 1));
+}
+
+#endif
+
 // The vector and integer types that go with a lane type.
 template <class F>
 struct LaneTypes;
@@ -265,6 +368,14 @@ struct LaneTypes<Float8> {
   using Vec3 = Vec3x8;
   using Int = Int8;
   using Mask = Mask8;
+};
+#endif
+#if defined(__AVX512F__)
+template <>
+struct LaneTypes<Float16> {
+  using Vec3 = Vec3x16;
+  using Int = Int16;
+  using Mask = Mask16;
 };
 #endif
 template <class F>

@@ -1,6 +1,6 @@
 #pragma once
 // The course's illumination equation on the CPU, written once for one pixel
-// (F = float) or four or eight at a time (F = Float4, Float8; lanes.h): the vertex stage of
+// (F = float) or four, eight or sixteen at a time (F = Float4, Float8, Float16; lanes.h): the vertex stage of
 // Gouraud, flat shading's triangles and Phong's pixels all call it.
 // Mirror: shaders/lighting.glsl, the same functions in the same order with
 // the same names, arguments and float operations. Change one, change the other.
@@ -202,32 +202,34 @@ inline bool pcfFitsRows(int size, int tx, int ty, int r) {
   return tx - r >= 0 && tx - r + 4 * loads <= size && ty - r >= 0 && ty + r < size;
 }
 
+// cubeFace (pipeline/light_frustum.h) on four lanes: the same comparisons, as selects.
+inline Int4 cubeFaceLanes(const Vec3x4& d) {
+  const Float4 ax = absOf(d.x), ay = absOf(d.y), az = absOf(d.z);
+  const Mask4 xMajor = both(ax >= ay, ax >= az), yMajor = ay >= az;
+  const Float4 zero(0.0f);
+  return select(xMajor, select(d.x >= zero, Int4(0), Int4(1)), select(yMajor, select(d.y >= zero, Int4(2), Int4(3)), select(d.z >= zero, Int4(4), Int4(5))));
+}
+
 // Four lanes: the face of each lane; where the active lanes share one, the
 // coordinates on four lanes and the window's rows four texels at a time;
 // the same reads and comparisons as shadowFactor, so the same S to the bit.
 inline Float4 shadowFactorLanes(const ShadowMaps& maps, const FrameLight& light, const ShadowSettings& shadows, const Vec3x4& P, const Vec3x4& N,
                                 const Vec3x4& L, Mask4 active) {
   if (!light.hasShadowMap) return Float4(1.0f);
-  alignas(16) float S[4] = {1.0f, 1.0f, 1.0f, 1.0f};
   const int lanes = laneBits(active);
+  if (lanes == 0) return Float4(1.0f);
+  alignas(16) float S[4] = {1.0f, 1.0f, 1.0f, 1.0f};
   const bool cube = light.light.kind == LightKind::Point;
   int face = 0;  // a spot or directional light has one map
   if (cube) {
     // Each lane's face of the cube, from its P; lanes on different faces are read one at a time.
-    alignas(16) float p[3][4];
-    _mm_store_ps(p[0], P.x.v);
-    _mm_store_ps(p[1], P.y.v);
-    _mm_store_ps(p[2], P.z.v);
-    face = -1;
-    bool oneFace = true;
-    for (int k = 0; k < 4; ++k)
-      if (lanes & (1 << k)) {
-        const int f = cubeFace(glm::vec3(p[0][k], p[1][k], p[2][k]) - light.light.position);
-        oneFace = oneFace && (face < 0 || f == face);
-        face = f;
-      }
-    if (!oneFace) {
-      alignas(16) float n[3][4], l[3][4];
+    alignas(16) std::int32_t faces[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(faces), cubeFaceLanes(P - splat<Float4>(light.light.position)).v);
+    face = faces[__builtin_ctz(static_cast<unsigned>(lanes))];  // the first active lane's (shadowFactorLanes runs with one at least)
+    const int onFace = laneBits(Mask4{_mm_castsi128_ps(_mm_cmpeq_epi32(_mm_load_si128(reinterpret_cast<const __m128i*>(faces)), _mm_set1_epi32(face)))});
+    if ((lanes & ~onFace) != 0) {
+      alignas(16) float p[3][4], n[3][4], l[3][4];
+      _mm_store_ps(p[0], P.x.v), _mm_store_ps(p[1], P.y.v), _mm_store_ps(p[2], P.z.v);
       _mm_store_ps(n[0], N.x.v), _mm_store_ps(n[1], N.y.v), _mm_store_ps(n[2], N.z.v);
       _mm_store_ps(l[0], L.x.v), _mm_store_ps(l[1], L.y.v), _mm_store_ps(l[2], L.z.v);
       for (int k = 0; k < 4; ++k)
@@ -282,6 +284,20 @@ inline Float8 shadowFactorLanes(const ShadowMaps& maps, const FrameLight& light,
   return joined(S[0], S[1]);
 }
 inline Vec3x8 environmentLanes(const EnvironmentMap& map, const Vec3x8& R) {
+  return joined(environmentLanes(map, halfOf(R, 0)), environmentLanes(map, halfOf(R, 1)));
+}
+#endif
+#if defined(__AVX512F__)
+// Sixteen lanes: the eight-lane lookups on each half.
+inline Float16 shadowFactorLanes(const ShadowMaps& maps, const FrameLight& light, const ShadowSettings& shadows, const Vec3x16& P, const Vec3x16& N,
+                                 const Vec3x16& L, Mask16 active) {
+  if (!light.hasShadowMap) return Float16(1.0f);
+  Float8 S[2];
+  for (int h = 0; h < 2; ++h)
+    S[h] = anyLane(halfOf(active, h)) ? shadowFactorLanes(maps, light, shadows, halfOf(P, h), halfOf(N, h), halfOf(L, h), halfOf(active, h)) : Float8(1.0f);
+  return joined(S[0], S[1]);
+}
+inline Vec3x16 environmentLanes(const EnvironmentMap& map, const Vec3x16& R) {
   return joined(environmentLanes(map, halfOf(R, 0)), environmentLanes(map, halfOf(R, 1)));
 }
 #endif

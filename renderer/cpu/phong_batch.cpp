@@ -26,7 +26,7 @@ void PhongBatch::flush() {
     return;
   }
   // The lanes shaded: the batch's width, or the four-lane columns the queue reaches.
-  const int shaded = lanes_ == 8 && count_ > 4 ? 8 : 4;
+  const int shaded = lanes_ == 16 && count_ > 8 ? 16 : lanes_ >= 8 && count_ > 4 ? 8 : 4;
   for (int k = count_; k < shaded; ++k) {  // unused lanes repeat lane 0; their results are dropped
     for (int c = 0; c < 3; ++c) in_.P[c][k] = in_.P[c][0], in_.N[c][k] = in_.N[c][0], in_.O[c][k] = in_.O[c][0], in_.E[c][k] = in_.E[c][0];
     in_.back[k] = in_.back[0];
@@ -35,6 +35,10 @@ void PhongBatch::flush() {
   }
   static_assert(sizeof(glm::vec4) == 4 * sizeof(float));
   float* const rgba = &pixels_[0].x;  // the colour buffer as floats, four a pixel
+#if defined(FACET_AVX512_LANES)
+  if (shaded == 16) shadeSixteenLanes(frame_, maps_, in_, rgba, offset_, count_);
+  else
+#endif
 #if defined(FACET_AVX2_LANES)
   if (shaded == 8) shadeEightLanes(frame_, maps_, in_, rgba, offset_, count_);
   else

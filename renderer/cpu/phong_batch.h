@@ -1,7 +1,7 @@
 #pragma once
 // Phong shading's per-pixel illumination four or eight pixels at a time: the
-// lanes of lighting.h's illuminate<Float4> (SSE2) or illuminate<Float8>
-// (AVX2, where the CPU has it), shade and viewVector, the same code as one
+// lanes of lighting.h's illuminate<Float4> (SSE2), illuminate<Float8>
+// (AVX2) or illuminate<Float16> (AVX-512F), the widest the CPU has, shade and viewVector, the same code as one
 // pixel's illuminate<float> (lanes.h: every operation the same IEEE
 // operation per lane), so the result is bit-identical to shading each pixel
 // alone whatever the width; tests/cpu/test_fast_paths.cpp holds both widths
@@ -21,13 +21,17 @@
 namespace facet::cpu {
 
 #if defined(FACET_AVX2_LANES)
-// shadeLanes<Float8> (phong_lanes.h); call only where widestLanes() is 8 (phong_batch_avx2.cpp, built for AVX2).
+// shadeLanes<Float8> (phong_lanes.h); call only where widestLanes() is 8 or more (phong_batch_avx2.cpp, built for AVX2).
 void shadeEightLanes(const FrameInputs& frame, const ShadowMaps& maps, const PhongLanes& in, float* rgba, const std::size_t* offsets, int count);
+#endif
+#if defined(FACET_AVX512_LANES)
+// shadeLanes<Float16>; call only where widestLanes() is 16 (phong_batch_avx512.cpp, built for AVX-512F).
+void shadeSixteenLanes(const FrameInputs& frame, const ShadowMaps& maps, const PhongLanes& in, float* rgba, const std::size_t* offsets, int count);
 #endif
 
 class PhongBatch {
  public:
-  // lanes: 8, 4 or 1, at most widestLanes().
+  // lanes: 16, 8, 4 or 1, at most widestLanes().
   PhongBatch(const FrameInputs& frame, const ShadowMaps& maps, glm::vec4* pixels, int lanes);
 
   // Queues the pixel at pixels[offset]: world position P, the interpolated

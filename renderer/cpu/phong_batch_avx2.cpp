@@ -3,7 +3,7 @@
 // of a function other translation units also define: the linker keeps one
 // copy of such a function for the whole program, and an AVX2 copy would run
 // on CPUs without AVX2. So the entry point is flattened (every call in it
-// inlined), and the test cpu.avx2_symbols fails when this object defines any
+// inlined), and tests/cpu/wide_symbols.cmake fails when this object defines any
 // symbol but its own and the eight-lane types' instances.
 #include "cpu/phong_batch.h"
 

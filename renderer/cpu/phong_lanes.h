@@ -1,16 +1,16 @@
 #pragma once
 // What a Phong batch (phong_batch.h) shades on its lanes: the queued
 // pixels' inputs, one column per lane, and the shading of F's width of them
-// (Float4 or Float8), the same steps as one pixel's in lit_pass.cpp.
+// (Float4, Float8 or Float16), the same steps as one pixel's in lit_pass.cpp.
 #include "cpu/fog.h"
 #include "cpu/lighting.h"
 
 namespace facet::cpu {
 
 struct PhongLanes {
-  static constexpr int kMost = 8;
-  alignas(32) float P[3][kMost], N[3][kMost], O[3][kMost], E[3][kMost], D[kMost], back[kMost];
-  alignas(32) float ka[kMost], kd[kMost], ks[kMost], n[kMost], m[kMost];
+  static constexpr int kMost = 16;  // each column 64 bytes, aligned for one 512-bit load
+  alignas(64) float P[3][kMost], N[3][kMost], O[3][kMost], E[3][kMost], D[kMost], back[kMost];
+  alignas(64) float ka[kMost], kd[kMost], ks[kMost], n[kMost], m[kMost];
 };
 
 // Lanes [first, first + width of F) shaded; those below count written, opaque, to the RGBA

@@ -29,6 +29,7 @@
 #include "image/color_buffer.h"
 #include "image/srgb.h"
 #include "pipeline/frame_inputs.h"
+#include "pipeline/light_frustum.h"
 #include "scene/default_scene.h"
 #include "math/transforms.h"
 
@@ -158,10 +159,11 @@ TEST_CASE("CPU renderer: the image does not depend on the thread count, nor on t
   }
 }
 
-TEST_CASE("Phong batch: four and eight lanes at a time give the bits of illuminate<float>, shade and the sRGB encode, per pixel") {
+TEST_CASE("Phong batch: four, eight and sixteen lanes at a time give the bits of illuminate<float>, shade and the sRGB encode, per pixel") {
   INFO("this CPU runs " << cpu::widestLanes() << " lanes");
   std::vector<int> widths{1, 4};
-  if (cpu::widestLanes() == 8) widths.push_back(8);
+  for (int wide : {8, 16})
+    if (cpu::widestLanes() >= wide) widths.push_back(wide);
   for (int lanes : widths) {
     const Scene scene = makeDefaultScene();
     std::mt19937 random(12345);
@@ -194,7 +196,7 @@ TEST_CASE("Phong batch: four and eight lanes at a time give the bits of illumina
         maps.reset(frame.shadows.mapSize, frame.shadowLayerCount);
         for (float& d : maps.depth) d = unit(random);  // some texels nearer than the points, some farther
 
-        constexpr int kPixels = 4001;  // not a multiple of the four lanes
+        constexpr int kPixels = 4013;  // leaves 1, 5 and 13 pixels for the last batch of four, eight and sixteen lanes
         ColorBuffer batched(kPixels, 1, glm::vec4(0.0f)), scalar(kPixels, 1, glm::vec4(0.0f));
         std::deque<CourseMaterial> materials;  // each pixel its own material
         cpu::PhongBatch batch(frame, maps, batched.data(), lanes);
@@ -229,14 +231,47 @@ TEST_CASE("Phong batch: four and eight lanes at a time give the bits of illumina
   }
 }
 
+#if defined(__SSE2__)
+TEST_CASE("Cube faces: cubeFaceLanes picks cubeFace's face in each lane, ties, signed zeros, infinities and NaN included") {
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  const float special[] = {0.0f, -0.0f, 1.0f, -1.0f, 2.0f, -2.0f, inf, -inf, nan};
+  std::vector<glm::vec3> vectors;
+  for (float x : special)
+    for (float y : special)
+      for (float z : special) vectors.push_back({x, y, z});  // every tie of |x|, |y| and |z|
+  std::mt19937 random(5);
+  std::uniform_real_distribution<float> any(-10.0f, 10.0f);
+  for (int i = 0; i < 4000; ++i) vectors.push_back({any(random), any(random), any(random)});
+  while (vectors.size() % 4 != 0) vectors.push_back({1.0f, 0.0f, 0.0f});
+  std::set<int> faces;
+  int differing = 0;
+  for (std::size_t i = 0; i < vectors.size(); i += 4) {
+    alignas(16) float c[3][4];
+    for (int k = 0; k < 4; ++k)
+      for (int a = 0; a < 3; ++a) c[a][k] = vectors[i + static_cast<std::size_t>(k)][a];
+    const cpu::Vec3x4 d(cpu::Float4(_mm_load_ps(c[0])), cpu::Float4(_mm_load_ps(c[1])), cpu::Float4(_mm_load_ps(c[2])));
+    alignas(16) std::int32_t lanes[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(lanes), cpu::cubeFaceLanes(d).v);
+    for (int k = 0; k < 4; ++k) {
+      const int face = cubeFace(vectors[i + static_cast<std::size_t>(k)]);
+      faces.insert(face);
+      differing += lanes[k] == face ? 0 : 1;
+    }
+  }
+  CHECK(differing == 0);
+  CHECK(faces.size() == 6);
+}
+#endif
+
 TEST_CASE("Phong batch: a width this CPU or build does not run is refused") {
   const Scene scene = makeDefaultScene();
   const FrameInputs frame = buildFrameInputs(scene, RenderSettings{});
   cpu::ShadowMaps maps;
   ColorBuffer pixels(4, 1, glm::vec4(0.0f));
   CHECK_THROWS_AS(cpu::PhongBatch(frame, maps, pixels.data(), 2), Error);
-  CHECK_THROWS_AS(cpu::PhongBatch(frame, maps, pixels.data(), 16), Error);
+  CHECK_THROWS_AS(cpu::PhongBatch(frame, maps, pixels.data(), 32), Error);
   if (cpu::widestLanes() < 8) CHECK_THROWS_AS(cpu::PhongBatch(frame, maps, pixels.data(), 8), Error);
+  if (cpu::widestLanes() < 16) CHECK_THROWS_AS(cpu::PhongBatch(frame, maps, pixels.data(), 16), Error);
 }
 
 TEST_CASE("Depth rows: lessRow's four-lane test writes the depths and ids the one-pixel test writes") {

@@ -1,0 +1,19 @@
+// The sixteen-lane Phong batch: the only translation unit built with
+// -mavx512f (renderer/cpu/CMakeLists.txt). As for phong_batch_avx2.cpp, no
+// function here may leave an out-of-line copy another translation unit also
+// defines (an AVX-512 copy would run on CPUs without it): the entry point is
+// flattened, and tests/cpu/wide_symbols.cmake holds it.
+#include "cpu/phong_batch.h"
+
+#if !defined(__AVX512F__)
+#error "phong_batch_avx512.cpp is built with -mavx512f"
+#endif
+
+namespace facet::cpu {
+
+__attribute__((flatten)) void shadeSixteenLanes(const FrameInputs& frame, const ShadowMaps& maps, const PhongLanes& in, float* rgba,
+                                                const std::size_t* offsets, int count) {
+  shadeLanes<Float16>(frame, maps, in, 0, rgba, offsets, count);
+}
+
+}  // namespace facet::cpu
