@@ -260,12 +260,14 @@ void blendTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
     Interpolation& in = triangle.interpolation;
     in.setUpVaryings(layout.model);
     TileRect drawn{r.x1 + 1, r.y1 + 1, r.x0 - 1, r.y0 - 1};  // the pixels it reaches, as a box
+    const float constantAlpha = fragmentAlpha(material, nullptr, nullptr);
+    const float* const uniformAlpha = texture || colored ? nullptr : &constantAlpha;  // fragmentAlphaAt's value at every pixel
     // A fragment in front of the opaque surfaces (LESS, no depth write) takes its pixel, with its alpha.
     const auto inFront = [&](int px, int py) {
       const int k = (py - r.y0) * kTileSize + (px - r.x0);
       if (!(in.depthAt(px, py) < scratch.depth[k])) return false;
       scratch.fragment[k] = blended.id;
-      scratch.alpha[k] = fragmentAlphaAt(material, texture, colored, layout, in, px, py);
+      scratch.alpha[k] = uniformAlpha ? *uniformAlpha : fragmentAlphaAt(material, texture, colored, layout, in, px, py);
       return true;
     };
     const auto reach = [&](int x0, int x1, int py) {
@@ -276,11 +278,16 @@ void blendTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         [&](int px, int py) {
           if (inFront(px, py)) reach(px, px, py);
         },
-        [&](int x0, int x1, int py) {  // a row of a block wholly inside: the box grows once for the pixels it took
-          int first = x1 + 1, last = x0 - 1;
-          for (int px = x0; px <= x1; ++px)
-            if (inFront(px, py)) first = std::min(first, px), last = px;
-          if (first <= last) reach(first, last, py);
+        [&](int x0, int x1, int py) {  // a row of a block wholly inside: four depth tests at a time, the box grown once
+          const int k0 = (py - r.y0) * kTileSize + (x0 - r.x0);
+          const TakenRun taken = frontRow(in.depthPlane(), x0, x1, py, &scratch.depth[k0], &scratch.fragment[k0], blended.id);
+          if (taken.first > taken.last) return;
+          for (int px = taken.first; px <= taken.last; ++px) {  // α where it was taken; one α for the triangle without texture or COLOR_0
+            const int k = k0 + (px - x0);
+            if (scratch.fragment[k] == blended.id)
+              scratch.alpha[k] = uniformAlpha ? *uniformAlpha : fragmentAlphaAt(material, texture, colored, layout, in, px, py);
+          }
+          reach(taken.first, taken.last, py);
         });
     if (drawn.x0 > drawn.x1) continue;
     shadeIn(scene, frame, maps, scratch, scratch.fragment, r, drawn, fragments, lanes);
