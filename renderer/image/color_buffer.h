@@ -19,6 +19,9 @@ class ColorBuffer {
   ColorBuffer(int width, int height, glm::vec4 fill) { reset(width, height, fill); }
   // The same, keeping the memory it has: a renderer's buffer is reused from frame to frame.
   void reset(int width, int height, glm::vec4 fill);
+  // The size alone: the pixels keep what they held, new ones are undefined (for a caller
+  // that writes every pixel next, on its threads).
+  void resize(int width, int height);
 
   int width() const { return width_; }
   int height() const { return height_; }
