@@ -101,6 +101,8 @@ inline Int4 bitsOf(Float4 x) { return Int4(_mm_castps_si128(x.v)); }
 inline Float4 floatOfBits(Int4 i) { return Float4(_mm_castsi128_ps(i.v)); }
 inline Float4 toFloat(Int4 i) { return Float4(_mm_cvtepi32_ps(i.v)); }
 inline Int4 truncateToInt(Float4 x) { return Int4(_mm_cvttps_epi32(x.v)); }
+inline Mask4 equalLanes(Int4 a, Int4 b) { return {_mm_castsi128_ps(_mm_cmpeq_epi32(a.v, b.v))}; }
+inline void storeLanes(std::int32_t* p, Int4 i) { _mm_store_si128(reinterpret_cast<__m128i*>(p), i.v); }  // aligned to 16 bytes
 // floor for |x| < 2^31: truncate, then one less where that went up (negative non-integers).
 inline Float4 floorOf(Float4 x) {
   const Float4 t = toFloat(truncateToInt(x));
@@ -183,6 +185,7 @@ inline Mask8 operator<=(Float8 a, Float8 b) { return {_mm256_cmp_ps(a.v, b.v, _C
 inline Mask8 operator>=(Float8 a, Float8 b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_GE_OS)}; }
 inline Float8 select(Mask8 mask, Float8 a, Float8 b) { return Float8(_mm256_blendv_ps(b.v, a.v, mask.m)); }
 inline Float8 squareRoot(Float8 x) { return Float8(_mm256_sqrt_ps(x.v)); }
+inline Float8 absOf(Float8 x) { return Float8(_mm256_andnot_ps(_mm256_set1_ps(-0.0f), x.v)); }
 
 struct Int8 {
   __m256i v;
@@ -201,6 +204,8 @@ inline Int8 bitsOf(Float8 x) { return Int8(_mm256_castps_si256(x.v)); }
 inline Float8 floatOfBits(Int8 i) { return Float8(_mm256_castsi256_ps(i.v)); }
 inline Float8 toFloat(Int8 i) { return Float8(_mm256_cvtepi32_ps(i.v)); }
 inline Int8 truncateToInt(Float8 x) { return Int8(_mm256_cvttps_epi32(x.v)); }
+inline Mask8 equalLanes(Int8 a, Int8 b) { return {_mm256_castsi256_ps(_mm256_cmpeq_epi32(a.v, b.v))}; }
+inline void storeLanes(std::int32_t* p, Int8 i) { _mm256_store_si256(reinterpret_cast<__m256i*>(p), i.v); }  // aligned to 32 bytes
 inline Float8 floorOf(Float8 x) {  // as Float4's: truncate, then one less where that went up
   const Float8 t = toFloat(truncateToInt(x));
   return select(x < t, t - Float8(1.0f), t);
@@ -281,6 +286,7 @@ inline Mask16 operator<=(Float16 a, Float16 b) { return {_mm512_cmp_ps_mask(a.v,
 inline Mask16 operator>=(Float16 a, Float16 b) { return {_mm512_cmp_ps_mask(a.v, b.v, _CMP_GE_OS)}; }
 inline Float16 select(Mask16 mask, Float16 a, Float16 b) { return Float16(_mm512_mask_blend_ps(mask.m, b.v, a.v)); }
 inline Float16 squareRoot(Float16 x) { return Float16(_mm512_sqrt_ps(x.v)); }
+inline Float16 absOf(Float16 x) { return Float16(_mm512_castsi512_ps(_mm512_and_si512(_mm512_castps_si512(x.v), _mm512_set1_epi32(0x7FFFFFFF)))); }
 
 struct Int16 {
   __m512i v;
@@ -299,6 +305,8 @@ inline Int16 bitsOf(Float16 x) { return Int16(_mm512_castps_si512(x.v)); }
 inline Float16 floatOfBits(Int16 i) { return Float16(_mm512_castsi512_ps(i.v)); }
 inline Float16 toFloat(Int16 i) { return Float16(_mm512_cvtepi32_ps(i.v)); }
 inline Int16 truncateToInt(Float16 x) { return Int16(_mm512_cvttps_epi32(x.v)); }
+inline Mask16 equalLanes(Int16 a, Int16 b) { return {_mm512_cmpeq_epi32_mask(a.v, b.v)}; }
+inline void storeLanes(std::int32_t* p, Int16 i) { _mm512_store_si512(p, i.v); }  // aligned to 64 bytes
 inline Float16 floorOf(Float16 x) {  // as Float4's: truncate, then one less where that went up (so floor(-0) is +0 here too)
   const Float16 t = toFloat(truncateToInt(x));
   return select(x < t, t - Float16(1.0f), t);
@@ -384,6 +392,10 @@ template <class F>
 using IntOf = typename LaneTypes<F>::Int;
 template <class F>
 using MaskOf = typename LaneTypes<F>::Mask;
+
+// How many lanes a lane type has (1 for float).
+template <class F>
+inline constexpr int kLaneCount = static_cast<int>(sizeof(F) / sizeof(float));
 
 // A world-space vector as a lane type's vector (the same in every lane).
 template <class F>

@@ -202,58 +202,78 @@ inline bool pcfFitsRows(int size, int tx, int ty, int r) {
   return tx - r >= 0 && tx - r + 4 * loads <= size && ty - r >= 0 && ty + r < size;
 }
 
-// cubeFace (pipeline/light_frustum.h) on four lanes: the same comparisons, as selects.
-inline Int4 cubeFaceLanes(const Vec3x4& d) {
-  const Float4 ax = absOf(d.x), ay = absOf(d.y), az = absOf(d.z);
-  const Mask4 xMajor = both(ax >= ay, ax >= az), yMajor = ay >= az;
-  const Float4 zero(0.0f);
-  return select(xMajor, select(d.x >= zero, Int4(0), Int4(1)), select(yMajor, select(d.y >= zero, Int4(2), Int4(3)), select(d.z >= zero, Int4(4), Int4(5))));
+// cubeFace (pipeline/light_frustum.h) on lanes: the same comparisons, as selects.
+template <class F>
+IntOf<F> cubeFaceLanes(const Vec3Of<F>& d) {
+  using I = IntOf<F>;
+  const F ax = absOf(d.x), ay = absOf(d.y), az = absOf(d.z);
+  const MaskOf<F> xMajor = both(ax >= ay, ax >= az), yMajor = ay >= az;
+  const F zero(0.0f);
+  return select(xMajor, select(d.x >= zero, I(0), I(1)), select(yMajor, select(d.y >= zero, I(2), I(3)), select(d.z >= zero, I(4), I(5))));
 }
 
-// Four lanes: the face of each lane; where the active lanes share one, the
-// coordinates on four lanes and the window's rows four texels at a time;
-// the same reads and comparisons as shadowFactor, so the same S to the bit.
-inline Float4 shadowFactorLanes(const ShadowMaps& maps, const FrameLight& light, const ShadowSettings& shadows, const Vec3x4& P, const Vec3x4& N,
-                                const Vec3x4& L, Mask4 active) {
-  if (!light.hasShadowMap) return Float4(1.0f);
-  const int lanes = laneBits(active);
-  if (lanes == 0) return Float4(1.0f);
-  alignas(16) float S[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+// Whether the active lanes (bits of `lanes`, one at least) read one face of
+// the light's maps, and which: a point light's cube face of each lane's P
+// (cubeFaceLanes), or a spot or directional light's one map.
+template <class F>
+bool oneFace(const FrameLight& light, const Vec3Of<F>& P, int lanes, int& face) {
+  face = 0;
+  if (light.light.kind != LightKind::Point) return true;
+  const IntOf<F> faces = cubeFaceLanes<F>(P - splat<F>(light.light.position));
+  alignas(64) std::int32_t each[kLaneCount<F>];
+  storeLanes(each, faces);
+  face = each[__builtin_ctz(static_cast<unsigned>(lanes))];  // the first active lane's
+  return (lanes & ~laneBits(equalLanes(faces, IntOf<F>(face)))) == 0;
+}
+
+// S on F's lanes whose active lanes all read `face`: the coordinates on the
+// lanes, then each lane's PCF window, its rows four texels at a time where
+// they fit; the same reads and comparisons as shadowFactor, so the same S
+// to the bit.
+template <class F>
+F shadowFactorOnFace(const ShadowMaps& maps, const FrameLight& light, const ShadowSettings& shadows, const Vec3Of<F>& P, const Vec3Of<F>& N,
+                     const Vec3Of<F>& L, int lanes, int face) {
+  constexpr int kLanes = kLaneCount<F>;
   const bool cube = light.light.kind == LightKind::Point;
-  int face = 0;  // a spot or directional light has one map
-  if (cube) {
-    // Each lane's face of the cube, from its P; lanes on different faces are read one at a time.
-    alignas(16) std::int32_t faces[4];
-    _mm_store_si128(reinterpret_cast<__m128i*>(faces), cubeFaceLanes(P - splat<Float4>(light.light.position)).v);
-    face = faces[__builtin_ctz(static_cast<unsigned>(lanes))];  // the first active lane's (shadowFactorLanes runs with one at least)
-    const int onFace = laneBits(Mask4{_mm_castsi128_ps(_mm_cmpeq_epi32(_mm_load_si128(reinterpret_cast<const __m128i*>(faces)), _mm_set1_epi32(face)))});
-    if ((lanes & ~onFace) != 0) {
-      alignas(16) float p[3][4], n[3][4], l[3][4];
-      _mm_store_ps(p[0], P.x.v), _mm_store_ps(p[1], P.y.v), _mm_store_ps(p[2], P.z.v);
-      _mm_store_ps(n[0], N.x.v), _mm_store_ps(n[1], N.y.v), _mm_store_ps(n[2], N.z.v);
-      _mm_store_ps(l[0], L.x.v), _mm_store_ps(l[1], L.y.v), _mm_store_ps(l[2], L.z.v);
-      for (int k = 0; k < 4; ++k)
-        if (lanes & (1 << k))
-          S[k] = shadowFactor(maps, light, shadows, {p[0][k], p[1][k], p[2][k]}, {n[0][k], n[1][k], n[2][k]}, {l[0][k], l[1][k], l[2][k]});
-      return Float4(_mm_load_ps(S));
-    }
-  }
   const int r = shadows.pcfRadius, size = maps.size;
   const float taps = static_cast<float>((2 * r + 1) * (2 * r + 1));
-  const ShadowCoordinates<Float4> at = shadowCoordinates<Float4>(light.shadowFromWorld[static_cast<std::size_t>(face)], size, shadows, P, N, L);
-  alignas(16) float zb[4];
-  alignas(16) std::int32_t tx[4], ty[4];
-  _mm_store_ps(zb, (at.z - at.bias).v);
-  _mm_store_si128(reinterpret_cast<__m128i*>(tx), at.tx.v);
-  _mm_store_si128(reinterpret_cast<__m128i*>(ty), at.ty.v);
+  const ShadowCoordinates<F> at = shadowCoordinates<F>(light.shadowFromWorld[static_cast<std::size_t>(face)], size, shadows, P, N, L);
+  alignas(64) float zb[kLanes], S[kLanes];
+  alignas(64) std::int32_t tx[kLanes], ty[kLanes];
+  storeLanes(zb, at.z - at.bias);
+  storeLanes(tx, at.tx);
+  storeLanes(ty, at.ty);
   const int read = lanes & laneBits(at.inside);
   const int layer = light.shadowLayer + face;
-  for (int k = 0; k < 4; ++k)
+  for (int k = 0; k < kLanes; ++k) {
+    S[k] = 1.0f;
     if (read & (1 << k)) {
       const int lit = pcfFitsRows(size, tx[k], ty[k], r) ? pcfLitCountRows(maps, layer, tx[k], ty[k], zb[k], r)
                                                          : pcfLitCount(maps, layer, tx[k], ty[k], zb[k], r, cube);
       S[k] = static_cast<float>(lit) / taps;
     }
+  }
+  F result;
+  loadLanes(result, S);
+  return result;
+}
+
+// Four lanes: where the active lanes read one face, shadowFactorOnFace;
+// else each active lane alone (shadowFactor).
+inline Float4 shadowFactorLanes(const ShadowMaps& maps, const FrameLight& light, const ShadowSettings& shadows, const Vec3x4& P, const Vec3x4& N,
+                                const Vec3x4& L, Mask4 active) {
+  const int lanes = laneBits(active);
+  if (!light.hasShadowMap || lanes == 0) return Float4(1.0f);
+  int face = 0;
+  if (oneFace<Float4>(light, P, lanes, face)) return shadowFactorOnFace<Float4>(maps, light, shadows, P, N, L, lanes, face);
+  alignas(16) float S[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+  alignas(16) float p[3][4], n[3][4], l[3][4];
+  _mm_store_ps(p[0], P.x.v), _mm_store_ps(p[1], P.y.v), _mm_store_ps(p[2], P.z.v);
+  _mm_store_ps(n[0], N.x.v), _mm_store_ps(n[1], N.y.v), _mm_store_ps(n[2], N.z.v);
+  _mm_store_ps(l[0], L.x.v), _mm_store_ps(l[1], L.y.v), _mm_store_ps(l[2], L.z.v);
+  for (int k = 0; k < 4; ++k)
+    if (lanes & (1 << k))
+      S[k] = shadowFactor(maps, light, shadows, {p[0][k], p[1][k], p[2][k]}, {n[0][k], n[1][k], n[2][k]}, {l[0][k], l[1][k], l[2][k]});
   return Float4(_mm_load_ps(S));
 }
 #endif
@@ -274,10 +294,14 @@ inline Vec3x4 environmentLanes(const EnvironmentMap& map, const Vec3x4& R) {
 }
 #endif
 #if defined(__AVX2__)
-// Eight lanes: the four-lane lookups on each half (the shadow reads are per lane either way).
+// Eight lanes: where the active lanes read one face, shadowFactorOnFace on
+// all eight (one projection for the eight); else the four-lane look-ups on each half.
 inline Float8 shadowFactorLanes(const ShadowMaps& maps, const FrameLight& light, const ShadowSettings& shadows, const Vec3x8& P, const Vec3x8& N,
                                 const Vec3x8& L, Mask8 active) {
-  if (!light.hasShadowMap) return Float8(1.0f);
+  const int lanes = laneBits(active);
+  if (!light.hasShadowMap || lanes == 0) return Float8(1.0f);
+  int face = 0;
+  if (oneFace<Float8>(light, P, lanes, face)) return shadowFactorOnFace<Float8>(maps, light, shadows, P, N, L, lanes, face);
   Float4 S[2];
   for (int h = 0; h < 2; ++h)
     S[h] = anyLane(halfOf(active, h)) ? shadowFactorLanes(maps, light, shadows, halfOf(P, h), halfOf(N, h), halfOf(L, h), halfOf(active, h)) : Float4(1.0f);
@@ -288,10 +312,13 @@ inline Vec3x8 environmentLanes(const EnvironmentMap& map, const Vec3x8& R) {
 }
 #endif
 #if defined(__AVX512F__)
-// Sixteen lanes: the eight-lane lookups on each half.
+// Sixteen lanes: as eight, with the eight-lane look-ups on each half.
 inline Float16 shadowFactorLanes(const ShadowMaps& maps, const FrameLight& light, const ShadowSettings& shadows, const Vec3x16& P, const Vec3x16& N,
                                  const Vec3x16& L, Mask16 active) {
-  if (!light.hasShadowMap) return Float16(1.0f);
+  const int lanes = laneBits(active);
+  if (!light.hasShadowMap || lanes == 0) return Float16(1.0f);
+  int face = 0;
+  if (oneFace<Float16>(light, P, lanes, face)) return shadowFactorOnFace<Float16>(maps, light, shadows, P, N, L, lanes, face);
   Float8 S[2];
   for (int h = 0; h < 2; ++h)
     S[h] = anyLane(halfOf(active, h)) ? shadowFactorLanes(maps, light, shadows, halfOf(P, h), halfOf(N, h), halfOf(L, h), halfOf(active, h)) : Float8(1.0f);

@@ -200,8 +200,13 @@ TEST_CASE("Phong batch: four, eight and sixteen lanes at a time give the bits of
         ColorBuffer batched(kPixels, 1, glm::vec4(0.0f)), scalar(kPixels, 1, glm::vec4(0.0f));
         std::deque<CourseMaterial> materials;  // each pixel its own material
         cpu::PhongBatch batch(frame, maps, batched.data(), lanes);
+        glm::vec3 anchor(0.0f);
         for (int i = 0; i < kPixels; ++i) {
-          const glm::vec3 P{coordinate(random), coordinate(random) * 0.3f, coordinate(random)};
+          // Every other run of 16 pixels lies close together, as a surface's pixels do: the lanes of a batch read
+          // one face of a point light's cube (one projection for all of them); the others scatter over several.
+          if (i % 16 == 0) anchor = {coordinate(random), coordinate(random) * 0.3f, coordinate(random)};
+          const glm::vec3 P = (i / 16) % 2 == 0 ? glm::vec3{coordinate(random), coordinate(random) * 0.3f, coordinate(random)}
+                                                : anchor + 0.02f * glm::vec3{coordinate(random), coordinate(random), coordinate(random)};
           const glm::vec3 N = glm::normalize(glm::vec3(coordinate(random), coordinate(random), coordinate(random)));
           const glm::vec3 baseColor{unit(random), unit(random), unit(random)};
           CourseMaterial material;
@@ -251,7 +256,7 @@ TEST_CASE("Cube faces: cubeFaceLanes picks cubeFace's face in each lane, ties, s
       for (int a = 0; a < 3; ++a) c[a][k] = vectors[i + static_cast<std::size_t>(k)][a];
     const cpu::Vec3x4 d(cpu::Float4(_mm_load_ps(c[0])), cpu::Float4(_mm_load_ps(c[1])), cpu::Float4(_mm_load_ps(c[2])));
     alignas(16) std::int32_t lanes[4];
-    _mm_store_si128(reinterpret_cast<__m128i*>(lanes), cpu::cubeFaceLanes(d).v);
+    _mm_store_si128(reinterpret_cast<__m128i*>(lanes), cpu::cubeFaceLanes<cpu::Float4>(d).v);
     for (int k = 0; k < 4; ++k) {
       const int face = cubeFace(vectors[i + static_cast<std::size_t>(k)]);
       faces.insert(face);
