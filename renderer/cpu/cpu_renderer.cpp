@@ -60,10 +60,11 @@ class CpuRenderer final : public Renderer {
         color_.resize(pass.width, pass.height);
         const bool environment = showsEnvironment(pass);
         const glm::vec4 background = cpu::backgroundPixel(pass, 0, 0);
+        const auto width = static_cast<std::size_t>(pass.width);
         cpu::forEachRange(pool_, static_cast<std::size_t>(pass.height), [&](std::size_t begin, std::size_t end, int) {
+          if (!environment) return std::fill(color_.data() + begin * width, color_.data() + end * width, background);
           for (std::size_t y = begin; y < end; ++y)
-            for (int x = 0; x < pass.width; ++x)
-              color_.at(x, static_cast<int>(y)) = environment ? cpu::backgroundPixel(pass, x, static_cast<int>(y)) : background;
+            for (int x = 0; x < pass.width; ++x) color_.at(x, static_cast<int>(y)) = cpu::backgroundPixel(pass, x, static_cast<int>(y));
         });
       }
       cpu::litPass(pool_, buffers_, scene, pass, maps_, color_);

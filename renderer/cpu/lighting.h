@@ -294,39 +294,39 @@ inline Vec3x4 environmentLanes(const EnvironmentMap& map, const Vec3x4& R) {
 }
 #endif
 #if defined(__AVX2__)
-// Eight lanes: where the active lanes read one face, shadowFactorOnFace on
-// all eight (one projection for the eight); else the four-lane look-ups on each half.
+// Eight or sixteen lanes: where the active lanes read one face,
+// shadowFactorOnFace on all of them (one projection); else the look-ups of
+// half the width on each half.
+template <class F>
+F shadowFactorWide(const ShadowMaps& maps, const FrameLight& light, const ShadowSettings& shadows, const Vec3Of<F>& P, const Vec3Of<F>& N,
+                   const Vec3Of<F>& L, MaskOf<F> active) {
+  const int lanes = laneBits(active);
+  if (!light.hasShadowMap || lanes == 0) return F(1.0f);
+  int face = 0;
+  if (oneFace<F>(light, P, lanes, face)) return shadowFactorOnFace<F>(maps, light, shadows, P, N, L, lanes, face);
+  using Half = decltype(halfOf(F(), 0));
+  Half S[2];
+  for (int h = 0; h < 2; ++h)
+    S[h] = anyLane(halfOf(active, h)) ? shadowFactorLanes(maps, light, shadows, halfOf(P, h), halfOf(N, h), halfOf(L, h), halfOf(active, h)) : Half(1.0f);
+  return joined(S[0], S[1]);
+}
+// env(R) on each half.
+template <class Vec3>
+Vec3 environmentWide(const EnvironmentMap& map, const Vec3& R) {
+  return joined(environmentLanes(map, halfOf(R, 0)), environmentLanes(map, halfOf(R, 1)));
+}
 inline Float8 shadowFactorLanes(const ShadowMaps& maps, const FrameLight& light, const ShadowSettings& shadows, const Vec3x8& P, const Vec3x8& N,
                                 const Vec3x8& L, Mask8 active) {
-  const int lanes = laneBits(active);
-  if (!light.hasShadowMap || lanes == 0) return Float8(1.0f);
-  int face = 0;
-  if (oneFace<Float8>(light, P, lanes, face)) return shadowFactorOnFace<Float8>(maps, light, shadows, P, N, L, lanes, face);
-  Float4 S[2];
-  for (int h = 0; h < 2; ++h)
-    S[h] = anyLane(halfOf(active, h)) ? shadowFactorLanes(maps, light, shadows, halfOf(P, h), halfOf(N, h), halfOf(L, h), halfOf(active, h)) : Float4(1.0f);
-  return joined(S[0], S[1]);
+  return shadowFactorWide<Float8>(maps, light, shadows, P, N, L, active);
 }
-inline Vec3x8 environmentLanes(const EnvironmentMap& map, const Vec3x8& R) {
-  return joined(environmentLanes(map, halfOf(R, 0)), environmentLanes(map, halfOf(R, 1)));
-}
+inline Vec3x8 environmentLanes(const EnvironmentMap& map, const Vec3x8& R) { return environmentWide(map, R); }
 #endif
 #if defined(__AVX512F__)
-// Sixteen lanes: as eight, with the eight-lane look-ups on each half.
 inline Float16 shadowFactorLanes(const ShadowMaps& maps, const FrameLight& light, const ShadowSettings& shadows, const Vec3x16& P, const Vec3x16& N,
                                  const Vec3x16& L, Mask16 active) {
-  const int lanes = laneBits(active);
-  if (!light.hasShadowMap || lanes == 0) return Float16(1.0f);
-  int face = 0;
-  if (oneFace<Float16>(light, P, lanes, face)) return shadowFactorOnFace<Float16>(maps, light, shadows, P, N, L, lanes, face);
-  Float8 S[2];
-  for (int h = 0; h < 2; ++h)
-    S[h] = anyLane(halfOf(active, h)) ? shadowFactorLanes(maps, light, shadows, halfOf(P, h), halfOf(N, h), halfOf(L, h), halfOf(active, h)) : Float8(1.0f);
-  return joined(S[0], S[1]);
+  return shadowFactorWide<Float16>(maps, light, shadows, P, N, L, active);
 }
-inline Vec3x16 environmentLanes(const EnvironmentMap& map, const Vec3x16& R) {
-  return joined(environmentLanes(map, halfOf(R, 0)), environmentLanes(map, halfOf(R, 1)));
-}
+inline Vec3x16 environmentLanes(const EnvironmentMap& map, const Vec3x16& R) { return environmentWide(map, R); }
 #endif
 
 // Illumination at world point P with unit normal N and unit view vector V.
