@@ -17,6 +17,7 @@
 #include <glm/vec3.hpp>
 
 #include "cpu/environment_mapping.h"
+#include "cpu/lane_pairs.h"
 #include "cpu/lanes.h"
 #include "cpu/shading_math.h"
 #include "cpu/shadow_maps.h"
@@ -327,6 +328,28 @@ inline Float16 shadowFactorLanes(const ShadowMaps& maps, const FrameLight& light
   return shadowFactorWide<Float16>(maps, light, shadows, P, N, L, active);
 }
 inline Vec3x16 environmentLanes(const EnvironmentMap& map, const Vec3x16& R) { return environmentWide(map, R); }
+#endif
+
+#if defined(__SSE2__)
+// Twice a lane type (lane_pairs.h): where the active lanes read one face,
+// shadowFactorOnFace on all of them; else each half's look-ups in turn.
+template <class F>
+Twice<F> shadowFactorLanes(const ShadowMaps& maps, const FrameLight& light, const ShadowSettings& shadows, const TwiceVec3<F>& P,
+                           const TwiceVec3<F>& N, const TwiceVec3<F>& L, const Twice<MaskOf<F>>& active) {
+  const int lanes = laneBits(active);
+  if (!light.hasShadowMap || lanes == 0) return Twice<F>(1.0f);
+  int face = 0;
+  if (oneFace<Twice<F>>(light, P, lanes, face)) return shadowFactorOnFace<Twice<F>>(maps, light, shadows, P, N, L, lanes, face);
+  const auto half = [&](int h, const MaskOf<F>& on) {
+    return anyLane(on) ? shadowFactorLanes(maps, light, shadows, P.half(h), N.half(h), L.half(h), on) : F(1.0f);
+  };
+  return {half(0, active.a), half(1, active.b)};
+}
+// env(R) on each half.
+template <class F>
+TwiceVec3<F> environmentLanes(const EnvironmentMap& map, const TwiceVec3<F>& R) {
+  return joinedTwice<F>(environmentLanes(map, R.half(0)), environmentLanes(map, R.half(1)));
+}
 #endif
 
 // Illumination at world point P with unit normal N and unit view vector V.

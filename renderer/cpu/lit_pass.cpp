@@ -78,7 +78,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
   const bool foggy = frame.fog.mode != FogMode::None;  // fog reads 1/w, set up with the varyings
   bool back = false;
   const Illumination* flat = nullptr;
-  PhongBatch batch(frame, maps, color.data(), lanes);  // Phong: four or eight pixels' illumination at a time
+  PhongBatch batch(frame, maps, color.data(), lanes);  // Phong: 4, 8, 16 or 32 pixels' illumination at a time
   for (int py = ty0; py <= ty1; ++py)
     for (int px = tx0; px <= tx1; ++px) {
       const std::uint32_t id = ids[(py - r.y0) * kTileSize + (px - r.x0)];

@@ -7,7 +7,7 @@
 namespace facet::cpu {
 
 PhongBatch::PhongBatch(const FrameInputs& frame, const ShadowMaps& maps, glm::vec4* pixels, int lanes)
-    : frame_(frame), maps_(maps), pixels_(pixels), lanes_(lanes) {
+    : frame_(frame), maps_(maps), pixels_(pixels), lanes_(lanes), capacity_(lanes >= 8 ? 2 * lanes : lanes) {
   checkLanes(lanes);
 }
 
@@ -25,8 +25,9 @@ void PhongBatch::flush() {
     count_ = 0;
     return;
   }
-  // The lanes shaded: the batch's width, or the four-lane columns the queue reaches.
-  const int shaded = lanes_ == 16 && count_ > 8 ? 16 : lanes_ >= 8 && count_ > 4 ? 8 : 4;
+  // The lanes shaded: the narrowest of 4, 8, 16 and 32 that holds the queue (at most the batch's capacity).
+  int shaded = 4;
+  while (shaded < count_) shaded *= 2;
   for (int k = count_; k < shaded; ++k) {  // unused lanes repeat lane 0; their results are dropped
     for (int c = 0; c < 3; ++c) in_.P[c][k] = in_.P[c][0], in_.N[c][k] = in_.N[c][0], in_.O[c][k] = in_.O[c][0], in_.E[c][k] = in_.E[c][0];
     in_.back[k] = in_.back[0];
@@ -36,11 +37,11 @@ void PhongBatch::flush() {
   static_assert(sizeof(glm::vec4) == 4 * sizeof(float));
   float* const rgba = &pixels_[0].x;  // the colour buffer as floats, four a pixel
 #if defined(FACET_AVX512_LANES)
-  if (shaded == 16) shadeSixteenLanes(frame_, maps_, in_, rgba, offset_, count_);
+  if (lanes_ == 16 && shaded >= 16) shadeSixteenLanes(frame_, maps_, in_, rgba, offset_, count_);  // 16 or twice 16
   else
 #endif
 #if defined(FACET_AVX2_LANES)
-  if (shaded == 8) shadeEightLanes(frame_, maps_, in_, rgba, offset_, count_);
+  if (shaded >= 8) shadeEightLanes(frame_, maps_, in_, rgba, offset_, count_);  // 8 or twice 8
   else
 #endif
 #if defined(__SSE2__)

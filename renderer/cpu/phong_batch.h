@@ -4,8 +4,10 @@
 // (AVX2) or illuminate<Float16> (AVX-512F), the widest the CPU has, shade and viewVector, the same code as one
 // pixel's illuminate<float> (lanes.h: every operation the same IEEE
 // operation per lane), so the result is bit-identical to shading each pixel
-// alone whatever the width; tests/cpu/test_fast_paths.cpp holds both widths
-// against it. Pixels of different triangles and materials share a batch.
+// alone whatever the width; tests/cpu/test_fast_paths.cpp holds every width
+// against it. At 8 and 16 lanes a batch queues twice the width and shades
+// it as two interleaved halves (lane_pairs.h; README, "Two batches side by side").
+// Pixels of different triangles and materials share a batch.
 // Without SSE2 the batch shades its pixels one by one.
 #include <cstdint>
 
@@ -21,11 +23,13 @@
 namespace facet::cpu {
 
 #if defined(FACET_AVX2_LANES)
-// shadeLanes<Float8> (phong_lanes.h); call only where widestLanes() is 8 or more (phong_batch_avx2.cpp, built for AVX2).
+// shadeLanes<Float8>, or <Twice<Float8>> for count > 8 (phong_lanes.h); call only where widestLanes() is 8 or more
+// (phong_batch_avx2.cpp, built for AVX2).
 void shadeEightLanes(const FrameInputs& frame, const ShadowMaps& maps, const PhongLanes& in, float* rgba, const std::size_t* offsets, int count);
 #endif
 #if defined(FACET_AVX512_LANES)
-// shadeLanes<Float16>; call only where widestLanes() is 16 (phong_batch_avx512.cpp, built for AVX-512F).
+// shadeLanes<Float16>, or <Twice<Float16>> for count > 16; call only where widestLanes() is 16 (phong_batch_avx512.cpp,
+// built for AVX-512F).
 void shadeSixteenLanes(const FrameInputs& frame, const ShadowMaps& maps, const PhongLanes& in, float* rgba, const std::size_t* offsets, int count);
 #endif
 
@@ -51,7 +55,7 @@ class PhongBatch {
     }
     in_.back[k] = back ? 1.0f : 0.0f;  // a back face: N is negated
     in_.ka[k] = material.ka, in_.kd[k] = material.kd, in_.ks[k] = material.ks, in_.n[k] = material.shininess, in_.m[k] = material.metallic;
-    if (count_ == lanes_) flush();
+    if (count_ == capacity_) flush();
   }
 
 #if defined(__SSE2__)
@@ -81,7 +85,7 @@ class PhongBatch {
       _mm_store_ps(in_.E[c] + at, _mm_set1_ps(material.emissive[c]));
     }
     count_ += 4;
-    if (count_ == lanes_) flush();
+    if (count_ == capacity_) flush();
   }
 #endif
 
@@ -93,6 +97,7 @@ class PhongBatch {
   const ShadowMaps& maps_;
   glm::vec4* pixels_;  // the colour buffer, linear RGBA
   int lanes_;
+  int capacity_;  // pixels queued before they are shaded: twice the lanes at 16 (lane_pairs.h)
   int count_ = 0;
   std::size_t offset_[PhongLanes::kMost];
   PhongLanes in_;

@@ -8,7 +8,7 @@
 namespace facet::cpu {
 
 struct PhongLanes {
-  static constexpr int kMost = 16;  // each column 64 bytes, aligned for one 512-bit load
+  static constexpr int kMost = 32;  // twice sixteen lanes (lane_pairs.h); each column aligned for 512-bit loads
   alignas(64) float P[3][kMost], N[3][kMost], O[3][kMost], E[3][kMost], D[kMost], back[kMost];
   alignas(64) float ka[kMost], kd[kMost], ks[kMost], n[kMost], m[kMost];
 };

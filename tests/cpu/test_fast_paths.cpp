@@ -159,7 +159,7 @@ TEST_CASE("CPU renderer: the image does not depend on the thread count, nor on t
   }
 }
 
-TEST_CASE("Phong batch: four, eight and sixteen lanes at a time give the bits of illuminate<float>, shade and the sRGB encode, per pixel") {
+TEST_CASE("Phong batch: four, eight and sixteen lanes at a time, and twice eight or sixteen, give the bits of illuminate<float>, shade and the sRGB encode, per pixel") {
   INFO("this CPU runs " << cpu::widestLanes() << " lanes");
   std::vector<int> widths{1, 4};
   for (int wide : {8, 16})
@@ -196,31 +196,40 @@ TEST_CASE("Phong batch: four, eight and sixteen lanes at a time give the bits of
         maps.reset(frame.shadows.mapSize, frame.shadowLayerCount);
         for (float& d : maps.depth) d = unit(random);  // some texels nearer than the points, some farther
 
-        constexpr int kPixels = 4013;  // leaves 1, 5 and 13 pixels for the last batch of four, eight and sixteen lanes
+        // Four runs of pixels, each shaded to its end (a flush, as at the end of a tile), so that every width
+        // meets a short last batch: 21, 13, 6 and 3 pixels of a batch of 32 (twice sixteen lanes); 5, 13, 6
+        // and 3 of 16 (twice eight); 1, 1, 2 and 3 of four.
+        constexpr int kRuns[] = {1013, 1005, 1958, 1955};
+        constexpr int kPixels = 1013 + 1005 + 1958 + 1955;
         ColorBuffer batched(kPixels, 1, glm::vec4(0.0f)), scalar(kPixels, 1, glm::vec4(0.0f));
         std::deque<CourseMaterial> materials;  // each pixel its own material
         cpu::PhongBatch batch(frame, maps, batched.data(), lanes);
         glm::vec3 anchor(0.0f);
-        for (int i = 0; i < kPixels; ++i) {
-          // Every other run of 16 pixels lies close together, as a surface's pixels do: the lanes of a batch read
-          // one face of a point light's cube (one projection for all of them); the others scatter over several.
-          if (i % 16 == 0) anchor = {coordinate(random), coordinate(random) * 0.3f, coordinate(random)};
-          const glm::vec3 P = (i / 16) % 2 == 0 ? glm::vec3{coordinate(random), coordinate(random) * 0.3f, coordinate(random)}
-                                                : anchor + 0.02f * glm::vec3{coordinate(random), coordinate(random), coordinate(random)};
-          const glm::vec3 N = glm::normalize(glm::vec3(coordinate(random), coordinate(random), coordinate(random)));
-          const glm::vec3 baseColor{unit(random), unit(random), unit(random)};
-          CourseMaterial material;
-          material.emissive = glm::vec3(0.05f * unit(random));
-          material.ka = unit(random), material.kd = unit(random), material.ks = unit(random);
-          material.shininess = 1.0f + 200.0f * unit(random);
-          const bool back = i % 5 == 0;
-          const glm::vec3 interpolated = N * (0.5f + unit(random));  // not unit length, as interpolated normals are
-          materials.push_back(material);
-          batch.add(static_cast<std::size_t>(i), P, interpolated, back, baseColor, materials.back(), materials.back().emissive, 0.0f);
-          const glm::vec3 lit = back ? -cpu::normalize3(interpolated) : cpu::normalize3(interpolated);
-          scalar.at(i, 0) = glm::vec4(cpu::shade(cpu::illuminate(frame, maps, cpu::laneMaterial(material), P, lit, cpu::viewVector<float>(frame, P)), baseColor), 1.0f);
+        for (int run = 0, i = 0; run < 4; ++run) {
+          for (int j = 0; j < kRuns[run]; ++j, ++i) {
+            // Of every four runs of 16 pixels, the first scatters (over several faces of a point light's cube);
+            // the others lie close together, as a surface's pixels do, so that the lanes of a batch read one face
+            // (one projection for all of them): the second alone, the third and fourth (32 pixels) as one.
+            const int group = (j / 16) % 4;
+            if (j % 16 == 0 && group != 3) anchor = {coordinate(random), coordinate(random) * 0.3f, coordinate(random)};
+            const glm::vec3 P = group == 0 ? glm::vec3{coordinate(random), coordinate(random) * 0.3f, coordinate(random)}
+                                           : anchor + 0.02f * glm::vec3{coordinate(random), coordinate(random), coordinate(random)};
+            const glm::vec3 N = glm::normalize(glm::vec3(coordinate(random), coordinate(random), coordinate(random)));
+            const glm::vec3 baseColor{unit(random), unit(random), unit(random)};
+            CourseMaterial material;
+            material.emissive = glm::vec3(0.05f * unit(random));
+            material.ka = unit(random), material.kd = unit(random), material.ks = unit(random);
+            material.shininess = 1.0f + 200.0f * unit(random);
+            const bool back = i % 5 == 0;
+            const glm::vec3 interpolated = N * (0.5f + unit(random));  // not unit length, as interpolated normals are
+            materials.push_back(material);
+            batch.add(static_cast<std::size_t>(i), P, interpolated, back, baseColor, materials.back(), materials.back().emissive, 0.0f);
+            const glm::vec3 lit = back ? -cpu::normalize3(interpolated) : cpu::normalize3(interpolated);
+            scalar.at(i, 0) =
+                glm::vec4(cpu::shade(cpu::illuminate(frame, maps, cpu::laneMaterial(material), P, lit, cpu::viewVector<float>(frame, P)), baseColor), 1.0f);
+          }
+          batch.flush();
         }
-        batch.flush();
         CAPTURE(static_cast<int>(model));
         CAPTURE(perspective);
         CAPTURE(pcfRadius);
