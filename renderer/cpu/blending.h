@@ -67,17 +67,37 @@ inline glm::vec4 blend(glm::vec4 held, glm::vec3 fragment, float alpha, Blending
   return glm::vec4(out.color, out.alpha);
 }
 
+// How a pass writes its fragments into the colour buffer: blended (with each
+// pixel's α, by the frame's equation, additive or not) rather than opaque.
+struct BlendOver {
+  Blending blending;
+  bool additive;
+};
+
 #if defined(__SSE2__)
-// blend for four neighbouring pixels of a row, four lanes: held and fragments
-// point at four RGBA pixels each (the fragments' alpha unread), alpha at four floats.
-inline void blendFour(float* held, const float* fragments, const float* alpha, Blending blending, bool additive) {
-  HeldColor<Float4> behind;
-  Vec3x4 fragment;
-  Float4 unread;
-  loadPixels(held, behind.color, behind.alpha);
-  loadPixels(fragments, fragment, unread);
-  const HeldColor<Float4> out = blendLanes<Float4>(behind, fragment, Float4(_mm_loadu_ps(alpha)), blending, additive);
-  storePixels(held, out.color, out.alpha);
+// blend for up to four pixels at once, four lanes: lanes [0, count) of
+// `color` and `alpha` over the RGBA pixels at rgba + 4·offsets[k] (a
+// transpose in registers each way; the lanes past count read and write nothing).
+inline void blendPixels(float* rgba, const std::size_t* offsets, int count, const Vec3x4& color, Float4 alpha, const BlendOver& over) {
+  __m128 pixel[4];
+  for (int k = 0; k < 4; ++k) pixel[k] = k < count ? _mm_loadu_ps(rgba + 4 * offsets[k]) : _mm_setzero_ps();
+  _MM_TRANSPOSE4_PS(pixel[0], pixel[1], pixel[2], pixel[3]);
+  const HeldColor<Float4> held{{Float4(pixel[0]), Float4(pixel[1]), Float4(pixel[2])}, Float4(pixel[3])};
+  const HeldColor<Float4> out = blendLanes<Float4>(held, color, alpha, over.blending, over.additive);
+  pixel[0] = out.color.x.v, pixel[1] = out.color.y.v, pixel[2] = out.color.z.v, pixel[3] = out.alpha.v;
+  _MM_TRANSPOSE4_PS(pixel[0], pixel[1], pixel[2], pixel[3]);
+  for (int k = 0; k < count && k < 4; ++k) _mm_storeu_ps(rgba + 4 * offsets[k], pixel[k]);
+}
+
+// The same for a wider lane type (eight, sixteen, or twice either), four lanes at a time.
+template <class F>
+void blendPixels(float* rgba, const std::size_t* offsets, int count, const Vec3Of<F>& color, F alpha, const BlendOver& over) {
+  constexpr int kLanes = kLaneCount<F>;
+  alignas(64) float c[3][kLanes], a[kLanes];
+  storeLanes(c[0], color.x), storeLanes(c[1], color.y), storeLanes(c[2], color.z), storeLanes(a, alpha);
+  for (int q = 0; q < count; q += 4)
+    blendPixels(rgba, offsets + q, count - q, Vec3x4(Float4(_mm_load_ps(c[0] + q)), Float4(_mm_load_ps(c[1] + q)), Float4(_mm_load_ps(c[2] + q))),
+                Float4(_mm_load_ps(a + q)), over);
 }
 #endif
 

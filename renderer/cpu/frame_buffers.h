@@ -121,9 +121,8 @@ struct FrameBuffers {
   std::vector<DrawnLine> lines;  // the lit pass's segments and points (line_pass.h)
   std::vector<std::uint32_t> visible;  // hsr = scanline: each pixel's polygon (scanline_zbuffer.h)
   // Transparency: the lit pass's triangle order (the opaque ones, then
-  // FrameInputs::transparentOrder), and the blended fragments' colours before they blend.
+  // FrameInputs::transparentOrder).
   std::vector<std::uint32_t> submission;
-  ColorBuffer fragments;
   // Volume ray casting: each pixel's window z after the opaque surfaces and lines, where its rays stop.
   std::vector<float> depth;
   // Pixels Phong's lighting takes at a time: 8, 4 or 1 (lane_width.h).

@@ -58,10 +58,12 @@ LaneMaterial<float> vertexMaterial(const CourseMaterial& material, const Mesh& m
 // by row) names a triangle, and writes (colour, 1) there into `color`; with
 // `normals`, (N, 1) of the normal shading reads there instead (the normals
 // stage: flat's triangle normal, which the bins hold in their illumination's
-// place, or Phong's and pbr's bent, normalized and two-sided normal).
+// place, or Phong's and pbr's bent, normalized and two-sided normal). With
+// `over` (a blended triangle's pass), each colour blends over what `color`
+// holds with the pixel's α from `alpha` (the tile's, row by row) instead.
 template <ShadingMode kMode>
 void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, WorkerBins::TileScratch& scratch, const std::uint32_t* ids,
-               const TileRect& r, const TileRect& box, ColorBuffer& color, bool normals, int lanes) {
+               const TileRect& r, const TileRect& box, ColorBuffer& color, bool normals, int lanes, const BlendOver* over, const float* alpha) {
   const int tx0 = box.x0, ty0 = box.y0, tx1 = box.x1, ty1 = box.y1;
   constexpr VaryingLayout layout = varyingLayout(kMode);
   std::uint32_t current = kNoTriangle;
@@ -78,7 +80,12 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
   const bool foggy = frame.fog.mode != FogMode::None;  // fog reads 1/w, set up with the varyings
   bool back = false;
   const Illumination* flat = nullptr;
-  PhongBatch batch(frame, maps, color.data(), lanes);  // Phong: 4, 8, 16 or 32 pixels' illumination at a time
+  PhongBatch batch(frame, maps, color.data(), lanes, over);  // Phong: 4, 8, 16 or 32 pixels' illumination at a time
+  // A shaded colour C at the pixel: (C, 1), or C blended over the buffer with the pixel's α.
+  const auto write = [&](int px, int py, glm::vec3 C) {
+    glm::vec4& held = color.at(px, py);
+    held = over ? blend(held, C, alpha[(py - r.y0) * kTileSize + (px - r.x0)], over->blending, over->additive) : opaque(C);
+  };
   for (int py = ty0; py <= ty1; ++py)
     for (int px = tx0; px <= tx1; ++px) {
       const std::uint32_t id = ids[(py - r.y0) * kTileSize + (px - r.x0)];
@@ -119,7 +126,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
           const __m128 P[3] = {in->varying4(0, px, py, w), in->varying4(1, px, py, w), in->varying4(2, px, py, w)};
           const __m128 N[3] = {in->varying4(3, px, py, w), in->varying4(4, px, py, w), in->varying4(5, px, py, w)};
           batch.add4(static_cast<std::size_t>(py) * static_cast<std::size_t>(color.width()) + static_cast<std::size_t>(px), P, N, back,
-                     material->baseColor, *material);
+                     material->baseColor, *material, over ? _mm_loadu_ps(&alpha[(py - r.y0) * kTileSize + (px - r.x0)]) : _mm_set1_ps(1.0f));
           px += 3;
           continue;
         }
@@ -167,7 +174,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
       else if (texture)
         baseColor *= glm::vec3(sampleBaseColorTexture(*texture, *material, stAt(material->baseColorSet), derivativesAt(material->baseColorSet)));
       if (material->unlit) {  // KHR_materials_unlit: O_d itself, through the fog
-        color.at(px, py) = opaque(fogged(frame.fog, baseColor, depth));
+        write(px, py, fogged(frame.fog, baseColor, depth));
         continue;
       }
       glm::vec3 lit;
@@ -181,7 +188,8 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
       } else if constexpr (kMode == ShadingMode::Phong) {
         // N is normalized (and negated on a back face, two-sided lighting) in the batch
         batch.add(static_cast<std::size_t>(py) * static_cast<std::size_t>(color.width()) + static_cast<std::size_t>(px), {v[0], v[1], v[2]},
-                  interpolatedNormal, back, baseColor, *material, emissiveMap ? emission() : material->emissive, depth);
+                  interpolatedNormal, back, baseColor, *material, emissiveMap ? emission() : material->emissive, depth,
+                  over ? alpha[(py - r.y0) * kTileSize + (px - r.x0)] : 1.0f);
         continue;  // written when the batch is shaded
       } else if constexpr (kMode == ShadingMode::Gouraud) {
         const int side = back ? 6 : 0;
@@ -193,7 +201,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         if (emissiveMap) I.specular = emission() + I.specular;  // summed with k_e = 0 for the triangle
         lit = shade(I, baseColor);
       }
-      color.at(px, py) = opaque(fogged(frame.fog, lit, depth));
+      write(px, py, fogged(frame.fog, lit, depth));
     }
   batch.flush();
 }
@@ -233,21 +241,22 @@ void gatherVisible(const std::vector<WorkerBins>& workers, const PolygonNumberin
 
 // Shading in the frame's mode.
 void shadeIn(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, WorkerBins::TileScratch& scratch, const std::uint32_t* ids,
-             const TileRect& r, const TileRect& box, ColorBuffer& color, int lanes, bool normals = false) {
+             const TileRect& r, const TileRect& box, ColorBuffer& color, int lanes, bool normals, const BlendOver* over = nullptr,
+             const float* alpha = nullptr) {
   switch (frame.shading) {
-    case ShadingMode::Pbr: shadeTile<ShadingMode::Pbr>(scene, frame, maps, scratch, ids, r, box, color, normals, lanes); break;
-    case ShadingMode::Phong: shadeTile<ShadingMode::Phong>(scene, frame, maps, scratch, ids, r, box, color, normals, lanes); break;
-    case ShadingMode::Gouraud: shadeTile<ShadingMode::Gouraud>(scene, frame, maps, scratch, ids, r, box, color, normals, lanes); break;
-    default: shadeTile<ShadingMode::Flat>(scene, frame, maps, scratch, ids, r, box, color, normals, lanes); break;
+    case ShadingMode::Pbr: shadeTile<ShadingMode::Pbr>(scene, frame, maps, scratch, ids, r, box, color, normals, lanes, over, alpha); break;
+    case ShadingMode::Phong: shadeTile<ShadingMode::Phong>(scene, frame, maps, scratch, ids, r, box, color, normals, lanes, over, alpha); break;
+    case ShadingMode::Gouraud: shadeTile<ShadingMode::Gouraud>(scene, frame, maps, scratch, ids, r, box, color, normals, lanes, over, alpha); break;
+    default: shadeTile<ShadingMode::Flat>(scene, frame, maps, scratch, ids, r, box, color, normals, lanes, over, alpha); break;
   }
 }
 
 // Transparency (PIPELINE.md, section 7): the tile's blended triangles in
 // their order, after everything opaque. Each one's fragments that pass the
 // depth test (no depth write) get their α, are shaded as a visible fragment
-// is (into `fragments`), and blend into the colour buffer.
+// is, and blend into the colour buffer.
 void blendTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, VaryingLayout layout, WorkerBins::TileScratch& scratch,
-               const TileRect& r, ColorBuffer& fragments, ColorBuffer& color, int lanes) {
+               const TileRect& r, ColorBuffer& color, int lanes) {
   std::fill(std::begin(scratch.fragment), std::end(scratch.fragment), kNoTriangle);
   for (const WorkerBins::TileScratch::Blended& blended : scratch.blended) {
     WorkerBins::TileTriangle& triangle = scratch.triangles[blended.id];
@@ -290,23 +299,11 @@ void blendTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
           reach(taken.first, taken.last, py);
         });
     if (drawn.x0 > drawn.x1) continue;
-    shadeIn(scene, frame, maps, scratch, scratch.fragment, r, drawn, fragments, lanes);
-    for (int py = drawn.y0; py <= drawn.y1; ++py)
-      for (int px = drawn.x0; px <= drawn.x1; ++px) {
-        const int k = (py - r.y0) * kTileSize + (px - r.x0);
-        if (scratch.fragment[k] != blended.id) continue;
-#if defined(__SSE2__)
-        const std::uint32_t* taken = &scratch.fragment[k];  // four of the triangle's pixels in a row: blended on four lanes
-        if (px + 3 <= drawn.x1 && taken[1] == blended.id && taken[2] == blended.id && taken[3] == blended.id) {
-          blendFour(&color.at(px, py).x, &fragments.at(px, py).x, &scratch.alpha[k], frame.blending, material.additive);
-          std::fill_n(&scratch.fragment[k], 4, kNoTriangle);
-          px += 3;
-          continue;
-        }
-#endif
-        scratch.fragment[k] = kNoTriangle;
-        color.at(px, py) = blend(color.at(px, py), glm::vec3(fragments.at(px, py)), scratch.alpha[k], frame.blending, material.additive);
-      }
+    // Shaded as a visible fragment is, and blended over the colour buffer with its α as it is written.
+    const BlendOver over{frame.blending, material.additive};
+    shadeIn(scene, frame, maps, scratch, scratch.fragment, r, drawn, color, lanes, false, &over, scratch.alpha);
+    for (int py = drawn.y0; py <= drawn.y1; ++py)  // the box holds this triangle's pixels or none
+      std::fill_n(&scratch.fragment[(py - r.y0) * kTileSize + (drawn.x0 - r.x0)], drawn.x1 - drawn.x0 + 1, kNoTriangle);
   }
 }
 
@@ -404,7 +401,6 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
     order.insert(order.end(), frame.transparentOrder.begin(), frame.transparentOrder.end());
     if (order.size() != v.firstTriangle.back())
       throw Error("transparency: the frame's order has " + std::to_string(order.size()) + " triangles, the scene " + std::to_string(v.firstTriangle.back()));
-    if (!triangleIds && !fragmentCounts && !normals) buffers.fragments.reset(frame.width, frame.height, glm::vec4(0.0f));
   }
   const std::uint32_t* order = painter ? frame.paintersOrder.data() : blending ? buffers.submission.data() : nullptr;
   forEachRange(pool, v.firstTriangle.back(), [&](std::size_t begin, std::size_t end, int w) {
@@ -508,7 +504,7 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
     }
     shadeIn(scene, frame, maps, scratch, scratch.id, r, r, color, buffers.lanes, normals);
     drawLines(frame, buffers.lines, r, painter ? nullptr : scratch.depth, kTileSize, color);  // the painter has no depth to test
-    if (!scratch.blended.empty() && !normals) blendTile(scene, frame, maps, layout, scratch, r, buffers.fragments, color, buffers.lanes);
+    if (!scratch.blended.empty() && !normals) blendTile(scene, frame, maps, layout, scratch, r, color, buffers.lanes);
     if (keepDepth)
       for (int py = r.y0; py <= r.y1; ++py)
         std::copy_n(scratch.depth + (py - r.y0) * kTileSize, r.x1 - r.x0 + 1,

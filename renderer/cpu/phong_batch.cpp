@@ -6,8 +6,8 @@
 
 namespace facet::cpu {
 
-PhongBatch::PhongBatch(const FrameInputs& frame, const ShadowMaps& maps, glm::vec4* pixels, int lanes)
-    : frame_(frame), maps_(maps), pixels_(pixels), lanes_(lanes), capacity_(lanes >= 8 ? 2 * lanes : lanes) {
+PhongBatch::PhongBatch(const FrameInputs& frame, const ShadowMaps& maps, glm::vec4* pixels, int lanes, const BlendOver* over)
+    : frame_(frame), maps_(maps), pixels_(pixels), over_(over), lanes_(lanes), capacity_(lanes >= 8 ? 2 * lanes : lanes) {
   checkLanes(lanes);
 }
 
@@ -21,7 +21,9 @@ void PhongBatch::flush() {
     const glm::vec3 E{in_.E[0][0], in_.E[1][0], in_.E[2][0]};
     const LaneMaterial<float> material{E, in_.ka[0], in_.kd[0], in_.ks[0], in_.n[0], in_.m[0]};
     const glm::vec3 lit = shade(illuminate(frame_, maps_, material, P, N, viewVector<float>(frame_, P)), O);
-    pixels_[offset_[0]] = opaque(fogged(frame_.fog, lit, in_.D[0]));
+    glm::vec4& held = pixels_[offset_[0]];
+    const glm::vec3 C = fogged(frame_.fog, lit, in_.D[0]);
+    held = over_ ? blend(held, C, in_.alpha[0], over_->blending, over_->additive) : opaque(C);
     count_ = 0;
     return;
   }
@@ -32,20 +34,21 @@ void PhongBatch::flush() {
     for (int c = 0; c < 3; ++c) in_.P[c][k] = in_.P[c][0], in_.N[c][k] = in_.N[c][0], in_.O[c][k] = in_.O[c][0], in_.E[c][k] = in_.E[c][0];
     in_.back[k] = in_.back[0];
     in_.D[k] = in_.D[0];
+    in_.alpha[k] = in_.alpha[0];
     in_.ka[k] = in_.ka[0], in_.kd[k] = in_.kd[0], in_.ks[k] = in_.ks[0], in_.n[k] = in_.n[0], in_.m[k] = in_.m[0];
   }
   static_assert(sizeof(glm::vec4) == 4 * sizeof(float));
   float* const rgba = &pixels_[0].x;  // the colour buffer as floats, four a pixel
 #if defined(FACET_AVX512_LANES)
-  if (lanes_ == 16 && shaded >= 16) shadeSixteenLanes(frame_, maps_, in_, rgba, offset_, count_);  // 16 or twice 16
+  if (lanes_ == 16 && shaded >= 16) shadeSixteenLanes(frame_, maps_, in_, rgba, offset_, count_, over_);  // 16 or twice 16
   else
 #endif
 #if defined(FACET_AVX2_LANES)
-  if (shaded >= 8) shadeEightLanes(frame_, maps_, in_, rgba, offset_, count_);  // 8 or twice 8
+  if (shaded >= 8) shadeEightLanes(frame_, maps_, in_, rgba, offset_, count_, over_);  // 8 or twice 8
   else
 #endif
 #if defined(__SSE2__)
-    for (int first = 0; first < shaded; first += 4) shadeLanes<Float4>(frame_, maps_, in_, first, rgba, offset_, count_);
+    for (int first = 0; first < shaded; first += 4) shadeLanes<Float4>(frame_, maps_, in_, first, rgba, offset_, count_, over_);
 #endif
   count_ = 0;
 }

@@ -11,6 +11,7 @@
 // Without SSE2 the batch shades its pixels one by one.
 #include <cstdint>
 
+#include "cpu/blending.h"
 #include "cpu/lane_width.h"
 #include "cpu/lighting.h"
 #include "cpu/phong_lanes.h"
@@ -25,28 +26,33 @@ namespace facet::cpu {
 #if defined(FACET_AVX2_LANES)
 // shadeLanes<Float8>, or <Twice<Float8>> for count > 8 (phong_lanes.h); call only where widestLanes() is 8 or more
 // (phong_batch_avx2.cpp, built for AVX2).
-void shadeEightLanes(const FrameInputs& frame, const ShadowMaps& maps, const PhongLanes& in, float* rgba, const std::size_t* offsets, int count);
+void shadeEightLanes(const FrameInputs& frame, const ShadowMaps& maps, const PhongLanes& in, float* rgba, const std::size_t* offsets, int count,
+                     const BlendOver* over);
 #endif
 #if defined(FACET_AVX512_LANES)
 // shadeLanes<Float16>, or <Twice<Float16>> for count > 16; call only where widestLanes() is 16 (phong_batch_avx512.cpp,
 // built for AVX-512F).
-void shadeSixteenLanes(const FrameInputs& frame, const ShadowMaps& maps, const PhongLanes& in, float* rgba, const std::size_t* offsets, int count);
+void shadeSixteenLanes(const FrameInputs& frame, const ShadowMaps& maps, const PhongLanes& in, float* rgba, const std::size_t* offsets, int count,
+                     const BlendOver* over);
 #endif
 
 class PhongBatch {
  public:
-  // lanes: 16, 8, 4 or 1, at most widestLanes().
-  PhongBatch(const FrameInputs& frame, const ShadowMaps& maps, glm::vec4* pixels, int lanes);
+  // lanes: 16, 8, 4 or 1, at most widestLanes(). With `over`, each pixel
+  // blends over what `pixels` holds with the α it was queued with, else it is written opaque.
+  PhongBatch(const FrameInputs& frame, const ShadowMaps& maps, glm::vec4* pixels, int lanes, const BlendOver* over = nullptr);
 
   // Queues the pixel at pixels[offset]: world position P, the interpolated
   // normal (normalized here, and negated for a back face, as the scalar path
   // does), O_d, the material and the pixel's k_e (the material's, or k_e·E
-  // with an emissive texture) and its eye depth d (fog); shades when the batch is full.
+  // with an emissive texture), its eye depth d (fog) and α (a blended pass);
+  // shades when the batch is full.
   void add(std::size_t offset, glm::vec3 P, glm::vec3 interpolatedNormal, bool back, glm::vec3 baseColor, const CourseMaterial& material,
-           glm::vec3 emissive, float depth) {
+           glm::vec3 emissive, float depth, float alpha = 1.0f) {
     const int k = count_++;
     offset_[k] = offset;
     in_.D[k] = depth;
+    in_.alpha[k] = alpha;
     for (int c = 0; c < 3; ++c) {
       in_.P[c][k] = P[c];
       in_.N[c][k] = interpolatedNormal[c];
@@ -61,17 +67,19 @@ class PhongBatch {
 #if defined(__SSE2__)
   // add() for the four pixels pixels[offset .. offset+3] of one triangle, as lanes; frames without fog only.
   __attribute__((always_inline)) void add4(std::size_t offset, const __m128 (&P)[3], const __m128 (&interpolatedNormal)[3], bool back,
-                                           glm::vec3 baseColor, const CourseMaterial& material) {
+                                           glm::vec3 baseColor, const CourseMaterial& material, __m128 alpha) {
     const int at = count_;
     if (at % 4 != 0 || lanes_ < 4) {  // not on a four-lane column: one pixel at a time
-      alignas(16) float p[3][4], n[3][4];
+      alignas(16) float p[3][4], n[3][4], a[4];
       for (int c = 0; c < 3; ++c) _mm_store_ps(p[c], P[c]), _mm_store_ps(n[c], interpolatedNormal[c]);
+      _mm_store_ps(a, alpha);
       for (int k = 0; k < 4; ++k)
         add(offset + static_cast<std::size_t>(k), {p[0][k], p[1][k], p[2][k]}, {n[0][k], n[1][k], n[2][k]}, back, baseColor, material, material.emissive,
-            0.0f);
+            0.0f, a[k]);
       return;
     }
     for (int k = 0; k < 4; ++k) offset_[at + k] = offset + static_cast<std::size_t>(k);
+    _mm_store_ps(in_.alpha + at, alpha);
     _mm_store_ps(in_.back + at, _mm_set1_ps(back ? 1.0f : 0.0f));
     _mm_store_ps(in_.ka + at, _mm_set1_ps(material.ka));
     _mm_store_ps(in_.kd + at, _mm_set1_ps(material.kd));
@@ -96,6 +104,7 @@ class PhongBatch {
   const FrameInputs& frame_;
   const ShadowMaps& maps_;
   glm::vec4* pixels_;  // the colour buffer, linear RGBA
+  const BlendOver* over_;
   int lanes_;
   int capacity_;  // pixels queued before they are shaded: twice the lanes at 16 (lane_pairs.h)
   int count_ = 0;

@@ -14,9 +14,9 @@
 namespace facet::cpu {
 
 __attribute__((flatten)) void shadeEightLanes(const FrameInputs& frame, const ShadowMaps& maps, const PhongLanes& in, float* rgba,
-                                              const std::size_t* offsets, int count) {
-  if (count > 8) shadeLanes<Twice<Float8>>(frame, maps, in, 0, rgba, offsets, count);
-  else shadeLanes<Float8>(frame, maps, in, 0, rgba, offsets, count);
+                                              const std::size_t* offsets, int count, const BlendOver* over) {
+  if (count > 8) shadeLanes<Twice<Float8>>(frame, maps, in, 0, rgba, offsets, count, over);
+  else shadeLanes<Float8>(frame, maps, in, 0, rgba, offsets, count, over);
 }
 
 }  // namespace facet::cpu

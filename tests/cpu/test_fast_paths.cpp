@@ -3,6 +3,7 @@
 // the IEC formula), the four-lane Phong batch against illuminate<float>,
 // thread counts and reused buffers (shadow maps cleared tile by tile)
 // against a fresh renderer.
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -337,27 +338,34 @@ TEST_CASE("Depth rows: frontRow's four-lane test takes the pixels the one-pixel 
 }
 
 #if defined(__SSE2__)
-TEST_CASE("Blending: blendFour's four lanes give blend's bits per pixel, both equations, additive or not, alpha out of range or NaN") {
+TEST_CASE("Blending: blendPixels' four lanes give blend's bits per pixel at their offsets, both equations, additive or not, alpha out of range or NaN") {
   std::mt19937 random(47);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f), wide(-0.5f, 1.5f);
   const float nan = std::numeric_limits<float>::quiet_NaN();
   for (const Blending blending : {Blending::Straight, Blending::Premultiplied})
     for (const bool additive : {false, true})
       for (int trial = 0; trial < 200; ++trial) {
-        float held[16], fragments[16], alpha[4];
+        float held[32], fragments[12], alpha[4];  // eight RGBA pixels, four of which the lanes blend over
         for (float& c : held) c = unit(random);
         for (float& c : fragments) c = wide(random);
         for (float& a : alpha) a = wide(random);
+        std::size_t offsets[8] = {0, 1, 2, 3, 4, 5, 6, 7};
+        std::shuffle(std::begin(offsets), std::end(offsets), random);
+        const int count = 1 + trial % 4;  // the lanes past count touch nothing
         if (trial % 5 == 0) alpha[trial % 4] = nan;
-        if (trial % 7 == 0) held[3 + 4 * (trial % 4)] = 0.0f, alpha[trial % 4] = 0.0f;  // nothing behind, nothing in front: α_o = 0
-        if (trial % 3 == 0) held[3 + 4 * ((trial + 1) % 4)] = 1.0f;
-        float plain[16];
-        for (int k = 0; k < 4; ++k) {
-          const glm::vec4 out = cpu::blend({held[4 * k], held[4 * k + 1], held[4 * k + 2], held[4 * k + 3]},
-                                           {fragments[4 * k], fragments[4 * k + 1], fragments[4 * k + 2]}, alpha[k], blending, additive);
-          std::memcpy(plain + 4 * k, &out, sizeof out);
+        if (trial % 7 == 0) held[3 + 4 * offsets[trial % 4]] = 0.0f, alpha[trial % 4] = 0.0f;  // nothing behind, nothing in front: α_o = 0
+        if (trial % 3 == 0) held[3 + 4 * offsets[(trial + 1) % 4]] = 1.0f;
+        float plain[32];
+        std::memcpy(plain, held, sizeof plain);
+        for (int k = 0; k < count; ++k) {
+          const float* behind = held + 4 * offsets[k];
+          const glm::vec4 out = cpu::blend({behind[0], behind[1], behind[2], behind[3]}, {fragments[k], fragments[4 + k], fragments[8 + k]}, alpha[k],
+                                           blending, additive);
+          std::memcpy(plain + 4 * offsets[k], &out, sizeof out);
         }
-        cpu::blendFour(held, fragments, alpha, blending, additive);
+        const cpu::Vec3x4 color(cpu::Float4(_mm_loadu_ps(fragments)), cpu::Float4(_mm_loadu_ps(fragments + 4)), cpu::Float4(_mm_loadu_ps(fragments + 8)));
+        cpu::blendPixels(held, offsets, count, color, cpu::Float4(_mm_loadu_ps(alpha)), cpu::BlendOver{blending, additive});
+        CAPTURE(count);
         CHECK(std::memcmp(held, plain, sizeof plain) == 0);
       }
 }
