@@ -9,6 +9,7 @@
 #include <emmintrin.h>
 #endif
 
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include "cpu/clipper.h"
@@ -57,6 +58,13 @@ class Interpolation {
 
   // Varying k at pixel (px, py), by the operations of varyingsAt.
   float varyingAt(int k, int px, int py) const { return varying_[static_cast<std::size_t>(k)].at(px, py) * (1.0f / oneOverW_.at(px, py)); }
+  // 1 / plane(1/w) at pixel (px, py), and varyings k .. k+2 with it, by the operations of varyingsAt
+  // (in registers: a varying read back from varyingsAt's stores a pair at a time waits on store forwarding).
+  float inverseWAt(int px, int py) const { return 1.0f / oneOverW_.at(px, py); }
+  glm::vec3 varying3At(int k, int px, int py, float inverseW) const {
+    const auto at = [&](int j) { return varying_[static_cast<std::size_t>(j)].at(px, py) * inverseW; };
+    return {at(k), at(k + 1), at(k + 2)};
+  }
 
   // dFdx and dFdy of varyings k, k + 1 as llvmpipe computes them
   // (PIPELINE.md, section 8): differences within the pixel's 2×2 quad, per

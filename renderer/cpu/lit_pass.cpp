@@ -79,6 +79,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
   const bool procedural = frame.procedural != Procedural::None;
   const bool foggy = frame.fog.mode != FogMode::None;  // fog reads 1/w, set up with the varyings
   bool back = false;
+  bool plain = false;
   const Illumination* flat = nullptr;
   PhongBatch batch(frame, maps, color.data(), lanes, over);  // Phong: 4, 8, 16 or 32 pixels' illumination at a time
   // A shaded colour C at the pixel: (C, 1), or C blended over the buffer with the pixel's α.
@@ -113,25 +114,34 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         back = !t.snapped.frontFacing;
         if (used || foggy) in->setUpVaryings(used);
         if constexpr (kMode == ShadingMode::Flat) flat = &bins.flat[2 * index];
+        // Phong's plain pixel: lit, without texture, vertex colours, procedural pattern, bent normal,
+        // emission map or fog; its P and N go to the batch as they are interpolated.
+        plain = kMode == ShadingMode::Phong && !normals && !texture && !colored && !procedural && !normalMap && !bumpable && !emissiveMap && !foggy &&
+                !material->unlit;
       }
+      if constexpr (kMode == ShadingMode::Phong)
+        if (plain) {
+          const std::size_t offset = static_cast<std::size_t>(py) * static_cast<std::size_t>(color.width()) + static_cast<std::size_t>(px);
+          const float* const a = over ? &alpha[(py - r.y0) * kTileSize + (px - r.x0)] : nullptr;
 #if defined(__SSE2__)
-      if constexpr (kMode == ShadingMode::Phong) {
-        // Four pixels of one lit, untextured, uncoloured triangle in a row: interpolation on four lanes,
-        // straight into the batch. (Shorter runs padded with lanes shaded and dropped took fewer
-        // instructions but more time: 31 against 29 ms a sphere-100k frame on eight lanes.)
-        const std::uint32_t* row = &ids[(py - r.y0) * kTileSize + (px - r.x0)];
-        if (!normals && !texture && !colored && !procedural && !normalMap && !bumpable && !emissiveMap && !foggy && !material->unlit && px + 3 <= tx1 &&
-            row[1] == id && row[2] == id && row[3] == id) {
-          const __m128 w = in->inverseW4(px, py);
-          const __m128 P[3] = {in->varying4(0, px, py, w), in->varying4(1, px, py, w), in->varying4(2, px, py, w)};
-          const __m128 N[3] = {in->varying4(3, px, py, w), in->varying4(4, px, py, w), in->varying4(5, px, py, w)};
-          batch.add4(static_cast<std::size_t>(py) * static_cast<std::size_t>(color.width()) + static_cast<std::size_t>(px), P, N, back,
-                     material->baseColor, *material, over ? _mm_loadu_ps(&alpha[(py - r.y0) * kTileSize + (px - r.x0)]) : _mm_set1_ps(1.0f));
-          px += 3;
+          // Four pixels of the triangle in a row: interpolation on four lanes, straight into the batch.
+          // (Shorter runs padded with lanes shaded and dropped took fewer instructions but more time:
+          // 31 against 29 ms a sphere-100k frame on eight lanes.)
+          const std::uint32_t* row = &ids[(py - r.y0) * kTileSize + (px - r.x0)];
+          if (px + 3 <= tx1 && row[1] == id && row[2] == id && row[3] == id) {
+            const __m128 w = in->inverseW4(px, py);
+            const __m128 P[3] = {in->varying4(0, px, py, w), in->varying4(1, px, py, w), in->varying4(2, px, py, w)};
+            const __m128 N[3] = {in->varying4(3, px, py, w), in->varying4(4, px, py, w), in->varying4(5, px, py, w)};
+            batch.add4(offset, P, N, back, material->baseColor, *material, a ? _mm_loadu_ps(a) : _mm_set1_ps(1.0f));
+            px += 3;
+            continue;
+          }
+#endif
+          const float w = in->inverseWAt(px, py);
+          batch.add(offset, in->varying3At(0, px, py, w), in->varying3At(3, px, py, w), back, material->baseColor, *material, material->emissive, 0.0f,
+                    a ? *a : 1.0f);
           continue;
         }
-      }
-#endif
       float v[layout.count];
       if (used) in->varyingsAt(px, py, v);
       // A texture coordinate set at the pixel, and its quad derivatives (ds/dx, dt/dx, ds/dy, dt/dy).
