@@ -52,34 +52,20 @@ class CpuRenderer final : public Renderer {
 
     const auto start = std::chrono::steady_clock::now();
     RayCastCounts volumeCounts;
-    // One pass into the colour buffer: the background (one colour, or the map behind everything in each
-    // pixel's view direction), rows on the pool's threads, then the lit pass. `cleared`: the sample
-    // before left the one colour there (accumulate).
-    const auto drawPass = [&](const FrameInputs& pass, bool cleared) {
-      if (!cleared) {
-        color_.resize(pass.width, pass.height);
-        const bool environment = showsEnvironment(pass);
-        const glm::vec4 background = cpu::backgroundPixel(pass, 0, 0);
-        const auto width = static_cast<std::size_t>(pass.width);
-        cpu::forEachRange(pool_, static_cast<std::size_t>(pass.height), [&](std::size_t begin, std::size_t end, int) {
-          if (!environment) return std::fill(color_.data() + begin * width, color_.data() + end * width, background);
-          for (std::size_t y = begin; y < end; ++y)
-            for (int x = 0; x < pass.width; ++x) color_.at(x, static_cast<int>(y)) = cpu::backgroundPixel(pass, x, static_cast<int>(y));
-        });
-      }
-      cpu::litPass(pool_, buffers_, scene, pass, maps_, color_);
+    // One pass into the colour buffer: the lit pass sets each tile to the background (one colour, or the
+    // map behind everything in each pixel's view direction) before drawing into it.
+    const auto drawPass = [&](const FrameInputs& pass) {
+      color_.resize(pass.width, pass.height);
+      cpu::litPass(pool_, buffers_, scene, pass, maps_, color_, {.background = true});
       if (pass.volume.placed) volumeCounts += cpu::volumePass(pool_, pass, buffers_.depth, color_);
     };
     if (frame.samples.empty()) {
-      drawPass(frame, false);
+      drawPass(frame);
       result.timings.push_back({"lit pass", millisecondsSince(start)});
     } else {  // anti-aliasing: a pass per sample, summed premultiplied (PIPELINE.md, section 7)
-      const bool oneColour = !showsEnvironment(frame);  // the background is the same for every sample
-      const glm::vec4 background = cpu::backgroundPixel(frame, 0, 0);
       for (std::size_t i = 0; i < frame.samples.size(); ++i) {
-        drawPass(sampleFrame(frame, frame.samples[i]), i > 0 && oneColour);
-        const bool more = i + 1 < frame.samples.size();
-        cpu::accumulate(pool_, color_, frame.blending, sum_, i == 0, more && oneColour ? &background : nullptr);
+        drawPass(sampleFrame(frame, frame.samples[i]));
+        cpu::accumulate(pool_, color_, frame.blending, sum_, i == 0);
       }
       result.timings.push_back({"lit pass (" + std::to_string(frame.samples.size()) + " samples)", millisecondsSince(start)});
     }

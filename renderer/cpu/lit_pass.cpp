@@ -16,6 +16,7 @@
 #include "cpu/binning.h"
 #include "cpu/blending.h"
 #include "cpu/depth_rows.h"
+#include "cpu/environment_mapping.h"
 #include "cpu/fog.h"
 #include "cpu/bump_mapping.h"
 #include "cpu/interpolation.h"
@@ -434,7 +435,16 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
   for (WorkerBins& bins : buffers.workers) bins.tile.triangles.reserve(fullestTile), bins.tile.blended.reserve(fullestTile);
   const bool keepDepth = (frame.volume.placed || output.keepDepth) && !triangleIds && !fragmentCounts && !normals;
   if (keepDepth) buffers.depth.assign(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 1.0f);
+  const bool background = output.background && !triangleIds && !fragmentCounts && !normals;
+  const bool environment = showsEnvironment(frame);
+  const glm::vec4 oneColour = backgroundPixel(frame, 0, 0);
   forEachTile(pool, grid, [&](int worker, int tile, const TileRect& r) {
+    if (background)
+      for (int py = r.y0; py <= r.y1; ++py) {
+        if (!environment) std::fill(&color.at(r.x0, py), &color.at(r.x1, py) + 1, oneColour);
+        else
+          for (int px = r.x0; px <= r.x1; ++px) color.at(px, py) = backgroundPixel(frame, px, py);
+      }
     if (trianglesInTile(buffers.workers, tile) == 0 && buffers.lines.empty()) return;
     if (fragmentCounts) {  // depth complexity: every fragment, before the tests; each pixel is in one tile
       forEachTriangleInTile(buffers.workers, v, tile, r, [&](const WorkerBins&, std::uint32_t, const BinnedTriangle& t, const InterpolationVertex (&)[3], const PixelBox& box) {

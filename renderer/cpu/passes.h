@@ -48,6 +48,10 @@ struct LitPassOutput {
   // FrameBuffers::depth holds the z-buffer after the frame (opaque triangles,
   // then lines and points); volume ray casting keeps it too.
   bool keepDepth = false;
+  // Each tile is set to the frame's background (backgroundPixel: one colour,
+  // or the environment map behind the scene) before its triangles are drawn,
+  // while the tile is in the cache: the caller sizes `color` and clears nothing.
+  bool background = false;
 };
 
 // Pass 2: z-buffer and shading into the linear colour buffer `color`

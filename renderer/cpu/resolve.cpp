@@ -27,15 +27,14 @@ void resolve(ThreadPool& pool, const ColorBuffer& buffer, Blending holding, int 
   });
 }
 
-void accumulate(ThreadPool& pool, ColorBuffer& sample, Blending blending, ColorBuffer& sum, bool first, const glm::vec4* clearTo) {
+void accumulate(ThreadPool& pool, const ColorBuffer& sample, Blending blending, ColorBuffer& sum, bool first) {
   if (first) sum.resize(sample.width(), sample.height());
   const auto width = static_cast<std::size_t>(sample.width());
   forEachRange(pool, static_cast<std::size_t>(sample.height()), [&](std::size_t begin, std::size_t end, int) {
-    glm::vec4* const in = sample.data();
+    const glm::vec4* const in = sample.data();
     glm::vec4* const out = sum.data();
     for (std::size_t i = begin * width; i < end * width; ++i) {
       out[i] = (first ? glm::vec4(0.0f) : out[i]) + premultipliedOf(in[i], blending);  // 0 + p, as a sum cleared to 0 (-0 + 0 is +0)
-      if (clearTo) in[i] = *clearTo;
     }
   });
 }

@@ -22,10 +22,7 @@ void resolve(ThreadPool& pool, const ColorBuffer& buffer, Blending holding, int 
 
 // Anti-aliasing: one sample's colour buffer, held as `blending` says, added
 // premultiplied into `sum` (pixel by pixel, in the order the samples are
-// drawn; the first sample sets `sum`'s size and adds itself to 0). Where
-// `clearTo` is given, each of the sample's pixels is set to it once read:
-// the next sample's pass finds its buffer cleared, without a pass of its own
-// over the buffer (33 MB at 1920x1080).
-void accumulate(ThreadPool& pool, ColorBuffer& sample, Blending blending, ColorBuffer& sum, bool first, const glm::vec4* clearTo);
+// drawn; the first sample sets `sum`'s size and adds itself to 0).
+void accumulate(ThreadPool& pool, const ColorBuffer& sample, Blending blending, ColorBuffer& sum, bool first);
 
 }  // namespace facet::cpu
