@@ -53,18 +53,24 @@ class CpuRenderer final : public Renderer {
     const auto start = std::chrono::steady_clock::now();
     RayCastCounts volumeCounts;
     // One pass into the colour buffer: the lit pass sets each tile to the background (one colour, or the
-    // map behind everything in each pixel's view direction) before drawing into it.
-    const auto drawPass = [&](const FrameInputs& pass) {
-      color_.resize(pass.width, pass.height);
-      cpu::litPass(pool_, buffers_, scene, pass, maps_, color_, {.background = true});
+    // map behind everything in each pixel's view direction) before drawing into it. A single-sample
+    // frame with no volume cast after it is resolved by the lit pass tile by tile, into `image`.
+    const auto drawPass = [&](const FrameInputs& pass, Image* image) {
+      if (!image) color_.resize(pass.width, pass.height);
+      cpu::litPass(pool_, buffers_, scene, pass, maps_, color_, {.background = true, .image = image});
       if (pass.volume.placed) volumeCounts += cpu::volumePass(pool_, pass, buffers_.depth, color_);
     };
-    if (frame.samples.empty()) {
-      drawPass(frame);
+    const bool resolvedByTile = frame.samples.empty() && !frame.volume.placed;
+    if (resolvedByTile) {
+      result.image = Image(frame.width, frame.height);
+      drawPass(frame, &result.image);
+      result.timings.push_back({"lit pass and resolve", millisecondsSince(start)});
+    } else if (frame.samples.empty()) {
+      drawPass(frame, nullptr);
       result.timings.push_back({"lit pass", millisecondsSince(start)});
     } else {  // anti-aliasing: a pass per sample, summed premultiplied (PIPELINE.md, section 7)
       for (std::size_t i = 0; i < frame.samples.size(); ++i) {
-        drawPass(sampleFrame(frame, frame.samples[i]));
+        drawPass(sampleFrame(frame, frame.samples[i]), nullptr);
         cpu::accumulate(pool_, color_, frame.blending, sum_, i == 0);
       }
       result.timings.push_back({"lit pass (" + std::to_string(frame.samples.size()) + " samples)", millisecondsSince(start)});
@@ -81,10 +87,12 @@ class CpuRenderer final : public Renderer {
                     share(volumeCounts.savedByTermination));
       result.notes.push_back(line);
     }
-    const auto resolveStart = std::chrono::steady_clock::now();
-    if (frame.samples.empty()) cpu::resolve(pool_, color_, frame.blending, 1, result.image);
-    else cpu::resolve(pool_, sum_, Blending::Premultiplied, static_cast<int>(frame.samples.size()), result.image);
-    result.timings.push_back({"resolve", millisecondsSince(resolveStart)});
+    if (!resolvedByTile) {
+      const auto resolveStart = std::chrono::steady_clock::now();
+      if (frame.samples.empty()) cpu::resolve(pool_, color_, frame.blending, 1, result.image);
+      else cpu::resolve(pool_, sum_, Blending::Premultiplied, static_cast<int>(frame.samples.size()), result.image);
+      result.timings.push_back({"resolve", millisecondsSince(resolveStart)});
+    }
     if (frame.hsr == HiddenSurface::Scanline) {
       const auto frameDepth = static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height) * sizeof(float);
       result.notes.push_back("scanline z-buffer: " + countOf(static_cast<std::size_t>(pool_.size()), "row") + " of depth, " +

@@ -82,6 +82,8 @@ struct WorkerBins {
     std::vector<Blended> blended;
     std::uint32_t fragment[kTileSize * kTileSize];   // the id of the blended triangle drawn there, or none
     float alpha[kTileSize * kTileSize];
+    // The tile's linear colours where the lit pass resolves each tile as it finishes it (LitPassOutput::image).
+    glm::vec4 pixels[kTileSize * kTileSize];
   } tile;
 
   const float* vertex(const PassVertices& v, std::uint32_t ref) const {

@@ -61,7 +61,7 @@ void setUpLines(const Scene& scene, const FrameInputs& frame, const PassVertices
   }
 }
 
-void drawLines(const FrameInputs& frame, const std::vector<DrawnLine>& lines, const TileRect& r, float* depth, int depthStride, ColorBuffer& color) {
+void drawLines(const FrameInputs& frame, const std::vector<DrawnLine>& lines, const TileRect& r, float* depth, int depthStride, const TilePixels& color) {
   for (const DrawnLine& line : lines) {
     const PixelBox& b = line.raster.box;
     const int x0 = std::max(b.minX, r.x0), x1 = std::min(b.maxX, r.x1), y0 = std::max(b.minY, r.y0), y1 = std::min(b.maxY, r.y1);

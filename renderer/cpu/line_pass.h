@@ -11,6 +11,7 @@
 #include "cpu/clipper.h"
 #include "cpu/frame_buffers.h"
 #include "cpu/line_raster.h"
+#include "cpu/tile_pixels.h"
 #include "image/color_buffer.h"
 #include "pipeline/frame_inputs.h"
 #include "scene/scene.h"
@@ -33,6 +34,6 @@ void setUpLines(const Scene& scene, const FrameInputs& frame, const PassVertices
 // Draws the lines that cover pixels of rectangle `r` into the colour buffer, against
 // the z-buffer `depth` (pixel (r.x0, r.y0) first, `depthStride` per row);
 // null: the painter's algorithm, no depth test, each fragment over the last.
-void drawLines(const FrameInputs& frame, const std::vector<DrawnLine>& lines, const TileRect& r, float* depth, int depthStride, ColorBuffer& color);
+void drawLines(const FrameInputs& frame, const std::vector<DrawnLine>& lines, const TileRect& r, float* depth, int depthStride, const TilePixels& color);
 
 }  // namespace facet::cpu

@@ -27,8 +27,10 @@
 #include "cpu/phong_batch.h"
 #include "cpu/physically_based.h"
 #include "cpu/procedural.h"
+#include "cpu/resolve.h"
 #include "cpu/scanline_zbuffer.h"
 #include "cpu/texture_sampling.h"
+#include "cpu/tile_pixels.h"
 #include "cpu/tile_raster.h"
 #include "cpu/varyings.h"
 #include "cpu/vertex_math.h"
@@ -64,7 +66,7 @@ LaneMaterial<float> vertexMaterial(const CourseMaterial& material, const Mesh& m
 // holds with the pixel's α from `alpha` (the tile's, row by row) instead.
 template <ShadingMode kMode>
 void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, WorkerBins::TileScratch& scratch, const std::uint32_t* ids,
-               const TileRect& r, const TileRect& box, ColorBuffer& color, bool normals, int lanes, const BlendOver* over, const float* alpha) {
+               const TileRect& r, const TileRect& box, const TilePixels& color, bool normals, int lanes, const BlendOver* over, const float* alpha) {
   const int tx0 = box.x0, ty0 = box.y0, tx1 = box.x1, ty1 = box.y1;
   constexpr VaryingLayout layout = varyingLayout(kMode);
   std::uint32_t current = kNoTriangle;
@@ -82,7 +84,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
   bool back = false;
   bool plain = false;
   const Illumination* flat = nullptr;
-  PhongBatch batch(frame, maps, color.data(), lanes, over);  // Phong: 4, 8, 16 or 32 pixels' illumination at a time
+  PhongBatch batch(frame, maps, color.first(), lanes, over);  // Phong: 4, 8, 16 or 32 pixels' illumination at a time
   // A shaded colour C at the pixel: (C, 1), or C blended over the buffer with the pixel's α.
   const auto write = [&](int px, int py, glm::vec3 C) {
     glm::vec4& held = color.at(px, py);
@@ -122,7 +124,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
       }
       if constexpr (kMode == ShadingMode::Phong)
         if (plain) {
-          const std::size_t offset = static_cast<std::size_t>(py) * static_cast<std::size_t>(color.width()) + static_cast<std::size_t>(px);
+          const std::size_t offset = color.offset(px, py);
           const float* const a = over ? &alpha[(py - r.y0) * kTileSize + (px - r.x0)] : nullptr;
 #if defined(__SSE2__)
           // Four pixels of the triangle in a row: interpolation on four lanes, straight into the batch.
@@ -198,7 +200,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         lit = shadePhysicallyBased(frame, maps, surface, P, N, viewVector<float>(frame, P));
       } else if constexpr (kMode == ShadingMode::Phong) {
         // N is normalized (and negated on a back face, two-sided lighting) in the batch
-        batch.add(static_cast<std::size_t>(py) * static_cast<std::size_t>(color.width()) + static_cast<std::size_t>(px), {v[0], v[1], v[2]},
+        batch.add(color.offset(px, py), {v[0], v[1], v[2]},
                   interpolatedNormal, back, baseColor, *material, emissiveMap ? emission() : material->emissive, depth,
                   over ? alpha[(py - r.y0) * kTileSize + (px - r.x0)] : 1.0f);
         continue;  // written when the batch is shaded
@@ -252,7 +254,7 @@ void gatherVisible(const std::vector<WorkerBins>& workers, const PolygonNumberin
 
 // Shading in the frame's mode.
 void shadeIn(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, WorkerBins::TileScratch& scratch, const std::uint32_t* ids,
-             const TileRect& r, const TileRect& box, ColorBuffer& color, int lanes, bool normals, const BlendOver* over = nullptr,
+             const TileRect& r, const TileRect& box, const TilePixels& color, int lanes, bool normals, const BlendOver* over = nullptr,
              const float* alpha = nullptr) {
   switch (frame.shading) {
     case ShadingMode::Pbr: shadeTile<ShadingMode::Pbr>(scene, frame, maps, scratch, ids, r, box, color, normals, lanes, over, alpha); break;
@@ -267,7 +269,7 @@ void shadeIn(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
 // depth test (no depth write) get their α, are shaded as a visible fragment
 // is, and blend into the colour buffer.
 void blendTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, VaryingLayout layout, WorkerBins::TileScratch& scratch,
-               const TileRect& r, ColorBuffer& color, int lanes) {
+               const TileRect& r, const TilePixels& color, int lanes) {
   std::fill(std::begin(scratch.fragment), std::end(scratch.fragment), kNoTriangle);
   for (const WorkerBins::TileScratch::Blended& blended : scratch.blended) {
     WorkerBins::TileTriangle& triangle = scratch.triangles[blended.id];
@@ -438,13 +440,20 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
   const bool background = output.background && !triangleIds && !fragmentCounts && !normals;
   const bool environment = showsEnvironment(frame);
   const glm::vec4 oneColour = backgroundPixel(frame, 0, 0);
-  forEachTile(pool, grid, [&](int worker, int tile, const TileRect& r) {
-    if (background)
+  Image* const image = background ? output.image : nullptr;
+  // The tile's colours: the worker's own, resolved into `image` once drawn, or the colour buffer's.
+  const auto pixelsOf = [&](int worker, const TileRect& r) {
+    return image ? TilePixels(buffers.workers[static_cast<std::size_t>(worker)].tile.pixels, kTileSize, r.x0, r.y0) : TilePixels::of(color, r.x0, r.y0);
+  };
+  const auto drawTile = [&](int worker, int tile, const TileRect& r) {
+    if (background) {
+      const TilePixels pixels = pixelsOf(worker, r);
       for (int py = r.y0; py <= r.y1; ++py) {
-        if (!environment) std::fill(&color.at(r.x0, py), &color.at(r.x1, py) + 1, oneColour);
+        if (!environment) std::fill(&pixels.at(r.x0, py), &pixels.at(r.x1, py) + 1, oneColour);
         else
-          for (int px = r.x0; px <= r.x1; ++px) color.at(px, py) = backgroundPixel(frame, px, py);
+          for (int px = r.x0; px <= r.x1; ++px) pixels.at(px, py) = backgroundPixel(frame, px, py);
       }
+    }
     if (trianglesInTile(buffers.workers, tile) == 0 && buffers.lines.empty()) return;
     if (fragmentCounts) {  // depth complexity: every fragment, before the tests; each pixel is in one tile
       forEachTriangleInTile(buffers.workers, v, tile, r, [&](const WorkerBins&, std::uint32_t, const BinnedTriangle& t, const InterpolationVertex (&)[3], const PixelBox& box) {
@@ -522,13 +531,22 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
         }
       return;
     }
-    shadeIn(scene, frame, maps, scratch, scratch.id, r, r, color, buffers.lanes, normals);
-    drawLines(frame, buffers.lines, r, painter ? nullptr : scratch.depth, kTileSize, color);  // the painter has no depth to test
-    if (!scratch.blended.empty() && !normals) blendTile(scene, frame, maps, layout, scratch, r, color, buffers.lanes);
+    const TilePixels pixels = pixelsOf(worker, r);
+    shadeIn(scene, frame, maps, scratch, scratch.id, r, r, pixels, buffers.lanes, normals);
+    drawLines(frame, buffers.lines, r, painter ? nullptr : scratch.depth, kTileSize, pixels);  // the painter has no depth to test
+    if (!scratch.blended.empty() && !normals) blendTile(scene, frame, maps, layout, scratch, r, pixels, buffers.lanes);
     if (keepDepth)
       for (int py = r.y0; py <= r.y1; ++py)
         std::copy_n(scratch.depth + (py - r.y0) * kTileSize, r.x1 - r.x0 + 1,
                     buffers.depth.begin() + static_cast<std::ptrdiff_t>(py) * frame.width + r.x0);
+  };
+  forEachTile(pool, grid, [&](int worker, int tile, const TileRect& r) {
+    drawTile(worker, tile, r);
+    if (image) {  // the drawn tile resolved while it is in the cache
+      const TilePixels pixels = pixelsOf(worker, r);
+      for (int py = r.y0; py <= r.y1; ++py)
+        resolveRow(&pixels.at(r.x0, py), &image->at(r.x0, py), static_cast<std::size_t>(r.x1 - r.x0 + 1), frame.blending);
+    }
   });
 }
 

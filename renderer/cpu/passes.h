@@ -13,6 +13,7 @@
 #include "cpu/shadow_maps.h"
 #include "cpu/thread_pool.h"
 #include "image/color_buffer.h"
+#include "image/image.h"
 #include "pipeline/frame_inputs.h"
 #include "scene/scene.h"
 
@@ -52,6 +53,10 @@ struct LitPassOutput {
   // or the environment map behind the scene) before its triangles are drawn,
   // while the tile is in the cache: the caller sizes `color` and clears nothing.
   bool background = false;
+  // A single-sample frame with nothing drawn after the lit pass: each tile,
+  // once drawn, is resolved into `image` (resolve.h's rule; the caller sizes
+  // it) while it is in the cache, and `color` is left alone.
+  Image* image = nullptr;
 };
 
 // Pass 2: z-buffer and shading into the linear colour buffer `color`

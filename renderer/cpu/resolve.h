@@ -19,6 +19,8 @@ namespace facet::cpu {
 // is reading the float buffer from memory (resolving each tile in the cache
 // instead saved no more than that; README, "Eight lanes").
 void resolve(ThreadPool& pool, const ColorBuffer& buffer, Blending holding, int samples, Image& image);
+// That rule for n pixels of one sample: out[i] from in[i].
+void resolveRow(const glm::vec4* in, Rgba8* out, std::size_t n, Blending holding);
 
 // Anti-aliasing: one sample's colour buffer, held as `blending` says, added
 // premultiplied into `sum` (pixel by pixel, in the order the samples are

@@ -315,7 +315,7 @@ void linePass(const Scene& scene, const FrameInputs& frame, Target& target) {
       addPoint(v, toWindow(v, halfWidth, halfHeight, 3), frame, baseColor, lines);
     }
   }
-  drawLines(frame, lines, {0, 0, frame.width - 1, frame.height - 1}, target.depth.data(), frame.width, *target.color);
+  drawLines(frame, lines, {0, 0, frame.width - 1, frame.height - 1}, target.depth.data(), frame.width, TilePixels::of(*target.color, 0, 0));
 }
 
 // Area-weighted averaging covers triangles by the z-buffer's visibility.
