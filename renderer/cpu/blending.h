@@ -74,6 +74,11 @@ struct BlendOver {
   bool additive;
 };
 
+// A shaded colour C written where the buffer holds `held`: opaque (C, 1), or blended over it with α.
+inline void writeFragment(glm::vec4& held, glm::vec3 C, float alpha, const BlendOver* over) {
+  held = over ? blend(held, C, alpha, over->blending, over->additive) : opaque(C);
+}
+
 #if defined(__SSE2__)
 // blend for up to four pixels at once, four lanes: lanes [0, count) of
 // `color` and `alpha` over the RGBA pixels at rgba + 4·offsets[k] (a

@@ -85,14 +85,11 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
   bool plain = false;
   const Illumination* flat = nullptr;
   PhongBatch batch(frame, maps, color.first(), lanes, over);  // Phong: 4, 8, 16 or 32 pixels' illumination at a time
-  // A shaded colour C at the pixel: (C, 1), or C blended over the buffer with the pixel's α.
-  const auto write = [&](int px, int py, glm::vec3 C) {
-    glm::vec4& held = color.at(px, py);
-    held = over ? blend(held, C, alpha[(py - r.y0) * kTileSize + (px - r.x0)], over->blending, over->additive) : opaque(C);
-  };
   for (int py = ty0; py <= ty1; ++py)
     for (int px = tx0; px <= tx1; ++px) {
-      const std::uint32_t id = ids[(py - r.y0) * kTileSize + (px - r.x0)];
+      const int k = (py - r.y0) * kTileSize + (px - r.x0);  // the pixel in the tile's arrays (ids, alpha)
+      const float a = over ? alpha[k] : 1.0f;             // its α in a blended pass
+      const std::uint32_t id = ids[k];
       if (id == kNoTriangle) continue;  // the background the image was cleared to
       if (id != current) {
         current = id;
@@ -125,24 +122,22 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
       if constexpr (kMode == ShadingMode::Phong)
         if (plain) {
           const std::size_t offset = color.offset(px, py);
-          const float* const a = over ? &alpha[(py - r.y0) * kTileSize + (px - r.x0)] : nullptr;
 #if defined(__SSE2__)
           // Four pixels of the triangle in a row: interpolation on four lanes, straight into the batch.
           // (Shorter runs padded with lanes shaded and dropped took fewer instructions but more time:
           // 31 against 29 ms a sphere-100k frame on eight lanes.)
-          const std::uint32_t* row = &ids[(py - r.y0) * kTileSize + (px - r.x0)];
+          const std::uint32_t* row = &ids[k];
           if (px + 3 <= tx1 && row[1] == id && row[2] == id && row[3] == id) {
             const __m128 w = in->inverseW4(px, py);
             const __m128 P[3] = {in->varying4(0, px, py, w), in->varying4(1, px, py, w), in->varying4(2, px, py, w)};
             const __m128 N[3] = {in->varying4(3, px, py, w), in->varying4(4, px, py, w), in->varying4(5, px, py, w)};
-            batch.add4(offset, P, N, back, material->baseColor, *material, a ? _mm_loadu_ps(a) : _mm_set1_ps(1.0f));
+            batch.add4(offset, P, N, back, material->baseColor, *material, over ? _mm_loadu_ps(&alpha[k]) : _mm_set1_ps(1.0f));
             px += 3;
             continue;
           }
 #endif
           const float w = in->inverseWAt(px, py);
-          batch.add(offset, in->varying3At(0, px, py, w), in->varying3At(3, px, py, w), back, material->baseColor, *material, material->emissive, 0.0f,
-                    a ? *a : 1.0f);
+          batch.add(offset, in->varying3At(0, px, py, w), in->varying3At(3, px, py, w), back, material->baseColor, *material, material->emissive, 0.0f, a);
           continue;
         }
       float v[layout.count];
@@ -187,7 +182,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
       else if (texture)
         baseColor *= glm::vec3(sampleBaseColorTexture(*texture, *material, stAt(material->baseColorSet), derivativesAt(material->baseColorSet)));
       if (material->unlit) {  // KHR_materials_unlit: O_d itself, through the fog
-        write(px, py, fogged(frame.fog, baseColor, depth));
+        writeFragment(color.at(px, py), fogged(frame.fog, baseColor, depth), a, over);
         continue;
       }
       glm::vec3 lit;
@@ -201,8 +196,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
       } else if constexpr (kMode == ShadingMode::Phong) {
         // N is normalized (and negated on a back face, two-sided lighting) in the batch
         batch.add(color.offset(px, py), {v[0], v[1], v[2]},
-                  interpolatedNormal, back, baseColor, *material, emissiveMap ? emission() : material->emissive, depth,
-                  over ? alpha[(py - r.y0) * kTileSize + (px - r.x0)] : 1.0f);
+                  interpolatedNormal, back, baseColor, *material, emissiveMap ? emission() : material->emissive, depth, a);
         continue;  // written when the batch is shaded
       } else if constexpr (kMode == ShadingMode::Gouraud) {
         const int side = back ? 6 : 0;
@@ -214,7 +208,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         if (emissiveMap) I.specular = emission() + I.specular;  // summed with k_e = 0 for the triangle
         lit = shade(I, baseColor);
       }
-      write(px, py, fogged(frame.fog, lit, depth));
+      writeFragment(color.at(px, py), fogged(frame.fog, lit, depth), a, over);
     }
   batch.flush();
 }

@@ -21,9 +21,7 @@ void PhongBatch::flush() {
     const glm::vec3 E{in_.E[0][0], in_.E[1][0], in_.E[2][0]};
     const LaneMaterial<float> material{E, in_.ka[0], in_.kd[0], in_.ks[0], in_.n[0], in_.m[0]};
     const glm::vec3 lit = shade(illuminate(frame_, maps_, material, P, N, viewVector<float>(frame_, P)), O);
-    glm::vec4& held = pixels_[offset_[0]];
-    const glm::vec3 C = fogged(frame_.fog, lit, in_.D[0]);
-    held = over_ ? blend(held, C, in_.alpha[0], over_->blending, over_->additive) : opaque(C);
+    writeFragment(pixels_[offset_[0]], fogged(frame_.fog, lit, in_.D[0]), in_.alpha[0], over_);
     count_ = 0;
     return;
   }
