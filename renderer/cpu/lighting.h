@@ -187,13 +187,18 @@ inline float shadowFactorLanes(const ShadowMaps& maps, const FrameLight& light, 
 inline int pcfLitCountRows(const ShadowMaps& maps, int layer, int tx, int ty, float zb, int r) {
   const __m128 z = _mm_set1_ps(zb);
   const float* texels = maps.layer(layer);
+  const auto notShadowed = [&](const float* at) { return static_cast<unsigned>(_mm_movemask_ps(_mm_cmpngt_ps(z, _mm_loadu_ps(at)))); };  // !(zb > depth), NaN included
+  if (r == 1) {  // the default 3x3 window: one load a row, the three rows' bits counted at once
+    const float* row = texels + static_cast<std::size_t>(ty - 1) * static_cast<std::size_t>(maps.size) + (tx - 1);
+    const std::size_t next = static_cast<std::size_t>(maps.size);
+    return __builtin_popcount((notShadowed(row) | notShadowed(row + next) << 4 | notShadowed(row + 2 * next) << 8) & 0x777u);
+  }
   int lit = 0;
   for (int y = ty - r; y <= ty + r; ++y) {
     const float* row = texels + static_cast<std::size_t>(y) * static_cast<std::size_t>(maps.size);
     for (int x = tx - r; x <= tx + r; x += 4) {
       const int n = std::min(4, tx + r + 1 - x);
-      const int notShadowed = _mm_movemask_ps(_mm_cmpngt_ps(z, _mm_loadu_ps(row + x)));  // !(zb > depth), NaN included
-      lit += __builtin_popcount(static_cast<unsigned>(notShadowed) & ((1u << n) - 1u));
+      lit += __builtin_popcount(notShadowed(row + x) & ((1u << n) - 1u));
     }
   }
   return lit;
@@ -239,7 +244,7 @@ F shadowFactorOnFace(const ShadowMaps& maps, const FrameLight& light, const Shad
   const int r = shadows.pcfRadius, size = maps.size;
   const float taps = static_cast<float>((2 * r + 1) * (2 * r + 1));
   const ShadowCoordinates<F> at = shadowCoordinates<F>(light.shadowFromWorld[static_cast<std::size_t>(face)], size, shadows, P, N, L);
-  alignas(64) float zb[kLanes], S[kLanes];
+  alignas(64) float zb[kLanes], lit[kLanes];
   alignas(64) std::int32_t tx[kLanes], ty[kLanes];
   storeLanes(zb, at.z - at.bias);
   storeLanes(tx, at.tx);
@@ -247,16 +252,14 @@ F shadowFactorOnFace(const ShadowMaps& maps, const FrameLight& light, const Shad
   const int read = lanes & laneBits(at.inside);
   const int layer = light.shadowLayer + face;
   for (int k = 0; k < kLanes; ++k) {
-    S[k] = 1.0f;
-    if (read & (1 << k)) {
-      const int lit = pcfFitsRows(size, tx[k], ty[k], r) ? pcfLitCountRows(maps, layer, tx[k], ty[k], zb[k], r)
-                                                         : pcfLitCount(maps, layer, tx[k], ty[k], zb[k], r, cube);
-      S[k] = static_cast<float>(lit) / taps;
-    }
+    lit[k] = taps;  // not read: S = taps / taps = 1
+    if (read & (1 << k))
+      lit[k] = static_cast<float>(pcfFitsRows(size, tx[k], ty[k], r) ? pcfLitCountRows(maps, layer, tx[k], ty[k], zb[k], r)
+                                                                     : pcfLitCount(maps, layer, tx[k], ty[k], zb[k], r, cube));
   }
-  F result;
-  loadLanes(result, S);
-  return result;
+  F count;
+  loadLanes(count, lit);
+  return count / F(taps);  // shadowFactor's lit / taps, every lane's division at once
 }
 
 // Four lanes: where the active lanes read one face, shadowFactorOnFace;
