@@ -12,6 +12,10 @@
 #include "cpu/frame_buffers.h"
 #include "cpu/triangle_setup.h"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace facet::cpu {
 
 // Calls visit(bins, index, triangle, vertices, box) for each triangle
@@ -34,10 +38,53 @@ void forEachTriangleInTile(const std::vector<WorkerBins>& workers, const PassVer
     }
 }
 
-// fragment(px, py) for each covered pixel of the box, except that a row of
-// a block wholly inside the triangle goes to span(x0, x1, py) at once (the
-// depth tests run it four pixels at a time: depth_rows.h). The pixels of one
-// triangle are distinct, so the order they come in changes nothing.
+#if defined(__SSE2__)
+// How far an edge's value moves across an 8x8 block and one row step past
+// it: 8·(|step x| + |step y|). A block whose first pixel's values e all have
+// |e| + reach below 2^31 has every edge value in 32 bits.
+inline std::int64_t blockReach(std::int64_t sx, std::int64_t sy) { return 8 * ((sx < 0 ? -sx : sx) + (sy < 0 ? -sy : sy)); }
+inline bool fitsInt32(const std::int64_t (&e)[3], const std::int64_t (&reach)[3]) {
+  constexpr std::int64_t kLimit = std::int64_t{1} << 31;
+  return (e[0] < 0 ? -e[0] : e[0]) + reach[0] < kLimit && (e[1] < 0 ? -e[1] : e[1]) + reach[1] < kLimit &&
+         (e[2] < 0 ? -e[2] : e[2]) + reach[2] < kLimit;
+}
+
+// A block on an edge of the triangle, its edge values in 32 bits: each row's
+// eight coverage tests at once, as the sign of -w0 & -w1 & -w2 (all three
+// w > 0 exactly when all three -w are negative), then the row to
+// span(x0, x1, py) when it is covered whole, else its pixels to fragment.
+template <class Fragment, class Span>
+void partialBlock(const std::int64_t (&e)[3], const std::int64_t (&sx)[3], const std::int64_t (&sy)[3], int x0, int x1, int y0, int y1,
+                  Fragment& fragment, Span& span) {
+  __m128i low[3], high[3], down[3];  // -w at columns x0..x0+3 and x0+4..x0+7 of the row; -(step y)
+  for (int i = 0; i < 3; ++i) {
+    const auto w = static_cast<std::int32_t>(-e[i]), step = static_cast<std::int32_t>(-sx[i]);  // in range: fitsInt32
+    low[i] = _mm_add_epi32(_mm_set1_epi32(w), _mm_setr_epi32(0, step, 2 * step, 3 * step));
+    high[i] = _mm_add_epi32(low[i], _mm_set1_epi32(4 * step));
+    down[i] = _mm_set1_epi32(static_cast<std::int32_t>(-sy[i]));
+  }
+  const unsigned whole = (1u << (x1 - x0 + 1)) - 1u;
+  for (int py = y0; py <= y1; ++py) {
+    const __m128 l = _mm_castsi128_ps(_mm_and_si128(_mm_and_si128(low[0], low[1]), low[2]));
+    const __m128 h = _mm_castsi128_ps(_mm_and_si128(_mm_and_si128(high[0], high[1]), high[2]));
+    unsigned covered = (static_cast<unsigned>(_mm_movemask_ps(l)) | static_cast<unsigned>(_mm_movemask_ps(h)) << 4) & whole;
+    if (covered == whole) span(x0, x1, py);
+    else
+      for (; covered != 0; covered &= covered - 1) fragment(x0 + __builtin_ctz(covered), py);
+    for (int i = 0; i < 3; ++i) {
+      low[i] = _mm_add_epi32(low[i], down[i]);
+      high[i] = _mm_add_epi32(high[i], down[i]);
+    }
+  }
+}
+#endif
+
+// fragment(px, py) for each covered pixel of the box, except that a row
+// wholly inside the triangle (every row of a block wholly inside, and a
+// block's row on an edge whose pixels all pass) goes to span(x0, x1, py) at
+// once (the depth tests run it four pixels at a time: depth_rows.h). The
+// pixels of one triangle are distinct, so the order they come in changes
+// nothing.
 template <class Fragment, class Span>
 void rasterizeBlocks(const SnappedTriangle& t, const PixelBox& box, Fragment&& fragment, Span&& span) {
   EdgeFunction edges[3];
@@ -48,6 +95,9 @@ void rasterizeBlocks(const SnappedTriangle& t, const PixelBox& box, Fragment&& f
     sx[i] = -edges[i].dcdx * 256;
     sy[i] = edges[i].dcdy * 256;
   }
+#if defined(__SSE2__)
+  const std::int64_t reach[3] = {blockReach(sx[0], sy[0]), blockReach(sx[1], sy[1]), blockReach(sx[2], sy[2])};
+#endif
   const int minX = box.minX, minY = box.minY, maxX = box.maxX, maxY = box.maxY;
   for (int by = minY & ~7; by <= maxY; by += 8) {
     const int y0 = std::max(by, minY), y1 = std::min(by + 7, maxY);
@@ -68,6 +118,12 @@ void rasterizeBlocks(const SnappedTriangle& t, const PixelBox& box, Fragment&& f
         for (int py = y0; py <= y1; ++py) span(x0, x1, py);
         continue;
       }
+#if defined(__SSE2__)
+      if (fitsInt32(e, reach)) {
+        partialBlock(e, sx, sy, x0, x1, y0, y1, fragment, span);
+        continue;
+      }
+#endif
       for (int py = y0; py <= y1; ++py) {
         std::int64_t w0 = e[0], w1 = e[1], w2 = e[2];
         for (int px = x0; px <= x1; ++px) {
