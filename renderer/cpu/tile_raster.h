@@ -38,7 +38,6 @@ void forEachTriangleInTile(const std::vector<WorkerBins>& workers, const PassVer
     }
 }
 
-#if defined(__SSE2__)
 // How far an edge's value moves across an 8x8 block and one row step past
 // it: 8·(|step x| + |step y|). A block whose first pixel's values e all have
 // |e| + reach below 2^31 has every edge value in 32 bits.
@@ -49,6 +48,7 @@ inline bool fitsInt32(const std::int64_t (&e)[3], const std::int64_t (&reach)[3]
          (e[2] < 0 ? -e[2] : e[2]) + reach[2] < kLimit;
 }
 
+#if defined(__SSE2__)
 // A block on an edge of the triangle, its edge values in 32 bits: each row's
 // eight coverage tests at once, as the sign of -w0 & -w1 & -w2 (all three
 // w > 0 exactly when all three -w are negative), then the row to
