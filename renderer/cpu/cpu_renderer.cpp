@@ -89,8 +89,8 @@ class CpuRenderer final : public Renderer {
     }
     if (!resolvedByTile) {
       const auto resolveStart = std::chrono::steady_clock::now();
-      if (frame.samples.empty()) cpu::resolve(pool_, color_, frame.blending, 1, result.image);
-      else cpu::resolve(pool_, sum_, Blending::Premultiplied, static_cast<int>(frame.samples.size()), result.image);
+      if (frame.samples.empty()) cpu::resolve(pool_, color_, frame.blending, 1, buffers_.lanes, result.image);
+      else cpu::resolve(pool_, sum_, Blending::Premultiplied, static_cast<int>(frame.samples.size()), buffers_.lanes, result.image);
       result.timings.push_back({"resolve", millisecondsSince(resolveStart)});
     }
     if (frame.hsr == HiddenSurface::Scanline) {

@@ -539,7 +539,7 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
     if (image) {  // the drawn tile resolved while it is in the cache
       const TilePixels pixels = pixelsOf(worker, r);
       for (int py = r.y0; py <= r.y1; ++py)
-        resolveRow(&pixels.at(r.x0, py), &image->at(r.x0, py), static_cast<std::size_t>(r.x1 - r.x0 + 1), frame.blending);
+        resolveRow(&pixels.at(r.x0, py), &image->at(r.x0, py), static_cast<std::size_t>(r.x1 - r.x0 + 1), frame.blending, 1, buffers.lanes);
     }
   });
 }

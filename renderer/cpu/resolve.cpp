@@ -7,31 +7,29 @@
 
 namespace facet::cpu {
 
-void resolveRow(const glm::vec4* in, Rgba8* out, std::size_t n, Blending holding) {
+void resolveRow(const glm::vec4* in, Rgba8* out, std::size_t n, Blending holding, int samples, int lanes) {
+#if defined(FACET_AVX512_LANES)
+  if (lanes == 16) return resolveSixteenLanes(in, out, n, holding == Blending::Premultiplied, samples);
+#else
+  (void)lanes;
+#endif
   const SrgbTables& tables = srgbTables();
-  if (holding != Blending::Premultiplied) {  // the opaque frame's case: the colour as held
+  if (samples == 1 && holding != Blending::Premultiplied) {  // the opaque frame's case: the colour as held
     for (std::size_t i = 0; i < n; ++i) out[i] = encodePixel4(tables, &in[i].r);
     return;
   }
+  const auto count = static_cast<float>(samples);
   for (std::size_t i = 0; i < n; ++i) {
-    const glm::vec4 linear = unstored(in[i], holding);
+    const glm::vec4 linear = unstored(samples == 1 ? in[i] : in[i] / count, holding);
     out[i] = encodePixel4(tables, &linear.r);
   }
 }
 
-void resolve(ThreadPool& pool, const ColorBuffer& buffer, Blending holding, int samples, Image& image) {
+void resolve(ThreadPool& pool, const ColorBuffer& buffer, Blending holding, int samples, int lanes, Image& image) {
   image = Image(buffer.width(), buffer.height());
   const auto width = static_cast<std::size_t>(buffer.width());
-  const auto count = static_cast<float>(samples);
-  const SrgbTables& tables = srgbTables();
   forEachRange(pool, static_cast<std::size_t>(buffer.height()), [&](std::size_t begin, std::size_t end, int) {
-    const glm::vec4* in = buffer.data();
-    Rgba8* out = image.data();
-    if (samples == 1) return resolveRow(in + begin * width, out + begin * width, (end - begin) * width, holding);
-    for (std::size_t i = begin * width; i < end * width; ++i) {
-      const glm::vec4 linear = unstored(in[i] / count, holding);
-      out[i] = encodePixel4(tables, &linear.r);
-    }
+    resolveRow(buffer.data() + begin * width, image.data() + begin * width, (end - begin) * width, holding, samples, lanes);
   });
 }
 

@@ -13,14 +13,20 @@ namespace facet::cpu {
 
 // `image` takes the buffer's size; rows are split across the pool. The
 // buffer holds colours as `holding` says, summed over `samples` passes
-// (divided by that count first: anti-aliasing's box filter). Four lanes
-// (srgb_table.h): an eight-lane encode with gathers measured slower (3.7
-// against 3.2 ms at 1920x1080): gathers are slow, and a quarter of the pass
-// is reading the float buffer from memory (resolving each tile in the cache
-// instead saved no more than that; README, "Eight lanes").
-void resolve(ThreadPool& pool, const ColorBuffer& buffer, Blending holding, int samples, Image& image);
-// That rule for n pixels of one sample: out[i] from in[i].
-void resolveRow(const glm::vec4* in, Rgba8* out, std::size_t n, Blending holding);
+// (divided by that count first: anti-aliasing's box filter). `lanes` is the
+// renderer's width (lane_width.h): at 16 the pixels go four at a time
+// (resolve_avx512.cpp), else one at a time, each channel's clamp and bucket
+// four lanes at a time (srgb_table.h). An eight-lane encode with gathers
+// measured slower than the one-pixel rule (3.7 against 3.2 ms at
+// 1920x1080): gathers are slow, which the sixteen-lane path's estimate
+// avoids.
+void resolve(ThreadPool& pool, const ColorBuffer& buffer, Blending holding, int samples, int lanes, Image& image);
+// That rule for n pixels in a row: out[i] from in[i].
+void resolveRow(const glm::vec4* in, Rgba8* out, std::size_t n, Blending holding, int samples, int lanes);
+#if defined(FACET_AVX512_LANES)
+// resolveRow at sixteen lanes (AVX-512F; only where widestLanes() says so).
+void resolveSixteenLanes(const glm::vec4* in, Rgba8* out, std::size_t n, bool premultiplied, int samples);
+#endif
 
 // Anti-aliasing: one sample's colour buffer, held as `blending` says, added
 // premultiplied into `sum` (pixel by pixel, in the order the samples are

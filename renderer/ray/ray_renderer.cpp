@@ -12,6 +12,7 @@
 #include "common/quote.h"
 #include "common/stopwatch.h"
 #include "cpu/blending.h"
+#include "cpu/lane_width.h"
 #include "cpu/resolve.h"
 #include "cpu/thread_pool.h"
 #include "image/color_buffer.h"
@@ -95,7 +96,7 @@ class RayRenderer final : public Renderer {
     });
     result.timings.push_back({"ray tracing" + (summed ? " (" + std::to_string(paths) + " paths a pixel)" : std::string()), millisecondsSince(start)});
     const auto resolveStart = std::chrono::steady_clock::now();
-    cpu::resolve(pool_, color_, summed ? Blending::Premultiplied : Blending::Straight, paths, result.image);
+    cpu::resolve(pool_, color_, summed ? Blending::Premultiplied : Blending::Straight, paths, cpu::widestLanes(), result.image);
     result.timings.push_back({"resolve", millisecondsSince(resolveStart)});
     result.notes.push_back(statistics.summary());
     if (frame.hsr != HiddenSurface::ZBuffer)

@@ -109,7 +109,7 @@ TEST_CASE("Resolve: the CPU's four-channel resolve gives encodePixel's bytes for
   }
   cpu::ThreadPool pool(3);
   Image image;
-  cpu::resolve(pool, buffer, Blending::Straight, 1, image);
+  cpu::resolve(pool, buffer, Blending::Straight, 1, 1, image);
   REQUIRE(image.width() == kWidth);
   REQUIRE(image.height() == kHeight);
   int differing = 0;
@@ -129,6 +129,95 @@ TEST_CASE("Resolve: the CPU's four-channel resolve gives encodePixel's bytes for
   CHECK(alphaLevel(7.0f) == 255);
   CHECK(alphaLevel(std::numeric_limits<float>::quiet_NaN()) == 0);
 }
+
+namespace {
+
+// resolveRow at `lanes` over every pixel of `in`, then over short runs at
+// every offset (the sixteen-lane path's last, partial group), with bytes
+// past a run left alone; the number of pixels whose bytes differ from the
+// one-pixel rule's.
+long resolveMismatches(const std::vector<glm::vec4>& in, Blending holding, int samples, int lanes) {
+  std::vector<Rgba8> plain(in.size()), wide(in.size());
+  cpu::resolveRow(in.data(), plain.data(), in.size(), holding, samples, 1);
+  cpu::resolveRow(in.data(), wide.data(), in.size(), holding, samples, lanes);
+  long differing = 0;
+  for (std::size_t i = 0; i < in.size(); ++i) differing += plain[i] == wide[i] ? 0 : 1;
+  for (std::size_t n = 0; n <= 9; ++n)
+    for (std::size_t at = 0; at + n + 1 <= std::min<std::size_t>(in.size(), 40); ++at) {
+      std::vector<Rgba8> run(n + 1, Rgba8{1, 2, 3, 4});
+      cpu::resolveRow(&in[at], run.data(), n, holding, samples, lanes);
+      for (std::size_t i = 0; i < n; ++i) differing += run[i] == plain[at + i] ? 0 : 1;
+      differing += run[n] == Rgba8{1, 2, 3, 4} ? 0 : 1;
+    }
+  return differing;
+}
+
+}  // namespace
+
+TEST_CASE("Resolve: sixteen lanes give the one-pixel rule's bytes near every threshold, across [0, 1], out of range, both holdings, 1 to 4096 samples") {
+  if (cpu::widestLanes() < 16) {
+    MESSAGE("this CPU runs " << cpu::widestLanes() << " lanes: the sixteen-lane resolve is not built or not run here");
+    return;
+  }
+  const SrgbTables& t = srgbTables();
+  std::vector<float> channels;
+  for (int k = 1; k < 256; ++k)  // 40 floats either side of every threshold
+    for (int d = -40; d <= 40; ++d) channels.push_back(std::bit_cast<float>(std::bit_cast<std::uint32_t>(t.thresholds[static_cast<std::size_t>(k)]) + static_cast<std::uint32_t>(d)));
+  for (std::uint32_t bits = 0; bits <= std::bit_cast<std::uint32_t>(1.0f); bits += 9973) channels.push_back(std::bit_cast<float>(bits));  // [0, 1]
+  const float specials[] = {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
+                            -0.0f, 0.0f, 1.0f, 1.0000001f, -1e-30f, 1e-40f, 0.0031308f, 3.0f, 1e30f};
+  channels.insert(channels.end(), std::begin(specials), std::end(specials));
+  std::mt19937 random(2048);
+  std::shuffle(channels.begin(), channels.end(), random);
+  std::uniform_real_distribution<float> alpha(-0.25f, 1.25f);
+  std::vector<glm::vec4> pixels;
+  for (std::size_t i = 0; i + 3 <= channels.size(); i += 3) {
+    const std::size_t p = i / 3;  // every seventh pixel's alpha special (0 and -0 among them), the rest in and out of [0, 1]
+    const float a = p % 7 == 0 ? specials[(p / 7) % std::size(specials)] : alpha(random);
+    pixels.push_back({channels[i], channels[i + 1], channels[i + 2], a});
+  }
+  REQUIRE(pixels.size() > 40000);
+  for (const Blending holding : {Blending::Straight, Blending::Premultiplied})
+    for (const int samples : {1, 3, 4096}) {
+      INFO("premultiplied " << (holding == Blending::Premultiplied) << ", samples " << samples);
+      CHECK(resolveMismatches(pixels, holding, samples, 16) == 0);
+    }
+  // The one-pixel rule itself is held to encodePixel above; here, that the
+  // exact thresholds land on their own level at sixteen lanes too.
+  std::vector<glm::vec4> edges;
+  for (int k = 1; k < 256; ++k) edges.push_back(glm::vec4(t.thresholds[static_cast<std::size_t>(k)], std::bit_cast<float>(std::bit_cast<std::uint32_t>(t.thresholds[static_cast<std::size_t>(k)]) - 1u), 0.0f, 1.0f));
+  std::vector<Rgba8> levels(edges.size());
+  cpu::resolveRow(edges.data(), levels.data(), edges.size(), Blending::Straight, 1, 16);
+  int wrong = 0;
+  for (int k = 1; k < 256; ++k) wrong += levels[static_cast<std::size_t>(k - 1)].r == k && levels[static_cast<std::size_t>(k - 1)].g == k - 1 ? 0 : 1;
+  CHECK(wrong == 0);
+}
+
+#if !defined(__SANITIZE_ADDRESS__)
+TEST_CASE("Resolve: sixteen lanes give every float of [0, 1] the level its thresholds give") {
+  if (cpu::widestLanes() < 16) return;
+  const SrgbTables& t = srgbTables();
+  constexpr std::size_t kChunk = 1 << 14;
+  std::vector<glm::vec4> in(kChunk);
+  std::vector<Rgba8> out(kChunk);
+  long wrong = 0;
+  const std::uint32_t one = std::bit_cast<std::uint32_t>(1.0f);
+  for (std::uint32_t first = 0; first <= one; first += kChunk) {
+    const std::size_t n = std::min<std::size_t>(kChunk, one - first + 1);
+    for (std::size_t i = 0; i < n; ++i) {
+      const float c = std::bit_cast<float>(first + static_cast<std::uint32_t>(i));
+      in[i] = glm::vec4(c, c, c, 1.0f);
+    }
+    cpu::resolveRow(in.data(), out.data(), n, Blending::Straight, 1, 16);
+    for (std::size_t i = 0; i < n; ++i) {
+      const float c = in[i].r;
+      const unsigned level = out[i].r;
+      wrong += t.thresholds[level] <= c && c < t.thresholds[level + 1] && out[i].g == level && out[i].b == level ? 0 : 1;
+    }
+  }
+  CHECK(wrong == 0);
+}
+#endif
 
 TEST_CASE("CPU renderer: the image does not depend on the thread count, nor on the frames rendered before") {
   const Scene scene = makeDefaultScene();

@@ -6,9 +6,9 @@
 # which no other object has (an AVX-512 object's eight-lane instance would
 # not be allowed: the AVX2 object has them too). Data (the series'
 # constants) is the same bytes whichever copy is kept.
-#   cmake -DNM=nm "-DOBJECTS=a.o;b.o" -DENTRY=shadeEightLanes "-DTYPES=Float8|Vec3x8|Mask8|Int8" -P wide_symbols.cmake
+#   cmake -DNM=nm "-DOBJECTS=a.o;b.o" "-DENTRIES=shadeSixteenLanes;resolveSixteenLanes" "-DTYPES=Float16|Vec3x16|Mask16|Int16" -P wide_symbols.cmake
 cmake_policy(SET CMP0057 NEW)  # if(... IN_LIST ...)
-set(found FALSE)
+set(found)
 foreach(object IN LISTS OBJECTS)
   execute_process(COMMAND ${NM} -C --defined-only --extern-only -f sysv ${object} RESULT_VARIABLE rc OUTPUT_VARIABLE symbols ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
@@ -19,13 +19,15 @@ foreach(object IN LISTS OBJECTS)
     if(NOT line MATCHES "[|] *FUNC *[|]")  # sysv format: name|value|class|type|size|line|section
       continue()
     endif()
-    if(line MATCHES "^facet::cpu::([A-Za-z]+)[(]" AND CMAKE_MATCH_1 STREQUAL ENTRY)
-      set(found TRUE)
+    if(line MATCHES "^facet::cpu::([A-Za-z]+)[(]" AND CMAKE_MATCH_1 IN_LIST ENTRIES)
+      list(APPEND found ${CMAKE_MATCH_1})
     elseif(NOT line MATCHES "${TYPES}")
       message(FATAL_ERROR "${object} defines a function other objects may define too, and the linker may keep its wide copy:\n  ${line}")
     endif()
   endforeach()
 endforeach()
-if(NOT found)
-  message(FATAL_ERROR "no object of ${OBJECTS} defines facet::cpu::${ENTRY}")
-endif()
+foreach(entry IN LISTS ENTRIES)
+  if(NOT entry IN_LIST found)
+    message(FATAL_ERROR "no object of ${OBJECTS} defines facet::cpu::${entry}")
+  endif()
+endforeach()
