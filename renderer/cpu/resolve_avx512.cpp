@@ -7,10 +7,10 @@
 // The level of a channel is the table's (image/srgb.h), found without its
 // look-ups: an estimate of 255·E(c) in float, within 3.6e-4 of the exact
 // value over every float of [0, 1] (measured), gives floor(255·E(c) + 0.5)
-// wherever its fraction + 0.5 lies more than kNear from an integer; the few
-// channels nearer than that (about one in 500) take the bucket table's
-// look-up. Every float of [0, 1] was checked against the thresholds this way
-// (tests/cpu/test_fast_paths.cpp holds them near every threshold).
+// wherever that estimate + 0.5 lies more than kNear from an integer; the
+// few channels nearer than that (0.26 % of a sphere-100k frame's) take the
+// bucket table's look-up. tests/cpu/test_fast_paths.cpp holds the result
+// to the thresholds for every float of [0, 1].
 #include <cstddef>
 #include <cstdint>
 
@@ -32,8 +32,8 @@ static_assert(offsetof(SrgbTables, buckets) + kSrgbBuckets + 3 <= sizeof(SrgbTab
 constexpr float kNear = 0.002f;  // levels: over five times the estimate's largest error
 
 // 255·E(c) for c in [0, 1]: c^(1/2.4) = 2^(-k/2.4)·m^(1/2.4) with c = m·2^-k,
-// m in [1, 2) (a table of sixteen octaves; below 2^-15 c is on the linear
-// part), m^(1/2.4) by a degree-5 fit.
+// m in [1, 2) (kOctave[k] = 2^(-k/2.4); below 2^-15 c is on the linear
+// part), m^(1/2.4) by a degree-5 fit (kSrgbGamma = 2.4).
 inline __m512 levelEstimate(__m512 c) {
   alignas(64) static constexpr float kOctave[16] = {1.0f,           7.491535384e-01f, 5.612310242e-01f, 4.204482076e-01f,
                                                     3.149802625e-01f, 2.359685782e-01f, 1.767766953e-01f, 1.324328868e-01f,
@@ -47,8 +47,8 @@ inline __m512 levelEstimate(__m512 c) {
   p = _mm512_fmadd_ps(p, m, _mm512_set1_ps(0.328908141f));
   p = _mm512_fmadd_ps(p, m, _mm512_set1_ps(1.18405227f));
   const __m512 root = _mm512_mul_ps(p, _mm512_permutexvar_ps(k, _mm512_load_ps(kOctave)));
-  const __m512 curve = _mm512_fmadd_ps(root, _mm512_set1_ps(255.0f * 1.055f), _mm512_set1_ps(-255.0f * 0.055f));
-  return _mm512_mask_mul_ps(curve, _mm512_cmp_ps_mask(c, _mm512_set1_ps(0.0031308f), _CMP_LE_OQ), c, _mm512_set1_ps(255.0f * 12.92f));
+  const __m512 curve = _mm512_fmadd_ps(root, _mm512_set1_ps(static_cast<float>(255.0 * kSrgbScale)), _mm512_set1_ps(static_cast<float>(-255.0 * kSrgbOffset)));
+  return _mm512_mask_mul_ps(curve, _mm512_cmp_ps_mask(c, _mm512_set1_ps(static_cast<float>(kSrgbLinearEnd)), _CMP_LE_OQ), c, _mm512_set1_ps(static_cast<float>(255.0 * kSrgbSlope)));
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 // so the covered pixels are the same; fragments come in row order per block.
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <vector>
 
 #include "cpu/frame_buffers.h"
@@ -41,11 +42,10 @@ void forEachTriangleInTile(const std::vector<WorkerBins>& workers, const PassVer
 // How far an edge's value moves across an 8x8 block and one row step past
 // it: 8·(|step x| + |step y|). A block whose first pixel's values e all have
 // |e| + reach below 2^31 has every edge value in 32 bits.
-inline std::int64_t blockReach(std::int64_t sx, std::int64_t sy) { return 8 * ((sx < 0 ? -sx : sx) + (sy < 0 ? -sy : sy)); }
+inline std::int64_t blockReach(std::int64_t sx, std::int64_t sy) { return 8 * (std::abs(sx) + std::abs(sy)); }
 inline bool fitsInt32(const std::int64_t (&e)[3], const std::int64_t (&reach)[3]) {
   constexpr std::int64_t kLimit = std::int64_t{1} << 31;
-  return (e[0] < 0 ? -e[0] : e[0]) + reach[0] < kLimit && (e[1] < 0 ? -e[1] : e[1]) + reach[1] < kLimit &&
-         (e[2] < 0 ? -e[2] : e[2]) + reach[2] < kLimit;
+  return std::abs(e[0]) + reach[0] < kLimit && std::abs(e[1]) + reach[1] < kLimit && std::abs(e[2]) + reach[2] < kLimit;
 }
 
 #if defined(__SSE2__)

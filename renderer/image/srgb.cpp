@@ -10,7 +10,7 @@ namespace {
 // floor(255·E(c) + 0.5) for c in [0, 1], in double precision.
 unsigned levelOf(float c) {
   const double x = c;
-  const double encoded = x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1.0 / 2.4) - 0.055;
+  const double encoded = x <= kSrgbLinearEnd ? kSrgbSlope * x : kSrgbScale * std::pow(x, 1.0 / kSrgbGamma) - kSrgbOffset;
   return static_cast<unsigned>(std::floor(255.0 * encoded + 0.5));
 }
 
@@ -41,7 +41,7 @@ SrgbTables build() {
   }
   for (unsigned v = 0; v < 256; ++v) {
     const double c = v / 255.0;
-    t.decoded[v] = static_cast<float>(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+    t.decoded[v] = static_cast<float>(c <= 0.04045 ? c / kSrgbSlope : std::pow((c + kSrgbOffset) / kSrgbScale, kSrgbGamma));  // 0.04045 = E(kSrgbLinearEnd), as IEC writes it
   }
   return t;
 }

@@ -31,6 +31,10 @@
 
 namespace facet {
 
+// E's constants (IEC 61966-2-1): E(c) = kSrgbSlope·c for c ≤ kSrgbLinearEnd,
+// else kSrgbScale·c^(1/kSrgbGamma) - kSrgbOffset.
+inline constexpr double kSrgbLinearEnd = 0.0031308, kSrgbSlope = 12.92, kSrgbScale = 1.055, kSrgbOffset = 0.055, kSrgbGamma = 2.4;
+
 inline constexpr int kSrgbBucketShift = 15;
 inline constexpr std::uint32_t kSrgbBuckets = (std::bit_cast<std::uint32_t>(1.0f) >> kSrgbBucketShift) + 1;  // every c in [0, 1]
 
