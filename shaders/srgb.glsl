@@ -1,23 +1,27 @@
 // sRGB by the tables of renderer/image/srgb.h, which the OpenGL backend
 // uploads once into this block (binding 1). A linear value's 8-bit level:
-// clamp to [0, 1] (NaN to 0), the bucket of its bits >> 15 gives the level
-// of the bucket's first float, plus one when the next threshold is at or
-// below the value. An 8-bit texel's linear value is read. Mirror:
-// facet::encodeLevel and SrgbTables::decoded, the same tables and steps, so
-// both backends write the same bytes.
+// clamp to [2^-13, 1] (NaN to 2^-13, whose level 0 every smaller value
+// shares); the entry of its bucket (bits >> 15, from 2^-13's bucket on)
+// holds the level of the bucket's first float (bits 0-7) and where in the
+// bucket the next level begins (bits 8 and up); the level is that start,
+// plus one when the value's low 15 bits reach that edge. An 8-bit texel's
+// linear value is read. Mirror: facet::encodeLevel and
+// SrgbTables::decoded, the same tables and steps, so both backends write
+// the same bytes.
 layout(std140, binding = 1) uniform SrgbTables {
-  vec4 thresholds[65];  // [k / 4][k % 4]: the smallest linear value of level k (k = 1..255); [256]: +inf
   vec4 decoded[64];     // [v / 4][v % 4]: the linear value of 8-bit level v
-  uvec4 buckets[2033];  // byte b (16 to a uvec4, 4 to a uint, lowest first): the level at the start of bucket b
+  uvec4 buckets[833];   // [b / 4][b % 4]: the entry of the b-th bucket from 2^-13's, start | edge << 8
 } srgb;
 
+const float kSrgbFloor = 1.0 / 8192.0;  // 2^-13, below level 1
+const uint kSrgbFirstBucket = floatBitsToUint(kSrgbFloor) >> 15u;
+
 int encodeLevel(float linear) {
-  float c = linear > 0.0 ? (linear < 1.0 ? linear : 1.0) : 0.0;
-  uint bucket = floatBitsToUint(c) >> 15u;
-  uint word = srgb.buckets[bucket >> 4u][(bucket >> 2u) & 3u];
-  int start = int((word >> ((bucket & 3u) * 8u)) & 0xFFu);
-  int next = start + 1;
-  return srgb.thresholds[next >> 2][next & 3] <= c ? next : start;
+  float c = linear > kSrgbFloor ? (linear < 1.0 ? linear : 1.0) : kSrgbFloor;
+  uint bits = floatBitsToUint(c);
+  uint b = (bits >> 15u) - kSrgbFirstBucket;
+  uint entry = srgb.buckets[b >> 2u][b & 3u];
+  return int(entry & 0xFFu) + ((bits & 0x7FFFu) >= (entry >> 8u) ? 1 : 0);
 }
 
 // Alpha is coverage, not light: floor(255·a + 0.5) of a clamped to [0, 1]

@@ -1,7 +1,6 @@
 #pragma once
-// encodePixel (image/srgb.h) of one linear RGBA pixel: the clamp, the three
-// buckets and the alpha level four lanes at a time where SSE2 is there, then
-// the same look-ups; the tables are passed in so a loop looks them up once.
+// encodePixel (image/srgb.h) of one linear RGBA pixel: the clamp and the alpha
+// level four lanes at a time where SSE2 is there, then the same look-ups; the tables are passed in so a loop looks them up once.
 #include <cstdint>
 
 #include "image/image.h"
@@ -18,18 +17,16 @@ inline Rgba8 encodePixel4(const SrgbTables& t, const float* rgba) {
   const __m128 x = _mm_loadu_ps(rgba);
   // (x < 1) ? x : 1 (minps), then 0 unless x > 0 (NaN too): clampUnit
   const __m128 c = _mm_and_ps(_mm_cmpgt_ps(x, _mm_setzero_ps()), _mm_min_ps(x, _mm_set1_ps(1.0f)));
-  alignas(16) float clamped[4];
-  alignas(16) std::uint32_t bucket[4];
+  alignas(16) std::uint32_t bits[4];
   alignas(16) std::int32_t alpha[4];
-  _mm_store_ps(clamped, c);
-  _mm_store_si128(reinterpret_cast<__m128i*>(bucket), _mm_srli_epi32(_mm_castps_si128(c), kSrgbBucketShift));
+  // encodeLevel's clamp: kSrgbFloor unless x > kSrgbFloor (NaN too), at most 1
+  const __m128 floor = _mm_set1_ps(kSrgbFloor);
+  const __m128 above = _mm_cmpgt_ps(x, floor);
+  _mm_store_si128(reinterpret_cast<__m128i*>(bits), _mm_castps_si128(_mm_or_ps(_mm_and_ps(above, _mm_min_ps(x, _mm_set1_ps(1.0f))), _mm_andnot_ps(above, floor))));
   // alphaLevel: clamped·255 + 0.5, truncated (a product and a sum, each rounded once)
   _mm_store_si128(reinterpret_cast<__m128i*>(alpha), _mm_cvttps_epi32(_mm_add_ps(_mm_mul_ps(c, _mm_set1_ps(255.0f)), _mm_set1_ps(0.5f))));
   std::uint8_t level[3];
-  for (int k = 0; k < 3; ++k) {
-    const unsigned start = t.buckets[bucket[k]];
-    level[k] = static_cast<std::uint8_t>(start + (t.thresholds[start + 1] <= clamped[k] ? 1u : 0u));
-  }
+  for (int k = 0; k < 3; ++k) level[k] = levelInBucket(t.buckets[(bits[k] >> kSrgbBucketShift) - kSrgbFirstBucket], bits[k]);
   return {level[0], level[1], level[2], static_cast<std::uint8_t>(alpha[3])};
 #else
   (void)t;

@@ -49,14 +49,12 @@ FrameBlock makeFrameBlock(const FrameInputs& frame) {
   return block;
 }
 
-static_assert(std::endian::native == std::endian::little, "srgb.glsl reads the bucket bytes of a uint lowest first");
-
 SrgbBlock makeSrgbBlock() {
+  static_assert(kSrgbBuckets <= std::tuple_size_v<decltype(SrgbBlock::buckets)>);
   const SrgbTables& tables = srgbTables();
   SrgbBlock block{};
-  std::copy(tables.thresholds.begin(), tables.thresholds.end(), block.thresholds.begin());
   block.decoded = tables.decoded;
-  std::copy(tables.buckets.begin(), tables.buckets.end(), block.buckets.begin());  // little-endian: byte b is byte b % 4 of uint b / 4
+  std::copy(tables.buckets.begin(), tables.buckets.end(), block.buckets.begin());
   return block;
 }
 

@@ -46,17 +46,15 @@ struct FrameBlock {
   glm::vec4 fogRange;        // x: N, y: F of the camera (parallel projection's eye depth)
 };
 
-// SrgbTables in srgb.glsl: image/srgb.h's tables, four floats (or bytes
-// packed in four uints) to a vec4, as std140 arrays of scalars would pad
+// SrgbTables in srgb.glsl: image/srgb.h's decoded values and bucket
+// entries, four to a vec4 or uvec4, as std140 arrays of scalars would pad
 // each element to 16 bytes.
 struct SrgbBlock {
-  std::array<float, 260> thresholds;        // 257 used, padded to 65 vec4
-  std::array<float, 256> decoded;           // 64 vec4
-  std::array<std::uint8_t, 2033 * 16> buckets;  // kSrgbBuckets used, padded to 2033 uvec4
+  std::array<float, 256> decoded;             // 64 vec4
+  std::array<std::uint32_t, 833 * 4> buckets;  // kSrgbBuckets used, padded to 833 uvec4
 };
-static_assert(offsetof(SrgbBlock, decoded) == 65 * 16);
-static_assert(offsetof(SrgbBlock, buckets) == (65 + 64) * 16);
-static_assert(sizeof(SrgbBlock) == (65 + 64 + 2033) * 16);
+static_assert(offsetof(SrgbBlock, buckets) == 64 * 16);
+static_assert(sizeof(SrgbBlock) == (64 + 833) * 16);
 
 // SplitSumTable in physically_based.glsl: pipeline/split_sum.h's (A, B) entries, two to a vec4.
 struct SplitSumBlock {

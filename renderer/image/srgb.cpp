@@ -31,13 +31,17 @@ SrgbTables build() {
   }
   // The level of c is the largest k with thresholds[k] <= c, so the buckets
   // follow from the thresholds, in one walk.
+  if (!(kSrgbFloor < t.thresholds[1])) throw std::logic_error("sRGB tables: level 1 starts below the buckets' floor");
   unsigned start = 0;
   for (std::uint32_t b = 0; b < kSrgbBuckets; ++b) {
-    const float first = std::bit_cast<float>(b << kSrgbBucketShift);
-    const float last = std::bit_cast<float>(std::min((b << kSrgbBucketShift) + ((1u << kSrgbBucketShift) - 1), one));
+    const std::uint32_t firstBits = (kSrgbFirstBucket + b) << kSrgbBucketShift;
+    const float first = std::bit_cast<float>(firstBits);
+    const float last = std::bit_cast<float>(std::min(firstBits + kSrgbInBucket, one));
     while (t.thresholds[start + 1] <= first) ++start;
     if (start + 2 <= 256 && t.thresholds[start + 2] <= last) throw std::logic_error("sRGB tables: two thresholds in one bucket");
-    t.buckets[b] = static_cast<std::uint8_t>(start);
+    const float next = t.thresholds[start + 1];  // > first; +inf past level 255
+    const std::uint32_t edge = next <= last ? std::bit_cast<std::uint32_t>(next) - firstBits : kSrgbInBucket + 1;
+    t.buckets[b] = start | edge << kSrgbEdgeShift;
   }
   for (unsigned v = 0; v < 256; ++v) {
     const double c = v / 255.0;
