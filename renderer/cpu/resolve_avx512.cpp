@@ -78,9 +78,8 @@ __attribute__((flatten)) void resolveSixteenLanes(const glm::vec4* in, Rgba8* ou
       const __m512i bits = _mm512_castps_si512(_mm512_max_ps(c, _mm512_set1_ps(kSrgbFloor)));  // encodeLevel's clamp, c being in [0, 1]
       const __m512i bucket = _mm512_sub_epi32(_mm512_srli_epi32(bits, kSrgbBucketShift), _mm512_set1_epi32(kSrgbFirstBucket));
       const __m512i entry = _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), near, bucket, t.buckets.data(), 4);
-      const __m512i start = _mm512_and_si512(entry, _mm512_set1_epi32(0xFF));
-      const __mmask16 past = _mm512_mask_cmpge_epi32_mask(near, _mm512_and_si512(bits, _mm512_set1_epi32(kSrgbInBucket)), _mm512_srli_epi32(entry, kSrgbEdgeShift));
-      levels = _mm512_mask_blend_epi32(near, levels, _mm512_mask_add_epi32(start, past, start, _mm512_set1_epi32(1)));
+      const __m512i byTable = _mm512_srli_epi32(_mm512_add_epi32(entry, _mm512_and_si512(bits, _mm512_set1_epi32(kSrgbInBucket))), kSrgbBucketShift);  // levelInBucket
+      levels = _mm512_mask_blend_epi32(near, levels, byTable);
     }
     _mm512_mask_cvtepi32_storeu_epi8(out + i, lanes, levels);
   }

@@ -15,18 +15,17 @@ namespace facet::cpu {
 inline Rgba8 encodePixel4(const SrgbTables& t, const float* rgba) {
 #if defined(__SSE2__)
   const __m128 x = _mm_loadu_ps(rgba);
-  // (x < 1) ? x : 1 (minps), then 0 unless x > 0 (NaN too): clampUnit
+  // (x < 1) ? x : 1 (minps), then 0 unless x > 0 (NaN too): clampUnit; raised to kSrgbFloor for encodeLevel
   const __m128 c = _mm_and_ps(_mm_cmpgt_ps(x, _mm_setzero_ps()), _mm_min_ps(x, _mm_set1_ps(1.0f)));
-  alignas(16) std::uint32_t bits[4];
+  const __m128i bits = _mm_castps_si128(_mm_max_ps(c, _mm_set1_ps(kSrgbFloor)));
+  alignas(16) std::uint32_t index[4], held[4];
   alignas(16) std::int32_t alpha[4];
-  // encodeLevel's clamp: kSrgbFloor unless x > kSrgbFloor (NaN too), at most 1
-  const __m128 floor = _mm_set1_ps(kSrgbFloor);
-  const __m128 above = _mm_cmpgt_ps(x, floor);
-  _mm_store_si128(reinterpret_cast<__m128i*>(bits), _mm_castps_si128(_mm_or_ps(_mm_and_ps(above, _mm_min_ps(x, _mm_set1_ps(1.0f))), _mm_andnot_ps(above, floor))));
+  _mm_store_si128(reinterpret_cast<__m128i*>(index), _mm_sub_epi32(_mm_srli_epi32(bits, kSrgbBucketShift), _mm_set1_epi32(kSrgbFirstBucket)));
+  _mm_store_si128(reinterpret_cast<__m128i*>(held), bits);
   // alphaLevel: clamped·255 + 0.5, truncated (a product and a sum, each rounded once)
   _mm_store_si128(reinterpret_cast<__m128i*>(alpha), _mm_cvttps_epi32(_mm_add_ps(_mm_mul_ps(c, _mm_set1_ps(255.0f)), _mm_set1_ps(0.5f))));
   std::uint8_t level[3];
-  for (int k = 0; k < 3; ++k) level[k] = levelInBucket(t.buckets[(bits[k] >> kSrgbBucketShift) - kSrgbFirstBucket], bits[k]);
+  for (int k = 0; k < 3; ++k) level[k] = levelInBucket(t.buckets[index[k]], held[k]);
   return {level[0], level[1], level[2], static_cast<std::uint8_t>(alpha[3])};
 #else
   (void)t;

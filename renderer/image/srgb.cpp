@@ -40,8 +40,8 @@ SrgbTables build() {
     while (t.thresholds[start + 1] <= first) ++start;
     if (start + 2 <= 256 && t.thresholds[start + 2] <= last) throw std::logic_error("sRGB tables: two thresholds in one bucket");
     const float next = t.thresholds[start + 1];  // > first; +inf past level 255
-    const std::uint32_t edge = next <= last ? std::bit_cast<std::uint32_t>(next) - firstBits : kSrgbInBucket + 1;
-    t.buckets[b] = start | edge << kSrgbEdgeShift;
+    const std::uint32_t edge = next <= last ? std::bit_cast<std::uint32_t>(next) - firstBits : kSrgbInBucket + 1;  // in [1, 2^15]
+    t.buckets[b] = start << kSrgbBucketShift | (kSrgbInBucket + 1 - edge);
   }
   for (unsigned v = 0; v < 256; ++v) {
     const double c = v / 255.0;
