@@ -4,13 +4,16 @@
 #include "shading_math.glsl"
 #include "srgb.glsl"
 #include "fog.glsl"
+#include "resolved.glsl"
 
 uniform vec3 baseColorFactor;  // O_d, linear
+uniform bool levels;           // a frame encoded as drawn: the resolve's levels of (C, 1)
 
 in vec3 vertexColor;
 
 layout(location = 0) out vec4 color;
 
 void main() {
-  color = vec4(fogged(baseColorFactor * vertexColor), 1.0);
+  vec4 held = vec4(fogged(baseColorFactor * vertexColor), 1.0);
+  color = levels ? resolved(held, false) : held;
 }

@@ -3,8 +3,7 @@
 // resolve"): the lit pass's linear RGBA, read texel for texel, encoded
 // once into the RGBA8 image, straight (a premultiplied buffer's colour
 // divided by its alpha first). Mirror: renderer/cpu/resolve.cpp.
-#include "srgb.glsl"
-#include "blending.glsl"
+#include "resolved.glsl"
 
 uniform bool premultiplied;  // the buffer holds C·a (blending=premultiplied, or a sum of samples)
 uniform float samples;       // the passes summed into it: anti-aliasing's box filter divides by their count
@@ -15,5 +14,5 @@ layout(location = 0) out vec4 color;
 
 void main() {
   precise vec4 mean = texelFetch(linearColor, ivec2(gl_FragCoord.xy), 0) / samples;
-  color = encodeSrgb(unstored(mean, premultiplied));
+  color = resolved(mean, premultiplied);
 }

@@ -15,6 +15,7 @@
 #include "common/stopwatch.h"
 #include "gl/shader_variant.h"
 #include "cpu/blending.h"
+#include "image/srgb.h"
 #include "pipeline/antialiasing.h"
 #include "pipeline/clip_volume.h"
 #include "pipeline/stage_frames.h"
@@ -119,10 +120,26 @@ void GlFrameRenderer::beginFrame(const Scene& scene, const FrameInputs& frame, L
   }
 }
 
-std::vector<PassTiming> GlFrameRenderer::drawFrame(const Scene& scene, const FrameInputs& frame) {
+bool GlFrameRenderer::encodesAsDrawn(const FrameInputs& frame) {
+  if (!frame.samples.empty() || !frame.transparentOrder.empty()) return false;
+  for (const FrameInstance& instance : frame.instances)
+    if (frame.materials[static_cast<std::size_t>(instance.material)].blended) return false;
+  return true;
+}
+
+std::vector<PassTiming> GlFrameRenderer::drawFrame(const Scene& scene, const FrameInputs& frame, Encoding encoding) {
   std::vector<PassTiming> timings;
-  beginFrame(scene, frame, LitOutput::Color, timings);
+  const bool asDrawn = encoding == Encoding::AsDrawnWherePossible && encodesAsDrawn(frame);
+  beginFrame(scene, frame, asDrawn ? LitOutput::Levels : LitOutput::Color, timings);
   Clock::time_point start = Clock::now();
+  if (asDrawn) {  // the image's levels from the lit pass: no float buffer, no resolve
+    litPass(frame, LitOutput::Levels);
+    gl_.Finish();
+    checkError("the lit pass");
+    timings.push_back({"lit pass, encoded as drawn", millisecondsSince(start)});
+    image_ = &levels_;
+    return timings;
+  }
   if (frame.samples.empty()) {
     litPass(frame);
     gl_.Finish();
@@ -147,12 +164,13 @@ std::vector<PassTiming> GlFrameRenderer::drawFrame(const Scene& scene, const Fra
   gl_.Finish();
   checkError("the resolve");
   timings.push_back({"resolve", millisecondsSince(start)});
+  image_ = &resolved_;
   return timings;
 }
 
 Image GlFrameRenderer::readImage() const {
-  Image image(resolved_.width(), resolved_.height());
-  gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, resolved_.framebuffer());
+  Image image(image_->width(), image_->height());
+  gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, image_->framebuffer());
   gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
   gl_.PixelStorei(GL_PACK_ROW_LENGTH, 0);
   // Row 0 of glReadPixels is the bottom row, as facet::Image stores it: no flip.
@@ -166,7 +184,7 @@ std::vector<float> GlFrameRenderer::drawDepth(const Scene& scene, const FrameInp
   centred.samples.clear();
   drawFrame(scene, centred);
   std::vector<float> depth(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height));
-  gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, target_.framebuffer());
+  gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, (image_ == &levels_ ? levels_ : target_).framebuffer());  // the lit pass's target
   gl_.PixelStorei(GL_PACK_ALIGNMENT, 4);
   gl_.PixelStorei(GL_PACK_ROW_LENGTH, 0);
   gl_.ReadPixels(0, 0, frame.width, frame.height, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());  // bottom row first, as facet stores rows
@@ -399,6 +417,7 @@ bool GlFrameRenderer::preparePrograms(const FrameInputs& frame, LitOutput output
     backgroundAlpha_ = uniformLocation(gl_, *backgroundProgram_, "backgroundAlpha");
     backgroundPremultiplied_ = uniformLocation(gl_, *backgroundProgram_, "premultiplied");
     backgroundSampleOffset_ = uniformLocation(gl_, *backgroundProgram_, "sampleOffset");
+    backgroundLevels_ = uniformLocation(gl_, *backgroundProgram_, "levels");
     compiled = true;
   }
   if (!frame.samples.empty() && !accumulateProgram_) {
@@ -406,7 +425,7 @@ bool GlFrameRenderer::preparePrograms(const FrameInputs& frame, LitOutput output
     accumulatePremultiplied_ = uniformLocation(gl_, *accumulateProgram_, "premultiplied");
     compiled = true;
   }
-  if (!resolveProgram_) {
+  if (output != LitOutput::Levels && !resolveProgram_) {
     resolveProgram_.emplace(buildProgram(gl_, {"viewport_triangle.vert", "resolve.frag"}));
     resolvePremultiplied_ = uniformLocation(gl_, *resolveProgram_, "premultiplied");
     resolveSamples_ = uniformLocation(gl_, *resolveProgram_, "samples");
@@ -415,7 +434,7 @@ bool GlFrameRenderer::preparePrograms(const FrameInputs& frame, LitOutput output
   if (!lineProgram_ || lineFog_ != frame.fog.mode) {
     ShaderProgram program = buildProgram(gl_, {"line.vert", "line.frag"}, fogDefine(frame));
     const auto at = [&](const char* name) { return uniformLocation(gl_, program, name); };
-    lineProgram_.emplace(LineProgram{at("clipFromModel"), at("colored"), at("baseColorFactor"), std::move(program)});
+    lineProgram_.emplace(LineProgram{at("clipFromModel"), at("colored"), at("baseColorFactor"), at("levels"), std::move(program)});
     lineFog_ = frame.fog.mode;
     compiled = true;
   }
@@ -458,12 +477,14 @@ void GlFrameRenderer::shadowPass(const FrameInputs& frame) {
 }
 
 void GlFrameRenderer::litPass(const FrameInputs& frame, LitOutput output) {
-  target_.resize(gl_, frame.width, frame.height);
-  gl_.BindFramebuffer(GL_FRAMEBUFFER, target_.framebuffer());
+  const bool levels = output == LitOutput::Levels;
+  RenderTarget& target = levels ? levels_ : target_;
+  target.resize(gl_, frame.width, frame.height);
+  gl_.BindFramebuffer(GL_FRAMEBUFFER, target.framebuffer());
   gl_.Viewport(0, 0, frame.width, frame.height);
   gl_.DepthMask(GL_TRUE);
   const float farDepth = 1.0f;
-  gl_.ClearNamedFramebufferfv(target_.framebuffer(), GL_DEPTH, 0, &farDepth);
+  gl_.ClearNamedFramebufferfv(target.framebuffer(), GL_DEPTH, 0, &farDepth);
 
   // The background over every pixel, through the same encoding as lit pixels; depth stays 1.
   // The normals stage: 0 where no triangle is kept.
@@ -473,12 +494,15 @@ void GlFrameRenderer::litPass(const FrameInputs& frame, LitOutput output) {
   gl_.BindTextureUnit(kBumpMapUnit, frame.bump.map ? scene_.bumpMap() : 0);
   if (output == LitOutput::Normal) {
     const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    gl_.ClearNamedFramebufferfv(target_.framebuffer(), GL_COLOR, 0, none);
+    gl_.ClearNamedFramebufferfv(target.framebuffer(), GL_COLOR, 0, none);
   } else if (!showsEnvironment(frame)) {
     // One colour everywhere: a clear to the value background.frag would write at every pixel, stored
-    // by the C++ mirror of blending.glsl (the same product), instead of a full-frame draw.
+    // by the C++ mirror of blending.glsl (the same product), instead of a full-frame draw; encoded
+    // as drawn, its levels by the CPU's resolve (each level / 255, which the RGBA8 target stores as that level).
     const glm::vec4 held = cpu::stored(frame.background, frame.backgroundAlpha, frame.blending);
-    gl_.ClearNamedFramebufferfv(target_.framebuffer(), GL_COLOR, 0, glm::value_ptr(held));
+    const Rgba8 encoded = encodePixel(cpu::unstored(held, frame.blending));  // resolved.glsl's rule
+    const glm::vec4 value = levels ? glm::vec4(encoded.r, encoded.g, encoded.b, encoded.a) / 255.0f : held;
+    gl_.ClearNamedFramebufferfv(target.framebuffer(), GL_COLOR, 0, glm::value_ptr(value));
   } else {
     gl_.UseProgram(backgroundProgram_->id());
     gl_.ProgramUniform2f(backgroundProgram_->id(), backgroundViewportSize_, static_cast<float>(frame.width),
@@ -486,6 +510,7 @@ void GlFrameRenderer::litPass(const FrameInputs& frame, LitOutput output) {
     gl_.ProgramUniform1f(backgroundProgram_->id(), backgroundAlpha_, frame.backgroundAlpha);
     gl_.ProgramUniform1i(backgroundProgram_->id(), backgroundPremultiplied_, frame.blending == Blending::Premultiplied ? 1 : 0);
     gl_.ProgramUniform2f(backgroundProgram_->id(), backgroundSampleOffset_, frame.sampleOffset.x, frame.sampleOffset.y);
+    gl_.ProgramUniform1i(backgroundProgram_->id(), backgroundLevels_, levels ? 1 : 0);
     gl_.BindVertexArray(emptyVertexArray_.id());
     gl_.DrawArrays(GL_TRIANGLES, 0, 3);
   }
@@ -514,7 +539,7 @@ void GlFrameRenderer::litPass(const FrameInputs& frame, LitOutput output) {
     for (const FrameInstance& instance : frame.instances)
       if (!frame.materials[static_cast<std::size_t>(instance.material)].blended) draw(instance, nullptr);
   if (output == LitOutput::Normal) return;  // lines and points have no normal, blended surfaces write no depth
-  drawLines(frame);
+  drawLines(frame, levels);
   if (frame.transparentOrder.empty()) return;
   // Transparency (PIPELINE.md, section 7): the blended triangles back to front, depth-tested, no depth writes;
   // each fragment blends into the colour buffer in its shader (lit_output.glsl), in primitive order.
@@ -525,7 +550,7 @@ void GlFrameRenderer::litPass(const FrameInputs& frame, LitOutput output) {
   gl_.DepthMask(GL_TRUE);
 }
 
-void GlFrameRenderer::drawLines(const FrameInputs& frame) {
+void GlFrameRenderer::drawLines(const FrameInputs& frame, bool levels) {
   // After every triangle, instance by instance: its segments, then its points (the CPU backend's order).
   const GLuint program = lineProgram_->program.id();
   bool bound = false;
@@ -540,6 +565,7 @@ void GlFrameRenderer::drawLines(const FrameInputs& frame) {
     }
     gl_.ProgramUniformMatrix4fv(program, lineProgram_->clipFromModel, 1, GL_FALSE, glm::value_ptr(instance.clipFromModel));
     gl_.ProgramUniform1i(program, lineProgram_->colored, mesh.colors ? 1 : 0);
+    gl_.ProgramUniform1i(program, lineProgram_->levels, levels ? 1 : 0);
     gl_.ProgramUniform3fv(program, lineProgram_->baseColorFactor, 1,
                             glm::value_ptr(frame.materials[static_cast<std::size_t>(instance.material)].baseColor));
     if (mesh.lineIndexCount) {

@@ -3,7 +3,9 @@
 // renderer/PIPELINE.md lays them out: shadow pass 1 into a depth array
 // texture, then the lit pass (background, then every mesh instance with
 // flat, Gouraud or Phong shading) into a linear RGBA32F colour buffer, then
-// the resolve into the RGBA8 image. It needs only a current context and that
+// the resolve into the RGBA8 image. A frame where nothing blends or
+// averages colours writes the resolve's levels straight from the lit pass
+// instead, into the RGBA8 image: the same bytes, without the float buffer. It needs only a current context and that
 // context's getProcAddress, so the headless renderer (gl_renderer.cpp) and
 // the viewer's GLFW window share it. Every call needs its context current.
 #include <array>
@@ -43,7 +45,10 @@ class GlFrameRenderer {
   // (pipeline/frame_checks.h) against the uploaded scene. Throws
   // facet::Error (driver limits, framebuffer, shaders, a GL error).
   // `scene` is the uploaded one (the painter's algorithm reads its indices).
-  std::vector<PassTiming> drawFrame(const Scene& scene, const FrameInputs& frame);
+  // Encoding::ByResolve takes the float buffer and the resolve for every
+  // frame (the tests hold the default to it).
+  enum class Encoding { AsDrawnWherePossible, ByResolve };
+  std::vector<PassTiming> drawFrame(const Scene& scene, const FrameInputs& frame, Encoding encoding = Encoding::AsDrawnWherePossible);
 
   // The next frame draws its shadow maps (Renderer::forgetShadowMaps).
   void forgetShadowMaps() { mapsDrawn_ = {}; }
@@ -71,8 +76,8 @@ class GlFrameRenderer {
   // FACET_NORMAL_OUTPUT programs, opaque triangles only, read back as float.
   std::vector<glm::vec4> drawNormals(const Scene& scene, const FrameInputs& frame);
 
-  // The framebuffer drawFrame resolves into (colour attachment 0, RGBA8), for a viewer to blit from.
-  GLuint framebuffer() const { return resolved_.framebuffer(); }
+  // The framebuffer holding drawFrame's image (colour attachment 0, RGBA8), for a viewer to blit from.
+  GLuint framebuffer() const { return image_->framebuffer(); }
 
  private:
   // A lit-pass program and its uniform locations (shaders/draw_uniforms.glsl).
@@ -123,14 +128,19 @@ class GlFrameRenderer {
   // Back-face culling as the instance asks (FrameInstance::cullBackFaces).
   void setCulling(bool cull);
   void shadowPass(const FrameInputs& frame);
+  // Nothing blends or averages the frame's colours: no blended draw, one
+  // sample. Each pixel's image is then the resolve of the last colour
+  // written there, which the lit pass can encode as it writes it.
+  static bool encodesAsDrawn(const FrameInputs& frame);
   // The background, the opaque triangles, lines and points, then the blended
-  // triangles; LitOutput::Normal: the opaque triangles alone, over 0.
+  // triangles, into target_; LitOutput::Levels: the same as levels, into
+  // levels_; LitOutput::Normal: the opaque triangles alone, over 0.
   void litPass(const FrameInputs& frame, LitOutput output = LitOutput::Color);
   // The instance's triangles, or those of one painter's run (null: all, in the mesh's order).
   void drawInstance(const LitProgram& lit, const FrameInputs& frame, const FrameInstance& instance, bool flat, const PainterRun* run = nullptr);
   // The mesh's triangles through its vertex array, or one painter's run of them.
   void drawIndexed(const MeshBuffers& mesh, const PainterRun* run);
-  void drawLines(const FrameInputs& frame);
+  void drawLines(const FrameInputs& frame, bool levels);
   // A colour buffer encoded into `resolved_` (shaders/resolve.frag): `source`
   // holds its colours premultiplied or not, summed over `samples` passes.
   void resolvePass(const FrameInputs& frame, GLuint source, bool premultiplied, int samples);
@@ -151,11 +161,12 @@ class GlFrameRenderer {
   GLint resolvePremultiplied_ = -1;     // the resolve's
   GLint resolveSamples_ = -1;
   GLint backgroundSampleOffset_ = -1;
+  GLint backgroundLevels_ = -1;         // its uniform bool levels
   std::optional<ShaderProgram> accumulateProgram_;
   GLint accumulatePremultiplied_ = -1;
   std::optional<ShaderProgram> resolveProgram_;
   struct LineProgram {
-    GLint clipFromModel, colored, baseColorFactor;
+    GLint clipFromModel, colored, baseColorFactor, levels;
     ShaderProgram program;
   };
   std::optional<LineProgram> lineProgram_;  // segments and points (line.vert, line.frag)
@@ -182,6 +193,8 @@ class GlFrameRenderer {
   ShadowPassKey mapsDrawn_;  // what shadowMaps_ holds the maps of
   RenderTarget target_{GL_RGBA32F};  // the lit pass's colour buffer, linear RGBA
   RenderTarget resolved_{GL_RGBA8, RenderTarget::Depth::Without};
+  RenderTarget levels_{GL_RGBA8};  // a frame encoded as drawn: the image, with the lit pass's depth
+  const RenderTarget* image_ = &resolved_;  // which of the two holds the last frame's image
   RenderTarget sum_{GL_RGBA32F, RenderTarget::Depth::Without};  // anti-aliasing: the samples' premultiplied sum
   RenderTarget idTarget_{GL_R32UI};
   RenderTarget countTarget_{GL_R32F};

@@ -65,7 +65,7 @@ void RenderTarget::resize(const GlFunctions& gl, int width, int height) {
   gl.NamedFramebufferDrawBuffer(framebuffer_.id(), GL_COLOR_ATTACHMENT0);
   gl.NamedFramebufferReadBuffer(framebuffer_.id(), GL_COLOR_ATTACHMENT0);
   checkFramebufferComplete(gl, framebuffer_.id(), format == GL_RGBA32F ? "lit pass (RGBA32F + DEPTH_COMPONENT32F)"
-                                              : format == GL_RGBA8   ? "resolve (RGBA8)"
+                                              : format == GL_RGBA8   ? (depth == Depth::With ? "lit pass encoded as drawn (RGBA8 + DEPTH_COMPONENT32F)" : "resolve (RGBA8)")
                                               : format == GL_R32UI   ? "triangle id (R32UI + DEPTH_COMPONENT32F)"
                                                                      : "fragment count (R32F + DEPTH_COMPONENT32F)");
   width_ = width;

@@ -15,8 +15,9 @@ void checkSizeLimit(const GlFunctions& gl, const std::string& what, int size, GL
 
 // A W×H framebuffer of one colour texture and, unless it is a resolve's
 // target, GL_DEPTH_COMPONENT32F depth: the lit pass's linear colours
-// (GL_RGBA32F), the resolved image (GL_RGBA8, no depth), the triangle ids
-// (GL_R32UI) and the fragment counts (GL_R32F).
+// (GL_RGBA32F), the resolved image (GL_RGBA8, no depth), the image a lit
+// pass encodes as it draws (GL_RGBA8), the triangle ids (GL_R32UI) and the
+// fragment counts (GL_R32F).
 class RenderTarget {
  public:
   enum class Depth { With, Without };

@@ -40,6 +40,7 @@ std::string litShaderDefines(const FrameInputs& frame, DrawVariant variant, LitO
   d += drawVariantDefines(variant);
   if (variant.blended) d += "#define FACET_PREMULTIPLIED " + std::string(frame.blending == Blending::Premultiplied ? "1" : "0") + "\n";
   d += "#define FACET_NORMAL_OUTPUT " + std::string(output == LitOutput::Normal ? "1" : "0") + "\n";
+  d += "#define FACET_LEVELS_OUTPUT " + std::string(output == LitOutput::Levels ? "1" : "0") + "\n";
   d += "#define FACET_ENVIRONMENT " + std::string(frame.environment.map ? "1" : "0") + "\n";
   d += "#define FACET_PBR " + std::string(frame.shading == ShadingMode::Pbr ? "1" : "0") + "\n";
   d += fogDefine(frame);

@@ -43,10 +43,12 @@ std::string drawVariantDefines(DrawVariant variant);
 // "#define FACET_FOG m": the frame's fog mode (fog.glsl), for the lit and the line programs.
 std::string fogDefine(const FrameInputs& frame);
 
-// What a lit program writes: the fragment's colour, or the normal it is
-// shaded with (FACET_NORMAL_OUTPUT: the normals stage, renderer/PIPELINE.md
-// section 6, "Stages"; never for a blended draw).
-enum class LitOutput { Color, Normal };
+// What a lit program writes: the fragment's linear colour; its colour's
+// sRGB levels (FACET_LEVELS_OUTPUT: a frame nothing blends or averages,
+// encoded as drawn, renderer/PIPELINE.md section 7, "The colour buffer and
+// the resolve"); or the normal it is shaded with (FACET_NORMAL_OUTPUT: the
+// normals stage, section 6, "Stages"). Only Color for a blended draw.
+enum class LitOutput { Color, Levels, Normal };
 
 // The #define lines (one per macro, each ending in a newline) of the lit
 // programs for `frame`, for draws of `variant`, writing `output`. Equal
