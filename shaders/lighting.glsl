@@ -78,12 +78,33 @@ float shadowFactor(int i, vec3 P, vec3 N, vec3 L) {
   bool cube = FACET_LIGHT_KIND(i) == kLightPoint;
   precise float compared = z - bias;
   int lit = 0;
+#if FACET_PCF_RADIUS == 1
+  // The 3×3 window in four gathers of 2×2 texels, {tx - 1, tx} and {tx + 1, tx + 2}
+  // each way (column and row tx + 2 unread): a gather at the corner tx / size
+  // reads texels tx - 1 and tx (floor(tx - 0.5)), with half a texel to spare for
+  // the division's rounding. Past an edge it reads the edge texel (clamp to
+  // edge): a cube face's rule; a spot or directional map counts the tap lit.
+  for (int gy = 0; gy < 2; ++gy)
+    for (int gx = 0; gx < 2; ++gx) {
+      int x0 = tx - 1 + 2 * gx, y0 = ty - 1 + 2 * gy;  // the gather's lower-left texel
+      vec4 t = textureGather(shadowMaps, vec3(float(x0 + 1) / float(size), float(y0 + 1) / float(size), float(layer)), 0);
+      // textureGather's order: (x0, y0 + 1), (x0 + 1, y0 + 1), (x0 + 1, y0), (x0, y0)
+      float depths[4] = float[4](t.w, t.z, t.x, t.y);
+      for (int k = 0; k < 4; ++k) {
+        int xi = x0 + (k & 1), yi = y0 + (k >> 1);
+        if (xi > tx + 1 || yi > ty + 1) continue;
+        bool outside = !cube && (xi < 0 || yi < 0 || xi >= size || yi >= size);
+        if (outside || !(compared > depths[k])) ++lit;
+      }
+    }
+#else
   for (int dy = -r; dy <= r; ++dy)
     for (int dx = -r; dx <= r; ++dx) {
       int xi = cube ? clamp(tx + dx, 0, size - 1) : tx + dx, yi = cube ? clamp(ty + dy, 0, size - 1) : ty + dy;
       if (xi < 0 || yi < 0 || xi >= size || yi >= size) ++lit;
       else if (!(compared > texelFetch(shadowMaps, ivec3(xi, yi, layer), 0).r)) ++lit;
     }
+#endif
   precise float S = float(lit) / float((2 * r + 1) * (2 * r + 1));
   return S;
 }

@@ -81,10 +81,13 @@ void ShadowMapArray::resize(const GlFunctions& gl, int size, int layers) {
   *this = ShadowMapArray();
   texture_ = createTexture(gl, GL_TEXTURE_2D_ARRAY);
   gl.TextureStorage3D(texture_.id(), 1, GL_DEPTH_COMPONENT32F, size, size, layers);
-  // Read with texelFetch only: no filtering, no depth comparison.
+  // Read with texelFetch and textureGather: no filtering, no depth comparison.
   gl.TextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   gl.TextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   gl.TextureParameteri(texture_.id(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
+  // The 3×3 PCF window's gathers (shaders/lighting.glsl) read the edge texel past an edge, as a cube face's taps do.
+  gl.TextureParameteri(texture_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  gl.TextureParameteri(texture_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   framebuffer_ = createFramebuffer(gl);
   gl.NamedFramebufferDrawBuffer(framebuffer_.id(), GL_NONE);
   gl.NamedFramebufferReadBuffer(framebuffer_.id(), GL_NONE);
