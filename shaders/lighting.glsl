@@ -53,6 +53,11 @@ float specularTerm(vec3 N, vec3 L, vec3 V, float shininess, int model) {
   return power(maxZero(dot3(N, H)), shininess);
 }
 
+// A texel index beyond a map's edge (a spot or directional map counts such a tap lit).
+bool outsideMap(int xi, int yi, int size) {
+  return xi < 0 || yi < 0 || xi >= size || yi >= size;
+}
+
 // S of light i at P: PCF over (2r+1)² texels read with texelFetch; in shadow
 // when z - bias > depth, bias = max(b_slope·(1 - N·L), b_min); outside the
 // map or beyond its far plane counts as lit.
@@ -93,15 +98,14 @@ float shadowFactor(int i, vec3 P, vec3 N, vec3 L) {
       for (int k = 0; k < 4; ++k) {
         int xi = x0 + (k & 1), yi = y0 + (k >> 1);
         if (xi > tx + 1 || yi > ty + 1) continue;
-        bool outside = !cube && (xi < 0 || yi < 0 || xi >= size || yi >= size);
-        if (outside || !(compared > depths[k])) ++lit;
+        if ((!cube && outsideMap(xi, yi, size)) || !(compared > depths[k])) ++lit;
       }
     }
 #else
   for (int dy = -r; dy <= r; ++dy)
     for (int dx = -r; dx <= r; ++dx) {
       int xi = cube ? clamp(tx + dx, 0, size - 1) : tx + dx, yi = cube ? clamp(ty + dy, 0, size - 1) : ty + dy;
-      if (xi < 0 || yi < 0 || xi >= size || yi >= size) ++lit;
+      if (outsideMap(xi, yi, size)) ++lit;
       else if (!(compared > texelFetch(shadowMaps, ivec3(xi, yi, layer), 0).r)) ++lit;
     }
 #endif

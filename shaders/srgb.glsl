@@ -1,14 +1,13 @@
 // sRGB by the tables of renderer/image/srgb.h, which the OpenGL backend
 // uploads once into this block (binding 1). A linear value's 8-bit level:
 // clamp to [0, 1] (NaN to 0), then raise to 2^-13 (whose level 0 every
-// smaller value shares); the entry of its bucket (bits >> 15, from 2^-13's bucket on)
-// holds the level of the bucket's first float above bit 15 and 2^15 minus
-// where in the bucket the next level begins below it, so adding the value's
-// low 15 bits carries into the level where they reach that edge: the level
-// is (entry + (bits & 0x7FFF)) >> 15. An 8-bit texel's
-// linear value is read. Mirror: facet::encodeLevel and
-// SrgbTables::decoded, the same tables and steps, so both backends write
-// the same bytes.
+// smaller value shares); the entry of its bucket (bits >> 15, from 2^-13's
+// bucket on) holds the level of the bucket's first float above bit 15 and
+// 2^15 minus where in the bucket the next level begins below it, so adding
+// the value's low 15 bits carries into the level where they reach that
+// edge: the level is (entry + (bits & 0x7FFF)) >> 15. An 8-bit texel's
+// linear value is read. Mirror: facet::encodeLevel and SrgbTables::decoded,
+// the same tables and steps, so both backends write the same bytes.
 layout(std140, binding = 1) uniform SrgbTables {
   vec4 decoded[64];     // [v / 4][v % 4]: the linear value of 8-bit level v
   uvec4 buckets[833];   // [b / 4][b % 4]: the entry of the b-th bucket from 2^-13's, start << 15 | (2^15 - edge)

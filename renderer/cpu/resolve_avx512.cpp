@@ -25,10 +25,6 @@
 namespace facet::cpu {
 namespace {
 
-// A channel's bucket is gathered as the four bytes from its entry on: the
-// last bucket's three bytes past the table lie inside the tables' storage.
-static_assert(offsetof(SrgbTables, buckets) + kSrgbBuckets + 3 <= sizeof(SrgbTables));
-
 constexpr float kNear = 0.002f;  // levels: over five times the estimate's largest error
 
 // 255·E(c) for c in [0, 1]: c^(1/2.4) = 2^(-k/2.4)·m^(1/2.4) with c = m·2^-k,

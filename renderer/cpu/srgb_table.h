@@ -1,6 +1,7 @@
 #pragma once
-// encodePixel (image/srgb.h) of one linear RGBA pixel: the clamp and the alpha
-// level four lanes at a time where SSE2 is there, then the same look-ups; the tables are passed in so a loop looks them up once.
+// encodePixel (image/srgb.h) of one linear RGBA pixel: the clamps, the
+// buckets and the alpha level four lanes at a time where SSE2 is there, then
+// the same look-ups; the tables are passed in so a loop looks them up once.
 #include <cstdint>
 
 #include "image/image.h"

@@ -9,8 +9,9 @@
 //   is the number of thresholds t_k (k = 1..255, the smallest float reaching
 //   level k) with t_k ≤ c. NaN and c < 0 give 0, c > 1 gives 255.
 // - Finding that number: c is clamped to [0, 1] (NaN to 0), then raised to
-//   2^-13 (every value below 2^-13 is level 0, as 2^-13 is); its bits >> 15 (exponent
-//   and top 8 mantissa bits) pick a bucket of 2^15 floats, 256 an octave.
+//   2^-13 (every value below 2^-13 is level 0, as 2^-13 is); its bits >> 15
+//   (exponent and top 8 mantissa bits) pick a bucket of 2^15 floats, 256 an
+//   octave.
 //   No bucket holds more than one threshold (checked when the tables are
 //   built), so one entry per bucket decides. It holds the level of the
 //   bucket's first float above bit 15 and, below, 2^15 minus where in the
