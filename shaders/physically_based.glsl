@@ -130,20 +130,20 @@ vec3 shadePhysicallyBased(PbrSurface s, vec3 P, vec3 N, vec3 V) {
   float NdotV = maxZero(dot3(N, V));
   precise vec3 lambert = cDiff / kPi;
   precise vec3 color = vec3(0.0);
-  for (int i = 0; i < FACET_LIGHT_COUNT; ++i) {
+  for (int i = 0; i < FACET_LIGHT_COUNT; ++i) {  // skipping by an if, as illuminate does
     TowardLight toward = towardLight(i, P);
-    if (!toward.reaches) continue;
     vec3 L = toward.L;
     precise float NdotL = dot3(N, L);
-    if (!(NdotL > 0.0)) continue;  // as the course's modes: nothing where N·L ≤ 0
-    vec3 H = normalize3(L + V);
-    float NdotH = maxZero(dot3(N, H)), VdotH = maxZero(dot3(V, H));
-    vec3 F = schlickFresnel(F0, VdotH);
-    precise float specular = ggxDistribution(NdotH, alpha2) * smithVisibility(NdotL, NdotV, alpha2);
-    precise vec3 f = (vec3(1.0) - F) * lambert + F * specular;
-    precise float S = shadowFactor(i, P, N, L);
-    precise vec3 radiance = (S * toward.fAtt) * (NdotL * frame.lights[i].intensity.rgb);
-    color = color + radiance * f;
+    if (toward.reaches && NdotL > 0.0) {  // as the course's modes: nothing where N·L ≤ 0
+      vec3 H = normalize3(L + V);
+      float NdotH = maxZero(dot3(N, H)), VdotH = maxZero(dot3(V, H));
+      vec3 F = schlickFresnel(F0, VdotH);
+      precise float specular = ggxDistribution(NdotH, alpha2) * smithVisibility(NdotL, NdotV, alpha2);
+      precise vec3 f = (vec3(1.0) - F) * lambert + F * specular;
+      precise float S = shadowFactor(i, P, N, L);
+      precise vec3 radiance = (S * toward.fAtt) * (NdotL * frame.lights[i].intensity.rgb);
+      color = color + radiance * f;
+    }
   }
   // Image-based ambient: the map's irradiance and prefiltered radiance, or I_a from every direction.
   vec2 ab = environmentBrdf(roughness, NdotV);
