@@ -2,7 +2,8 @@
 """Writes the material test scenes of assets/scenes (run from anywhere):
 red_cube.gltf (glTF's default metallic and roughness), vertex_colors.gltf
 (COLOR_0 as float RGB, normalized unsigned byte RGBA and unsigned short
-RGBA) and double_sided.gltf (two quads seen from behind, one double-sided).
+RGBA), double_sided.gltf (two quads seen from behind, one double-sided) and
+unlit.gltf (a KHR_materials_unlit cube beside a lit one).
 The output is the same bytes on every run."""
 import base64
 import json
@@ -153,7 +154,23 @@ def double_sided():
     g.write("double_sided.gltf")
 
 
+def unlit():
+    """red_cube.gltf's lit cube, and behind it on the right a green cube whose material is
+    KHR_materials_unlit: its base colour at every pixel, whatever the light and the shading."""
+    g = Gltf()
+    ground(g)
+    red = g.material("red", {"baseColorFactor": [0.8, 0.05, 0.05, 1]})
+    green = g.material("unlit green", {"baseColorFactor": [0.1, 0.7, 0.25, 1]}, extensions={"KHR_materials_unlit": {}})
+    g.node({"name": "red cube", "mesh": g.mesh("cube", *cube(), red), "translation": [0, 0.5, 0], "rotation": [0, 0.3826834, 0, 0.9238795]})
+    g.node({"name": "unlit green cube", "mesh": g.mesh("unlit cube", *cube(), green), "translation": [1.5, 0.5, -2.2], "rotation": [0, 0.258819, 0, 0.9659258]})
+    g.light("sun", {"type": "point", "intensity": 14, "color": [1, 0.97, 0.92]}, [-2.5, 4, 3])
+    g.camera([0, 1.6, 3.2], look_down(22))
+    g.doc["extensionsUsed"].append("KHR_materials_unlit")
+    g.write("unlit.gltf")
+
+
 if __name__ == "__main__":
     red_cube()
     vertex_colors()
     double_sided()
+    unlit()

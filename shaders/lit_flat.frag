@@ -35,13 +35,9 @@ void main() {
   writeNormal(gl_FrontFacing ? faceNormal : -faceNormal);  // the normals stage: the side lit, unlit materials too
   return;
 #endif
-  if (unlit) {  // KHR_materials_unlit: O_d itself, through the fog
-    writeLit(fogged(O.rgb), O.a);
-    return;
-  }
 #if FACET_EMISSIVE_MAP
   precise vec3 specular = emissionAt(t) + I.specular;  // summed with k_e = 0 (summedMaterial)
   I.specular = specular;
 #endif
-  writeLit(fogged(shade(I, O.rgb)), O.a);
+  writeLit(fogged(unlit ? O.rgb : shade(I, O.rgb)), O.a);  // KHR_materials_unlit: O_d itself, through the fog (a select, as lit_phong.frag)
 }

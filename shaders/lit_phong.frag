@@ -44,17 +44,16 @@ void main() {
   writeNormal(N);  // the normals stage: N as lit below, unlit materials too
   return;
 #endif
-  if (unlit) {  // KHR_materials_unlit: O_d itself, through the fog
-    writeLit(fogged(O.rgb), O.a);
-    return;
-  }
 #if FACET_PBR
-  writeLit(fogged(shadePhysicallyBased(pbrSurfaceAt(O.rgb, t), P, N, viewVector(P))), O.a);
+  vec3 shaded = shadePhysicallyBased(pbrSurfaceAt(O.rgb, t), P, N, viewVector(P));
 #else
   CourseMaterial lit = material;
 #if FACET_EMISSIVE_MAP
   lit.emissive = emissionAt(t);  // k_e·E in k_e's place
 #endif
-  writeLit(fogged(shade(illuminate(lit, P, N, viewVector(P)), O.rgb)), O.a);
+  vec3 shaded = shade(illuminate(lit, P, N, viewVector(P)), O.rgb);
 #endif
+  // KHR_materials_unlit: O_d itself, through the fog. A select, not an early
+  // return: llvmpipe's code for the lit pass is ~8 % faster without the branch.
+  writeLit(fogged(unlit ? O.rgb : shaded), O.a);
 }
