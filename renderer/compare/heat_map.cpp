@@ -37,7 +37,7 @@ Image heatMap(const Image& expected, const Image& actual, const DiffThresholds& 
     throw Error("heat map: images of different sizes: " + std::to_string(expected.width()) + "x" + std::to_string(expected.height()) +
                 " and " + std::to_string(actual.width()) + "x" + std::to_string(actual.height()));
   // One colour per possible difference, computed once.
-  std::array<Rgba8, 256> colors;
+  std::array<Rgba8, 256> colors{};
   for (int d = 0; d < 256; ++d) colors[static_cast<std::size_t>(d)] = heatMapColor(d, thresholds);
   Image out(expected.width(), expected.height());
   for (int y = 0; y < out.height(); ++y)

@@ -62,7 +62,7 @@ class CpuRenderer final : public Renderer {
     };
     const bool resolvedByTile = frame.samples.empty() && !frame.volume.placed;
     if (resolvedByTile) {
-      result.image = Image(frame.width, frame.height);
+      result.image = Image::unfilled(frame.width, frame.height);  // every tile resolves into it
       drawPass(frame, &result.image);
       result.timings.push_back({"lit pass and resolve", millisecondsSince(start)});
     } else if (frame.samples.empty()) {

@@ -4,9 +4,22 @@
 
 namespace facet {
 
-Image::Image(int width, int height, Rgba8 fill) : width_(width), height_(height) {
+namespace {
+
+std::size_t pixelCount(int width, int height) {
   if (width < 0 || height < 0) throw Error("image size " + std::to_string(width) + "x" + std::to_string(height) + " is negative");
-  pixels_.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), fill);
+  return static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+}
+
+}  // namespace
+
+Image::Image(int width, int height, Rgba8 fill) : width_(width), height_(height) { pixels_.assign(pixelCount(width, height), fill); }
+
+Image Image::unfilled(int width, int height) {
+  Image image;
+  image.pixels_.resize(pixelCount(width, height));  // default-initialized: LargePageAllocator leaves them as handed over
+  image.width_ = width, image.height_ = height;
+  return image;
 }
 
 }  // namespace facet

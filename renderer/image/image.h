@@ -9,8 +9,10 @@ namespace facet {
 // An RGBA8 image. Rows are stored bottom row first, as OpenGL's window
 // coordinates have their origin at the lower left; files are written top row
 // first, so rows flip exactly once, in the PNG writer and reader.
+// No default member initializers: a default-initialized Rgba8 is left as it
+// is (Image::unfilled's storage); Rgba8{} is (0, 0, 0, 0).
 struct Rgba8 {
-  std::uint8_t r = 0, g = 0, b = 0, a = 0;
+  std::uint8_t r, g, b, a;
   friend bool operator==(const Rgba8&, const Rgba8&) = default;
 };
 
@@ -18,6 +20,11 @@ class Image {
  public:
   Image() = default;
   Image(int width, int height, Rgba8 fill = {});
+  // An image whose every pixel the caller is about to write (a resolve): its
+  // storage is not filled first, so the pages are first touched by the
+  // writers, on their threads (the fill took 1.5 % of a sphere-100k frame
+  // on one thread, and the kernel's page clearing another 1.8 %).
+  static Image unfilled(int width, int height);
 
   int width() const { return width_; }
   int height() const { return height_; }

@@ -26,7 +26,7 @@ constexpr int kSize = 96;
 struct Renders {
   Image gl, cpu;
   std::vector<std::uint32_t> glTriangles, cpuTriangles;
-  Rgba8 background;
+  Rgba8 background{};
 };
 
 Renderer& glRenderer() {

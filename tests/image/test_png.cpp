@@ -139,7 +139,7 @@ TEST_CASE("PNG: a size past the limit is refused from the header, before decodin
 TEST_CASE("PNG: every colour type and bit depth decodes, interlaced or not, and highly compressed data is accepted") {
   const struct {
     int colorType, bitDepth;
-    Rgba8 pixel;  // of all-zero samples
+    Rgba8 pixel{};  // of all-zero samples
   } kinds[] = {{0, 1, {0, 0, 0, 255}}, {0, 2, {0, 0, 0, 255}}, {0, 4, {0, 0, 0, 255}}, {0, 8, {0, 0, 0, 255}}, {0, 16, {0, 0, 0, 255}},
                {2, 8, {0, 0, 0, 255}}, {2, 16, {0, 0, 0, 255}}, {3, 1, {0, 0, 0, 255}}, {3, 8, {0, 0, 0, 255}}, {4, 8, {0, 0, 0, 0}},
                {4, 16, {0, 0, 0, 0}},  {6, 8, {0, 0, 0, 0}},   {6, 16, {0, 0, 0, 0}}};
