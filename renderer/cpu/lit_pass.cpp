@@ -70,6 +70,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
   const int tx0 = box.x0, ty0 = box.y0, tx1 = box.x1, ty1 = box.y1;
   constexpr VaryingLayout layout = varyingLayout(kMode);
   std::uint32_t current = kNoTriangle;
+  std::uint32_t currentInstance = std::numeric_limits<std::uint32_t>::max();  // whose mesh and material the variables below hold: none yet
   Interpolation* in = nullptr;
   const CourseMaterial* material = nullptr;
   const Mesh* drawnMesh = nullptr;
@@ -98,26 +99,29 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         const std::size_t index = winner.index;
         const BinnedTriangle& t = bins.triangles[index];
         in = &winner.interpolation;
-        const FrameInstance& instance = frame.instances[t.instance];
-        const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
-        material = &frame.materials[static_cast<std::size_t>(instance.material)];
-        drawnMesh = &mesh;
-        texture = baseColorTextureOf(scene, frame, *material, mesh);
-        normalMap = layout.tangent >= 0 ? normalMapOf(scene, *material, mesh) : nullptr;
-        emissiveMap = kMode != ShadingMode::Pbr ? emissiveMapOf(scene, *material, mesh) : nullptr;
-        bumpable = layout.tangent >= 0 && frame.bump.map && !mesh.tangents.empty();
-        colored = !mesh.colors.empty();
-        used = procedural ? layout.count : colored ? layout.model : (kMode == ShadingMode::Flat && !texture && !emissiveMap ? 0 : layout.color);
-        // Phong reads P and N, the texture coordinates only with a texture, the tangent only with a normal map or a bump map.
-        if constexpr (kMode == ShadingMode::Phong)
-          if (used == layout.color && !normalMap && !bumpable) used = texture || emissiveMap ? layout.tangent : layout.uv;
+        if (t.instance != currentInstance) {  // what the pixel reads of its mesh and material: once per run of one instance's triangles
+          currentInstance = t.instance;
+          const FrameInstance& instance = frame.instances[t.instance];
+          const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
+          material = &frame.materials[static_cast<std::size_t>(instance.material)];
+          drawnMesh = &mesh;
+          texture = baseColorTextureOf(scene, frame, *material, mesh);
+          normalMap = layout.tangent >= 0 ? normalMapOf(scene, *material, mesh) : nullptr;
+          emissiveMap = kMode != ShadingMode::Pbr ? emissiveMapOf(scene, *material, mesh) : nullptr;
+          bumpable = layout.tangent >= 0 && frame.bump.map && !mesh.tangents.empty();
+          colored = !mesh.colors.empty();
+          used = procedural ? layout.count : colored ? layout.model : (kMode == ShadingMode::Flat && !texture && !emissiveMap ? 0 : layout.color);
+          // Phong reads P and N, the texture coordinates only with a texture, the tangent only with a normal map or a bump map.
+          if constexpr (kMode == ShadingMode::Phong)
+            if (used == layout.color && !normalMap && !bumpable) used = texture || emissiveMap ? layout.tangent : layout.uv;
+          // Phong's plain pixel: lit, without texture, vertex colours, procedural pattern, bent normal,
+          // emission map or fog; its P and N go to the batch as they are interpolated.
+          plain = kMode == ShadingMode::Phong && !normals && !texture && !colored && !procedural && !normalMap && !bumpable && !emissiveMap &&
+                  !foggy && !material->unlit;
+        }
         back = !t.snapped.frontFacing;
         if (used || foggy) in->setUpVaryings(used);
         if constexpr (kMode == ShadingMode::Flat) flat = &bins.flat[2 * index];
-        // Phong's plain pixel: lit, without texture, vertex colours, procedural pattern, bent normal,
-        // emission map or fog; its P and N go to the batch as they are interpolated.
-        plain = kMode == ShadingMode::Phong && !normals && !texture && !colored && !procedural && !normalMap && !bumpable && !emissiveMap && !foggy &&
-                !material->unlit;
       }
       if constexpr (kMode == ShadingMode::Phong)
         if (plain) {
@@ -298,11 +302,14 @@ void blendTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
           const int k0 = (py - r.y0) * kTileSize + (x0 - r.x0);
           const TakenRun taken = frontRow(in.depthPlane(), x0, x1, py, &scratch.depth[k0], &scratch.fragment[k0], blended.id);
           if (taken.first > taken.last) return;
-          for (int px = taken.first; px <= taken.last; ++px) {  // α where it was taken; one α for the triangle without texture or COLOR_0
-            const int k = k0 + (px - x0);
-            if (scratch.fragment[k] == blended.id)
-              scratch.alpha[k] = uniformAlpha ? *uniformAlpha : fragmentAlphaAt(material, texture, colored, layout, in, px, py);
-          }
+          // α where it was taken; one α for the triangle without texture or COLOR_0, written over the whole
+          // run (a pixel not taken keeps kNoTriangle, and its α is never read).
+          if (uniformAlpha) std::fill(&scratch.alpha[k0 + (taken.first - x0)], &scratch.alpha[k0 + (taken.last - x0)] + 1, *uniformAlpha);
+          else
+            for (int px = taken.first; px <= taken.last; ++px) {
+              const int k = k0 + (px - x0);
+              if (scratch.fragment[k] == blended.id) scratch.alpha[k] = fragmentAlphaAt(material, texture, colored, layout, in, px, py);
+            }
           reach(taken.first, taken.last, py);
         });
     if (drawn.x0 > drawn.x1) continue;
