@@ -9,8 +9,9 @@
 // evaluates facet's illumination equation (ambient, diffuse and specular
 // with k_a, k_d, k_s, n, the metal's tinted highlight, f_att, the spot cone,
 // S by PCF over the frame's (2r+1)² texels through sampler2DArrayShadow),
-// into an SRGB8_ALPHA8 framebuffer (4× MSAA and a blit resolve with
-// anti-aliasing) that llvmpipe encodes on write; then glReadPixels.
+// into an SRGB8_ALPHA8 framebuffer that llvmpipe encodes on write (with
+// anti-aliasing, multisampled with every sample shaded, or plain MSAA, as
+// LeanSampling says, and a blit resolve); then glReadPixels.
 //
 // What it leaves to the product's backend: bit-exact transforms (plain
 // GLSL `*`, no `precise`), the float colour buffer and its resolve, the
@@ -212,8 +213,9 @@ bool keptByMask(float alpha, float cutoff) { return alpha >= cutoff; }
 
 class LeanGlRenderer final : public Renderer {
  public:
-  LeanGlRenderer()
-      : context_(gl::makeHeadlessContext(GlContextKind::OsMesa)),
+  explicit LeanGlRenderer(LeanSampling sampling)
+      : sampling_(sampling),
+        context_(gl::makeHeadlessContext(GlContextKind::OsMesa)),
         gl_(gl::loadGlFunctions([this](const char* name) { return context_->getProcAddress(name); })),
         name_(gl::rendererAndVersion(gl_)) {}
 
@@ -225,7 +227,10 @@ class LeanGlRenderer final : public Renderer {
     }
   }
 
-  std::string description() const override { return "lean: " + name_ + " via " + std::string(context_->name()) + ", minimal programs"; }
+  std::string description() const override {
+    return "lean: " + name_ + " via " + std::string(context_->name()) + ", minimal programs" +
+           (sampling_ == LeanSampling::EverySample ? "" : ", anti-aliasing by MSAA shading once a pixel");
+  }
 
   RenderResult render(const Scene& scene, const FrameInputs& frame) override {
     if (const std::string why = leanUnsupported(scene, frame); !why.empty()) throw Error("lean: no minimal program for this scene (" + why + ")");
@@ -419,6 +424,12 @@ class LeanGlRenderer final : public Renderer {
     gl_.BindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
     gl_.Viewport(0, 0, frame.width, frame.height);
     gl_.Enable(GL_FRAMEBUFFER_SRGB);  // linear colours in, sRGB bytes stored; blending and the resolve in linear
+    if (samples > 1 && sampling_ == LeanSampling::EverySample) {  // the fragment shader once per sample, at the sample
+      gl_.Enable(GL_SAMPLE_SHADING);
+      gl_.MinSampleShading(1.0f);
+    } else {
+      gl_.Disable(GL_SAMPLE_SHADING);
+    }
     gl_.DepthMask(GL_TRUE);
     const float background[4] = {frame.background.r, frame.background.g, frame.background.b, frame.backgroundAlpha};
     const float farDepth = 1.0f;
@@ -517,6 +528,7 @@ class LeanGlRenderer final : public Renderer {
   void checkError(const char* where) const { gl::checkGlError(gl_, where, "lean: "); }
 
   // Declared first: the GL objects below go before the function table, and the table before the context.
+  LeanSampling sampling_;
   std::unique_ptr<gl::HeadlessContext> context_;
   gl::GlFunctions gl_;
   std::string name_;
@@ -554,6 +566,6 @@ std::string leanUnsupported(const Scene& scene, const FrameInputs& frame) {
   return {};
 }
 
-std::unique_ptr<Renderer> makeLeanGlRenderer() { return std::make_unique<LeanGlRenderer>(); }
+std::unique_ptr<Renderer> makeLeanGlRenderer(LeanSampling sampling) { return std::make_unique<LeanGlRenderer>(sampling); }
 
 }  // namespace facet

@@ -110,6 +110,7 @@ std::unique_ptr<Renderer> makeBackend(const std::string& backend, int threads) {
 #if FACET_HAVE_GL
   if (backend == "gl") return makeGlRenderer(GlContextKind::OsMesa);
   if (backend == "lean") return makeLeanGlRenderer();
+  if (backend == "lean-msaa") return makeLeanGlRenderer(LeanSampling::OncePerPixel);
 #endif
   throw Error("bench: backend '" + backend + "' is not available in this build");
 }
@@ -117,9 +118,9 @@ std::unique_ptr<Renderer> makeBackend(const std::string& backend, int threads) {
 // Why `backend` does not draw the frame (a line of the table), or empty.
 std::string skipNote(const std::string& backend, const Scene& scene, const FrameInputs& frame) {
 #if FACET_HAVE_GL
-  if (backend == "lean") {
+  if (backend == "lean" || backend == "lean-msaa") {
     const std::string why = leanUnsupported(scene, frame);
-    return why.empty() ? std::string() : "lean: no minimal program for this scene (" + why + ")";
+    return why.empty() ? std::string() : backend + ": no minimal program for this scene (" + why + ")";
   }
 #else
   (void)scene;
@@ -187,11 +188,12 @@ Command addBenchCommand(CLI::App& app) {
       ->delimiter(',')
       ->check(CLI::IsMember(allSceneNames()));
   command->add_option("--backends", o->backends,
-                      "cpu,gl,lean (default all three): lean is llvmpipe with minimal shaders, bench only; cpu4, cpu8: the CPU rasterizer shading "
+                      "cpu,gl,lean (default all three): lean is llvmpipe with minimal shaders, bench only, an anti-aliased frame's every sample "
+                      "shaded (as the course's supersampling); lean-msaa: the same with plain MSAA, shading once a pixel; cpu4, cpu8: the CPU rasterizer shading "
                       "four or eight pixels at a time, as where AVX2 or AVX-512 is missing; and ray: the ray tracer's frame, "
                       "its rays by kind and its BVH, against Embree where built with it")
       ->delimiter(',')
-      ->check(CLI::IsMember({"cpu", "cpu4", "cpu8", "gl", "lean", "ray"}));
+      ->check(CLI::IsMember({"cpu", "cpu4", "cpu8", "gl", "lean", "lean-msaa", "ray"}));
   command->add_option("--frames", o->frames, "timed frames per backend and scene")->check(wholeNumberIn(1, 1000));
   command->add_option("--warmup", o->warmup, "untimed frames first")->check(wholeNumberIn(0, 100));
   command->add_option("--threads", o->threads, "threads of every backend (LP_NUM_THREADS for llvmpipe)")->check(wholeNumberIn(1, 256));
@@ -229,7 +231,10 @@ Command addBenchCommand(CLI::App& app) {
     for (const std::string& backend : o->backends) renderers.push_back(makeBackend(backend, o->threads));
     std::printf("facet bench: %dx%d, %d thread(s), %d warm-up + %d timed frames per backend, alternating\n", width, height, o->threads,
                 o->warmup, o->frames);
-    for (std::size_t r = 0; r < renderers.size(); ++r) std::printf("  %-4s %s\n", o->backends[r].c_str(), renderers[r]->description().c_str());
+    int nameWidth = 4;  // the backends' column: lean-msaa widens it
+    for (const std::string& backend : o->backends) nameWidth = std::max(nameWidth, static_cast<int>(backend.size()));
+    for (std::size_t r = 0; r < renderers.size(); ++r)
+      std::printf("  %-*s %s\n", nameWidth, o->backends[r].c_str(), renderers[r]->description().c_str());
 
     for (std::size_t sceneIndex = 0; sceneIndex < o->scenes.size(); ++sceneIndex) {
       const std::string& name = o->scenes[sceneIndex];
@@ -280,7 +285,7 @@ Command addBenchCommand(CLI::App& app) {
       std::printf("\n%s: %.0f triangles, %s shading, %zu light(s), %d shadow map(s) of %d²\n", name.c_str(), triangles,
                   std::string(kShadingModeNames[static_cast<std::size_t>(frame.shading)]).c_str(), frame.lights.size(), frame.shadowLayerCount,
                   frame.shadowLayerCount > 0 ? frame.shadows.mapSize : 0);
-      std::printf("  %-4s %10s %31s %8s %8s %11s %7s %8s\n", "", "ms/frame", "min..max (q1..q3)", "Mtri/s", "peak MB", "ms -upload", "vs gl",
+      std::printf("  %-*s %10s %31s %8s %8s %11s %7s %8s\n", nameWidth, "", "ms/frame", "min..max (q1..q3)", "Mtri/s", "peak MB", "ms -upload", "vs gl",
                   "vs lean");
       double glMedian = 0, leanMedian = 0;
       for (std::size_t r = 0; r < renderers.size(); ++r) {
@@ -303,7 +308,7 @@ Command addBenchCommand(CLI::App& app) {
         char spread[64];
         std::snprintf(spread, sizeof spread, "%.1f..%.1f (%.1f..%.1f)", s.min, s.max, s.q1, s.q3);
         char row[256];
-        std::snprintf(row, sizeof row, "  %-4s %10.2f %31s %8.2f %8.0f %11.2f %7s %8s", o->backends[r].c_str(), s.median, spread,
+        std::snprintf(row, sizeof row, "  %-*s %10.2f %31s %8.2f %8.0f %11.2f %7s %8s", nameWidth, o->backends[r].c_str(), s.median, spread,
                       triangles / (s.median * 1e3), peakMb[sceneIndex][r], summarize(net).median, ratio, leanRatio);
         std::string line = row;
         line.erase(line.find_last_not_of(' ') + 1);  // a blank ratio column leaves no trailing spaces
@@ -337,8 +342,8 @@ Command addBenchCommand(CLI::App& app) {
       std::printf("\ntime to the first PNG: `facet render -o PNG --backend B` (default scene, default settings), %d runs\n", o->startupRuns);
       const std::string png = "/tmp/facet-bench-startup-" + std::to_string(getpid()) + ".png";
       for (const std::string& backend : o->backends) {
-        if (backend == "lean") {
-          std::printf("  lean  bench only: `facet render` has no lean backend\n");
+        if (backend == "lean" || backend == "lean-msaa") {
+          std::printf("  %s  bench only: `facet render` has no lean backend\n", backend.c_str());
           continue;
         }
         if (backend == "cpu4" || backend == "cpu8") {
