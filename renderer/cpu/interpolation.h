@@ -76,6 +76,10 @@ class Interpolation {
             varyingAt(k, px, qy + 1) - varyingAt(k, px, qy), varyingAt(k + 1, px, qy + 1) - varyingAt(k + 1, px, qy)};
   }
 
+  // The planes themselves: 1/w's, and varying k's (after setUpVaryings), for a wider evaluation of the same operations.
+  const Plane& oneOverWPlane() const { return oneOverW_; }
+  const Plane& varyingPlane(int k) const { return varying_[static_cast<std::size_t>(k)]; }
+
 #if defined(__SSE2__)
   // 1 / plane(1/w) at the four pixels (px .. px+3, py), one per lane; and
   // varying k there, by the operations of varyingsAt.

@@ -12,6 +12,7 @@
 #include <cstdint>
 
 #include "cpu/blending.h"
+#include "cpu/interpolation.h"
 #include "cpu/lane_width.h"
 #include "cpu/lighting.h"
 #include "cpu/phong_lanes.h"
@@ -34,6 +35,17 @@ void shadeEightLanes(const FrameInputs& frame, const ShadowMaps& maps, const Pho
 // built for AVX-512F).
 void shadeSixteenLanes(const FrameInputs& frame, const ShadowMaps& maps, const PhongLanes& in, float* rgba, const std::size_t* offsets, int count,
                      const BlendOver* over);
+#endif
+
+#if defined(FACET_AVX512_LANES)
+// add4's queueing for the sixteen pixels (px .. px+15, py) of one triangle,
+// at lanes [at, at + 16) of `lanes`: Phong's P and N (varyings 0-2 and 3-5
+// of `in`, set up) by Interpolation's operations (planeAt4's fused
+// multiply-adds, 1 / plane(1/w), the product), the offsets offset ..
+// offset+15, α from alpha[0..15] (null: 1), the facing, O_d and the
+// material; call only where widestLanes() is 16 (phong_batch_avx512.cpp).
+void queueSixteenLanes(const Interpolation& in, int px, int py, std::size_t offset, bool back, glm::vec3 baseColor, const CourseMaterial& material,
+                       const float* alpha, PhongLanes& lanes, std::size_t* offsets, int at);
 #endif
 
 class PhongBatch {
@@ -96,6 +108,13 @@ class PhongBatch {
     if (count_ == capacity_) flush();
   }
 #endif
+
+  // add4 for the sixteen pixels pixels[offset .. offset+15] of one triangle,
+  // interpolated on sixteen lanes (queueSixteenLanes), with α from alpha[0..15]
+  // (null: 1); frames without fog only. Only at sixteen lanes with the queue
+  // on a sixteen-lane column; false, and nothing queued, elsewhere.
+  bool add16(std::size_t offset, const Interpolation& in, int px, int py, bool back, glm::vec3 baseColor, const CourseMaterial& material,
+             const float* alpha);  // phong_batch.cpp, built where the sixteen-lane path is
 
   // Shades what is queued.
   void flush();

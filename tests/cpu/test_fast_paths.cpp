@@ -335,6 +335,61 @@ TEST_CASE("Phong batch: four, eight and sixteen lanes at a time, and twice eight
   }
 }
 
+TEST_CASE("Phong batch: sixteen pixels of a triangle queued at once give the bits of each pixel interpolated and queued alone") {
+  if (cpu::widestLanes() < 16) {
+    MESSAGE("this CPU runs " << cpu::widestLanes() << " lanes: add16 queues nothing below sixteen");
+    return;
+  }
+  const Scene scene = makeDefaultScene();
+  RenderSettings s;
+  const FrameInputs frame = buildFrameInputs(scene, s);
+  cpu::ShadowMaps maps;
+  maps.reset(frame.shadows.mapSize, frame.shadowLayerCount);
+  std::fill(maps.depth.begin(), maps.depth.end(), 1.0f);
+  std::mt19937 random(777);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f), varying(-2.0f, 2.0f);
+  // A triangle over a 64 x 16 block of pixels, its six varyings (P, N) and 1/w at each corner.
+  float corner[3][6];
+  for (auto& c : corner)
+    for (float& v : c) v = varying(random);
+  const cpu::InterpolationVertex a{3.25f, 1.5f, 0.5f, 0.9f, corner[0]}, b{300.5f, 2.75f, 0.4f, 0.35f, corner[1]}, c{5.5f, 97.25f, 0.6f, 0.6f, corner[2]};
+  cpu::Interpolation in(a, b, c);
+  in.setUpVaryings(6);
+  CourseMaterial material;
+  material.ka = 0.2f, material.kd = 0.7f, material.ks = 0.5f, material.shininess = 37.0f, material.emissive = {0.01f, 0.02f, 0.03f};
+  const glm::vec3 baseColor{0.8f, 0.4f, 0.2f};
+  constexpr int kWidth = 64, kRows = 16;
+  for (const bool blended : {false, true}) {
+    CAPTURE(blended);
+    const cpu::BlendOver over{Blending::Straight, false};
+    std::vector<float> alpha(kWidth * kRows);
+    for (float& x : alpha) x = unit(random);
+    ColorBuffer wide(kWidth, kRows, glm::vec4(0.25f, 0.5f, 0.75f, 0.5f)), alone(kWidth, kRows, glm::vec4(0.25f, 0.5f, 0.75f, 0.5f));
+    cpu::PhongBatch sixteen(frame, maps, wide.data(), 16, blended ? &over : nullptr), one(frame, maps, alone.data(), 16, blended ? &over : nullptr);
+    int queued = 0;
+    for (int py = 0; py < kRows; ++py)
+      for (int px = 0; px < kWidth; px += 16) {
+        const auto at = static_cast<std::size_t>(py * kWidth + px);
+        const bool back = (px / 16 + py) % 3 == 0;
+        queued += sixteen.add16(at, in, 40 + px, 20 + py, back, baseColor, material, blended ? &alpha[at] : nullptr) ? 1 : 0;
+        for (int k = 0; k < 16; ++k) {
+          const float w = in.inverseWAt(40 + px + k, 20 + py);
+          one.add(at + static_cast<std::size_t>(k), in.varying3At(0, 40 + px + k, 20 + py, w), in.varying3At(3, 40 + px + k, 20 + py, w), back, baseColor,
+                  material, material.emissive, 0.0f, blended ? alpha[at + static_cast<std::size_t>(k)] : 1.0f);
+        }
+      }
+    sixteen.flush(), one.flush();
+    CHECK(queued == kRows * kWidth / 16);  // every run went the sixteen-lane way
+    int differing = 0;
+    for (int i = 0; i < kWidth * kRows; ++i) differing += std::memcmp(&wide.data()[i], &alone.data()[i], sizeof(glm::vec4)) == 0 ? 0 : 1;  // to the bit
+    CHECK(differing == 0);
+    // The comparison means something: the pixels are lit differently across the block.
+    std::set<int> levels;
+    for (int i = 0; i < kWidth * kRows; ++i) levels.insert(encodeLevel(alone.data()[i].r));
+    CHECK(levels.size() > 20);
+  }
+}
+
 #if defined(__SSE2__)
 TEST_CASE("Cube faces: cubeFaceLanes picks cubeFace's face in each lane, ties, signed zeros, infinities and NaN included") {
   const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
