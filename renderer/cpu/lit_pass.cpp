@@ -131,10 +131,10 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
           // (Shorter runs padded with lanes shaded and dropped took fewer instructions but more time:
           // 31 against 29 ms a sphere-100k frame on eight lanes.)
           const std::uint32_t* row = &ids[k];
-          // Sixteen in a row, where the batch shades sixteen lanes: interpolated on sixteen (the same operations).
-          if (px + 15 <= tx1 && lanes == 16 && std::all_of(row + 1, row + 16, [&](std::uint32_t other) { return other == id; }) &&
-              batch.add16(offset, *in, px, py, back, material->baseColor, *material, over ? &alpha[k] : nullptr)) {
-            px += 15;
+          // Eight or sixteen in a row, where the batch shades that many lanes: interpolated on them (the same operations).
+          if (lanes >= 8 && px + lanes - 1 <= tx1 && std::all_of(row + 1, row + lanes, [&](std::uint32_t other) { return other == id; }) &&
+              batch.addRun(lanes, offset, *in, px, py, back, material->baseColor, *material, over ? &alpha[k] : nullptr)) {
+            px += lanes - 1;
             continue;
           }
           if (px + 3 <= tx1 && row[1] == id && row[2] == id && row[3] == id) {

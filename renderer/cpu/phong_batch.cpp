@@ -11,18 +11,24 @@ PhongBatch::PhongBatch(const FrameInputs& frame, const ShadowMaps& maps, glm::ve
   checkLanes(lanes);
 }
 
-bool PhongBatch::add16(std::size_t offset, const Interpolation& in, int px, int py, bool back, glm::vec3 baseColor, const CourseMaterial& material,
-                       const float* alpha) {
+bool PhongBatch::addRun(int n, std::size_t offset, const Interpolation& in, int px, int py, bool back, glm::vec3 baseColor,
+                        const CourseMaterial& material, const float* alpha) {
+  if (n != lanes_ || count_ % n != 0) return false;
 #if defined(FACET_AVX512_LANES)
-  if (lanes_ != 16 || count_ % 16 != 0) return false;
-  queueSixteenLanes(in, px, py, offset, back, baseColor, material, alpha, in_, offset_, count_);
-  count_ += 16;
+  if (n == 16) queueSixteenLanes(in, px, py, offset, back, baseColor, material, alpha, in_, offset_, count_);
+  else
+#endif
+#if defined(FACET_AVX2_LANES)
+  if (n == 8) queueEightLanes(in, px, py, offset, back, baseColor, material, alpha, in_, offset_, count_);
+  else
+#endif
+  {
+    (void)offset, (void)in, (void)px, (void)py, (void)back, (void)baseColor, (void)material, (void)alpha;
+    return false;
+  }
+  count_ += n;
   if (count_ == capacity_) flush();
   return true;
-#else
-  (void)offset, (void)in, (void)px, (void)py, (void)back, (void)baseColor, (void)material, (void)alpha;
-  return false;
-#endif
 }
 
 void PhongBatch::flush() {

@@ -37,6 +37,12 @@ void shadeSixteenLanes(const FrameInputs& frame, const ShadowMaps& maps, const P
                      const BlendOver* over);
 #endif
 
+#if defined(FACET_AVX2_LANES)
+// queueSixteenLanes (below) for the eight pixels (px .. px+7, py), at lanes
+// [at, at + 8); call only where widestLanes() is 8 or more (phong_batch_avx2.cpp).
+void queueEightLanes(const Interpolation& in, int px, int py, std::size_t offset, bool back, glm::vec3 baseColor, const CourseMaterial& material,
+                     const float* alpha, PhongLanes& lanes, std::size_t* offsets, int at);
+#endif
 #if defined(FACET_AVX512_LANES)
 // add4's queueing for the sixteen pixels (px .. px+15, py) of one triangle,
 // at lanes [at, at + 16) of `lanes`: Phong's P and N (varyings 0-2 and 3-5
@@ -109,12 +115,13 @@ class PhongBatch {
   }
 #endif
 
-  // add4 for the sixteen pixels pixels[offset .. offset+15] of one triangle,
-  // interpolated on sixteen lanes (queueSixteenLanes), with α from alpha[0..15]
-  // (null: 1); frames without fog only. Only at sixteen lanes with the queue
-  // on a sixteen-lane column; false, and nothing queued, elsewhere.
-  bool add16(std::size_t offset, const Interpolation& in, int px, int py, bool back, glm::vec3 baseColor, const CourseMaterial& material,
-             const float* alpha);  // phong_batch.cpp, built where the sixteen-lane path is
+  // add4 for the n = 8 or 16 pixels pixels[offset .. offset+n-1] of one
+  // triangle, interpolated on n lanes (queueEightLanes, queueSixteenLanes),
+  // with α from alpha[0..n-1] (null: 1); frames without fog only. Only where
+  // the batch shades n lanes and its queue is on an n-lane column; false, and
+  // nothing queued, elsewhere.
+  bool addRun(int n, std::size_t offset, const Interpolation& in, int px, int py, bool back, glm::vec3 baseColor, const CourseMaterial& material,
+              const float* alpha);  // phong_batch.cpp, built where the wide paths are
 
   // Shades what is queued.
   void flush();

@@ -335,9 +335,9 @@ TEST_CASE("Phong batch: four, eight and sixteen lanes at a time, and twice eight
   }
 }
 
-TEST_CASE("Phong batch: sixteen pixels of a triangle queued at once give the bits of each pixel interpolated and queued alone") {
-  if (cpu::widestLanes() < 16) {
-    MESSAGE("this CPU runs " << cpu::widestLanes() << " lanes: add16 queues nothing below sixteen");
+TEST_CASE("Phong batch: eight or sixteen pixels of a triangle queued at once give the bits of each pixel interpolated and queued alone") {
+  if (cpu::widestLanes() < 8) {
+    MESSAGE("this CPU runs " << cpu::widestLanes() << " lanes: addRun queues nothing below eight");
     return;
   }
   const Scene scene = makeDefaultScene();
@@ -359,34 +359,39 @@ TEST_CASE("Phong batch: sixteen pixels of a triangle queued at once give the bit
   material.ka = 0.2f, material.kd = 0.7f, material.ks = 0.5f, material.shininess = 37.0f, material.emissive = {0.01f, 0.02f, 0.03f};
   const glm::vec3 baseColor{0.8f, 0.4f, 0.2f};
   constexpr int kWidth = 64, kRows = 16;
-  for (const bool blended : {false, true}) {
-    CAPTURE(blended);
-    const cpu::BlendOver over{Blending::Straight, false};
-    std::vector<float> alpha(kWidth * kRows);
-    for (float& x : alpha) x = unit(random);
-    ColorBuffer wide(kWidth, kRows, glm::vec4(0.25f, 0.5f, 0.75f, 0.5f)), alone(kWidth, kRows, glm::vec4(0.25f, 0.5f, 0.75f, 0.5f));
-    cpu::PhongBatch sixteen(frame, maps, wide.data(), 16, blended ? &over : nullptr), one(frame, maps, alone.data(), 16, blended ? &over : nullptr);
-    int queued = 0;
-    for (int py = 0; py < kRows; ++py)
-      for (int px = 0; px < kWidth; px += 16) {
-        const auto at = static_cast<std::size_t>(py * kWidth + px);
-        const bool back = (px / 16 + py) % 3 == 0;
-        queued += sixteen.add16(at, in, 40 + px, 20 + py, back, baseColor, material, blended ? &alpha[at] : nullptr) ? 1 : 0;
-        for (int k = 0; k < 16; ++k) {
-          const float w = in.inverseWAt(40 + px + k, 20 + py);
-          one.add(at + static_cast<std::size_t>(k), in.varying3At(0, 40 + px + k, 20 + py, w), in.varying3At(3, 40 + px + k, 20 + py, w), back, baseColor,
-                  material, material.emissive, 0.0f, blended ? alpha[at + static_cast<std::size_t>(k)] : 1.0f);
+  for (const int lanes : {8, 16}) {
+    if (lanes > cpu::widestLanes()) continue;
+    for (const bool blended : {false, true}) {
+      CAPTURE(lanes);
+      CAPTURE(blended);
+      const cpu::BlendOver over{Blending::Straight, false};
+      std::vector<float> alpha(kWidth * kRows);
+      for (float& x : alpha) x = unit(random);
+      ColorBuffer wide(kWidth, kRows, glm::vec4(0.25f, 0.5f, 0.75f, 0.5f)), alone(kWidth, kRows, glm::vec4(0.25f, 0.5f, 0.75f, 0.5f));
+      cpu::PhongBatch run(frame, maps, wide.data(), lanes, blended ? &over : nullptr), one(frame, maps, alone.data(), lanes, blended ? &over : nullptr);
+      int queued = 0;
+      for (int py = 0; py < kRows; ++py)
+        for (int px = 0; px < kWidth; px += lanes) {
+          const auto at = static_cast<std::size_t>(py * kWidth + px);
+          const bool back = (px / lanes + py) % 3 == 0;
+          queued += run.addRun(lanes, at, in, 40 + px, 20 + py, back, baseColor, material, blended ? &alpha[at] : nullptr) ? 1 : 0;
+          for (int k = 0; k < lanes; ++k) {
+            const float w = in.inverseWAt(40 + px + k, 20 + py);
+            one.add(at + static_cast<std::size_t>(k), in.varying3At(0, 40 + px + k, 20 + py, w), in.varying3At(3, 40 + px + k, 20 + py, w), back,
+                    baseColor, material, material.emissive, 0.0f, blended ? alpha[at + static_cast<std::size_t>(k)] : 1.0f);
+          }
         }
-      }
-    sixteen.flush(), one.flush();
-    CHECK(queued == kRows * kWidth / 16);  // every run went the sixteen-lane way
-    int differing = 0;
-    for (int i = 0; i < kWidth * kRows; ++i) differing += std::memcmp(&wide.data()[i], &alone.data()[i], sizeof(glm::vec4)) == 0 ? 0 : 1;  // to the bit
-    CHECK(differing == 0);
-    // The comparison means something: the pixels are lit differently across the block.
-    std::set<int> levels;
-    for (int i = 0; i < kWidth * kRows; ++i) levels.insert(encodeLevel(alone.data()[i].r));
-    CHECK(levels.size() > 20);
+      run.flush(), one.flush();
+      CHECK(queued == kRows * kWidth / lanes);  // every run went the wide way
+      CHECK_FALSE(run.addRun(lanes == 8 ? 16 : 8, 0, in, 40, 20, false, baseColor, material, nullptr));  // not the batch's width: refused
+      int differing = 0;
+      for (int i = 0; i < kWidth * kRows; ++i) differing += std::memcmp(&wide.data()[i], &alone.data()[i], sizeof(glm::vec4)) == 0 ? 0 : 1;  // to the bit
+      CHECK(differing == 0);
+      // The comparison means something: the pixels are lit differently across the block.
+      std::set<int> levels;
+      for (int i = 0; i < kWidth * kRows; ++i) levels.insert(encodeLevel(alone.data()[i].r));
+      CHECK(levels.size() > 20);
+    }
   }
 }
 
