@@ -131,13 +131,14 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
           // (Shorter runs padded with lanes shaded and dropped took fewer instructions but more time:
           // 31 against 29 ms a sphere-100k frame on eight lanes.)
           const std::uint32_t* row = &ids[k];
-          // Eight or sixteen in a row, where the batch shades that many lanes: interpolated on them (the same operations).
-          if (lanes >= 8 && px + lanes - 1 <= tx1 && std::all_of(row + 1, row + lanes, [&](std::uint32_t other) { return other == id; }) &&
-              batch.addRun(lanes, offset, *in, px, py, back, material->baseColor, *material, over ? &alpha[k] : nullptr)) {
-            px += lanes - 1;
-            continue;
-          }
           if (px + 3 <= tx1 && row[1] == id && row[2] == id && row[3] == id) {
+            // Eight or sixteen in a row, where the batch shades that many lanes: interpolated on them (the same
+            // operations). Asked only after four: a small triangle's pixels pay nothing for it.
+            if (lanes >= 8 && px + lanes - 1 <= tx1 && std::all_of(row + 4, row + lanes, [&](std::uint32_t other) { return other == id; }) &&
+                batch.addRun(lanes, offset, *in, px, py, back, material->baseColor, *material, over ? &alpha[k] : nullptr)) {
+              px += lanes - 1;
+              continue;
+            }
             const __m128 w = in->inverseW4(px, py);
             const __m128 P[3] = {in->varying4(0, px, py, w), in->varying4(1, px, py, w), in->varying4(2, px, py, w)};
             const __m128 N[3] = {in->varying4(3, px, py, w), in->varying4(4, px, py, w), in->varying4(5, px, py, w)};
