@@ -185,6 +185,18 @@ inline Mask8 operator<=(Float8 a, Float8 b) { return {_mm256_cmp_ps(a.v, b.v, _C
 inline Mask8 operator>=(Float8 a, Float8 b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_GE_OS)}; }
 inline Float8 select(Mask8 mask, Float8 a, Float8 b) { return Float8(_mm256_blendv_ps(b.v, a.v, mask.m)); }
 inline Float8 squareRoot(Float8 x) { return Float8(_mm256_sqrt_ps(x.v)); }
+// a·b + c with one rounding per lane (plane_equations.h's fusedMultiplyAdd): the instruction where the
+// build has FMA, else the C library's exact one lane by lane.
+inline Float8 fusedMultiplyAdd(Float8 a, Float8 b, Float8 c) {
+#if defined(__FMA__)
+  return Float8(_mm256_fmadd_ps(a.v, b.v, c.v));
+#else
+  alignas(32) float x[8], y[8], z[8];
+  _mm256_store_ps(x, a.v), _mm256_store_ps(y, b.v), _mm256_store_ps(z, c.v);
+  for (int k = 0; k < 8; ++k) x[k] = std::fma(x[k], y[k], z[k]);
+  return Float8(_mm256_load_ps(x));
+#endif
+}
 inline Float8 absOf(Float8 x) { return Float8(_mm256_andnot_ps(_mm256_set1_ps(-0.0f), x.v)); }
 
 struct Int8 {
@@ -286,6 +298,7 @@ inline Mask16 operator<=(Float16 a, Float16 b) { return {_mm512_cmp_ps_mask(a.v,
 inline Mask16 operator>=(Float16 a, Float16 b) { return {_mm512_cmp_ps_mask(a.v, b.v, _CMP_GE_OS)}; }
 inline Float16 select(Mask16 mask, Float16 a, Float16 b) { return Float16(_mm512_mask_blend_ps(mask.m, b.v, a.v)); }
 inline Float16 squareRoot(Float16 x) { return Float16(_mm512_sqrt_ps(x.v)); }
+inline Float16 fusedMultiplyAdd(Float16 a, Float16 b, Float16 c) { return Float16(_mm512_fmadd_ps(a.v, b.v, c.v)); }  // AVX-512F's own
 inline Float16 absOf(Float16 x) { return Float16(_mm512_castsi512_ps(_mm512_and_si512(_mm512_castps_si512(x.v), _mm512_set1_epi32(0x7FFFFFFF)))); }
 
 struct Int16 {

@@ -38,18 +38,13 @@ void shadeSixteenLanes(const FrameInputs& frame, const ShadowMaps& maps, const P
 #endif
 
 #if defined(FACET_AVX2_LANES)
-// queueSixteenLanes (below) for the eight pixels (px .. px+7, py), at lanes
-// [at, at + 8); call only where widestLanes() is 8 or more (phong_batch_avx2.cpp).
+// queueRunLanes<Float8> (phong_lanes.h): eight pixels of one triangle queued at lanes [at, at + 8);
+// call only where widestLanes() is 8 or more (phong_batch_avx2.cpp).
 void queueEightLanes(const Interpolation& in, int px, int py, std::size_t offset, bool back, glm::vec3 baseColor, const CourseMaterial& material,
                      const float* alpha, PhongLanes& lanes, std::size_t* offsets, int at);
 #endif
 #if defined(FACET_AVX512_LANES)
-// add4's queueing for the sixteen pixels (px .. px+15, py) of one triangle,
-// at lanes [at, at + 16) of `lanes`: Phong's P and N (varyings 0-2 and 3-5
-// of `in`, set up) by Interpolation's operations (planeAt4's fused
-// multiply-adds, 1 / plane(1/w), the product), the offsets offset ..
-// offset+15, α from alpha[0..15] (null: 1), the facing, O_d and the
-// material; call only where widestLanes() is 16 (phong_batch_avx512.cpp).
+// queueRunLanes<Float16>: sixteen, at lanes [at, at + 16); only where widestLanes() is 16 (phong_batch_avx512.cpp).
 void queueSixteenLanes(const Interpolation& in, int px, int py, std::size_t offset, bool back, glm::vec3 baseColor, const CourseMaterial& material,
                        const float* alpha, PhongLanes& lanes, std::size_t* offsets, int at);
 #endif

@@ -19,28 +19,7 @@ __attribute__((flatten)) void shadeSixteenLanes(const FrameInputs& frame, const 
 
 __attribute__((flatten)) void queueSixteenLanes(const Interpolation& in, int px, int py, std::size_t offset, bool back, glm::vec3 baseColor,
                                                 const CourseMaterial& material, const float* alpha, PhongLanes& lanes, std::size_t* offsets, int at) {
-  const __m512 x = _mm512_add_ps(_mm512_set1_ps(static_cast<float>(px)),
-                                 _mm512_setr_ps(0.0f, 1.0f, 2.0f, 3.0f, 4.0f, 5.0f, 6.0f, 7.0f, 8.0f, 9.0f, 10.0f, 11.0f, 12.0f, 13.0f, 14.0f, 15.0f));
-  const __m512 y = _mm512_set1_ps(static_cast<float>(py));
-  const auto planeAt = [&](const Plane& p) { return _mm512_fmadd_ps(_mm512_set1_ps(p.dady), y, _mm512_fmadd_ps(_mm512_set1_ps(p.dadx), x, _mm512_set1_ps(p.a0))); };
-  const __m512 w = _mm512_div_ps(_mm512_set1_ps(1.0f), planeAt(in.oneOverWPlane()));
-  const auto put = [&](float* column, __m512 v) { _mm512_storeu_ps(column + at, v); };
-  for (int c = 0; c < 3; ++c) {
-    put(lanes.P[c], _mm512_mul_ps(planeAt(in.varyingPlane(c)), w));
-    put(lanes.N[c], _mm512_mul_ps(planeAt(in.varyingPlane(3 + c)), w));
-    put(lanes.O[c], _mm512_set1_ps(baseColor[c]));
-    put(lanes.E[c], _mm512_set1_ps(material.emissive[c]));
-  }
-  put(lanes.alpha, alpha ? _mm512_loadu_ps(alpha) : _mm512_set1_ps(1.0f));
-  put(lanes.back, _mm512_set1_ps(back ? 1.0f : 0.0f));
-  put(lanes.ka, _mm512_set1_ps(material.ka));
-  put(lanes.kd, _mm512_set1_ps(material.kd));
-  put(lanes.ks, _mm512_set1_ps(material.ks));
-  put(lanes.n, _mm512_set1_ps(material.shininess));
-  put(lanes.m, _mm512_set1_ps(material.metallic));
-  const __m512i first = _mm512_add_epi64(_mm512_set1_epi64(static_cast<long long>(offset)), _mm512_setr_epi64(0, 1, 2, 3, 4, 5, 6, 7));
-  _mm512_storeu_si512(offsets + at, first);
-  _mm512_storeu_si512(offsets + at + 8, _mm512_add_epi64(first, _mm512_set1_epi64(8)));
+  queueRunLanes<Float16>(in, px, py, offset, back, baseColor, material, alpha, lanes, offsets, at);
 }
 
 }  // namespace facet::cpu

@@ -2,8 +2,11 @@
 // What a Phong batch (phong_batch.h) shades on its lanes: the queued
 // pixels' inputs, one column per lane, and the shading of F's width of them
 // (Float4, Float8 or Float16), the same steps as one pixel's in lit_pass.cpp.
+#include <algorithm>
+
 #include "cpu/blending.h"
 #include "cpu/fog.h"
+#include "cpu/interpolation.h"
 #include "cpu/lighting.h"
 
 namespace facet::cpu {
@@ -14,6 +17,37 @@ struct PhongLanes {
   alignas(64) float ka[kMost], kd[kMost], ks[kMost], n[kMost], m[kMost];
   alignas(64) float alpha[kMost];  // a blended pass's α (BlendOver); unread by an opaque one
 };
+
+// A run of F's width of pixels (px .. px+n-1, py) of one triangle queued
+// at lanes [at, at + n) (at a multiple of n): P and N (varyings 0-2 and
+// 3-5 of `in`, set up) by Interpolation's operations (each plane's two
+// fused multiply-adds, 1 / plane(1/w), the product), the offsets offset ..
+// offset+n-1, α from alpha[0..n-1] (null: 1), the facing, O_d and the
+// material, as PhongBatch::add4 queues four.
+template <class F>
+void queueRunLanes(const Interpolation& in, int px, int py, std::size_t offset, bool back, glm::vec3 baseColor, const CourseMaterial& material,
+                   const float* alpha, PhongLanes& lanes, std::size_t* offsets, int at) {
+  constexpr int n = static_cast<int>(sizeof(F) / sizeof(float));
+  alignas(64) static constexpr float kLane[16] = {0.0f, 1.0f, 2.0f, 3.0f, 4.0f, 5.0f, 6.0f, 7.0f, 8.0f, 9.0f, 10.0f, 11.0f, 12.0f, 13.0f, 14.0f, 15.0f};
+  F lane;
+  loadLanes(lane, kLane);
+  const F x = F(static_cast<float>(px)) + lane, y(static_cast<float>(py));
+  const auto planeAt = [&](const Plane& p) { return fusedMultiplyAdd(F(p.dady), y, fusedMultiplyAdd(F(p.dadx), x, F(p.a0))); };
+  const F w = F(1.0f) / planeAt(in.oneOverWPlane());
+  const auto put = [&](float* column, F v) { storeLanes(column + at, v); };
+  for (int c = 0; c < 3; ++c) {
+    put(lanes.P[c], planeAt(in.varyingPlane(c)) * w);
+    put(lanes.N[c], planeAt(in.varyingPlane(3 + c)) * w);
+    put(lanes.O[c], F(baseColor[c]));
+    put(lanes.E[c], F(material.emissive[c]));
+  }
+  put(lanes.back, F(back ? 1.0f : 0.0f));
+  put(lanes.ka, F(material.ka)), put(lanes.kd, F(material.kd)), put(lanes.ks, F(material.ks));
+  put(lanes.n, F(material.shininess)), put(lanes.m, F(material.metallic));
+  if (alpha) std::copy_n(alpha, n, lanes.alpha + at);
+  else put(lanes.alpha, F(1.0f));
+  for (int k = 0; k < n; ++k) offsets[at + k] = offset + static_cast<std::size_t>(k);
+}
 
 // Lanes [first, first + width of F) shaded; those below count written to the RGBA pixels at
 // rgba + 4·offsets[lane]: opaque, or blended over them with their α where `over` is given.
