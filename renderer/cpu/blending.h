@@ -79,31 +79,15 @@ inline void writeFragment(glm::vec4& held, glm::vec3 C, float alpha, const Blend
   held = over ? blend(held, C, alpha, over->blending, over->additive) : opaque(C);
 }
 
-#if defined(__SSE2__)
-// blend for up to four pixels at once, four lanes: lanes [0, count) of
-// `color` and `alpha` over the RGBA pixels at rgba + 4·offsets[k] (a
-// transpose in registers each way; the lanes past count read and write nothing).
-inline void blendPixels(float* rgba, const std::size_t* offsets, int count, const Vec3x4& color, Float4 alpha, const BlendOver& over) {
-  __m128 pixel[4];
-  for (int k = 0; k < 4; ++k) pixel[k] = k < count ? _mm_loadu_ps(rgba + 4 * offsets[k]) : _mm_setzero_ps();
-  _MM_TRANSPOSE4_PS(pixel[0], pixel[1], pixel[2], pixel[3]);
-  const HeldColor<Float4> held{{Float4(pixel[0]), Float4(pixel[1]), Float4(pixel[2])}, Float4(pixel[3])};
-  const HeldColor<Float4> out = blendLanes<Float4>(held, color, alpha, over.blending, over.additive);
-  pixel[0] = out.color.x.v, pixel[1] = out.color.y.v, pixel[2] = out.color.z.v, pixel[3] = out.alpha.v;
-  _MM_TRANSPOSE4_PS(pixel[0], pixel[1], pixel[2], pixel[3]);
-  for (int k = 0; k < count && k < 4; ++k) _mm_storeu_ps(rgba + 4 * offsets[k], pixel[k]);
-}
-
-// The same for a wider lane type (eight, sixteen, or twice either), four lanes at a time.
+// blend for up to F's width of pixels at once: lanes [0, count) of `color`
+// and `alpha` over the RGBA pixels at rgba + 4·offsets[k] (loadPixels and
+// storePixels, lanes.h; the lanes past count read and write nothing).
 template <class F>
 void blendPixels(float* rgba, const std::size_t* offsets, int count, const Vec3Of<F>& color, F alpha, const BlendOver& over) {
-  constexpr int kLanes = kLaneCount<F>;
-  alignas(64) float c[3][kLanes], a[kLanes];
-  storeLanes(c[0], color.x), storeLanes(c[1], color.y), storeLanes(c[2], color.z), storeLanes(a, alpha);
-  for (int q = 0; q < count; q += 4)
-    blendPixels(rgba, offsets + q, count - q, Vec3x4(Float4(_mm_load_ps(c[0] + q)), Float4(_mm_load_ps(c[1] + q)), Float4(_mm_load_ps(c[2] + q))),
-                Float4(_mm_load_ps(a + q)), over);
+  HeldColor<F> held;
+  loadPixels(rgba, offsets, count, held.color, held.alpha);
+  const HeldColor<F> out = blendLanes<F>(held, color, alpha, over.blending, over.additive);
+  storePixels(rgba, offsets, count, out.color, out.alpha);
 }
-#endif
 
 }  // namespace facet::cpu

@@ -148,11 +148,20 @@ void storeLanes(S* p, const Twice<T>& x) {
   storeLanes(p, x.a);
   storeLanes(p + kLaneCount<T>, x.b);
 }
+// loadPixels and storePixels on each half.
 template <class F>
-void storeOpaquePixels(float* rgba, const std::size_t* offsets, int count, const TwiceVec3<F>& color) {
+void loadPixels(const float* rgba, const std::size_t* offsets, int count, TwiceVec3<F>& color, Twice<F>& alpha) {
   constexpr int kHalf = kLaneCount<F>;
-  storeOpaquePixels(rgba, offsets, count, color.half(0));
-  if (count > kHalf) storeOpaquePixels(rgba, offsets + kHalf, count - kHalf, color.half(1));
+  Vec3Of<F> low, high;
+  loadPixels(rgba, offsets, count, low, alpha.a);
+  loadPixels(rgba, offsets + kHalf, count - kHalf, high, alpha.b);
+  color = joinedTwice<F>(low, high);
+}
+template <class F>
+void storePixels(float* rgba, const std::size_t* offsets, int count, const TwiceVec3<F>& color, const Twice<F>& alpha) {
+  constexpr int kHalf = kLaneCount<F>;
+  storePixels(rgba, offsets, count, color.half(0), alpha.a);
+  storePixels(rgba, offsets + kHalf, count - kHalf, color.half(1), alpha.b);
 }
 
 }  // namespace facet::cpu

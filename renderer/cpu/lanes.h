@@ -127,28 +127,21 @@ inline Vec3x4 select(Mask4 mask, const Vec3x4& a, const Vec3x4& b) { return {sel
 // Four lanes from / to four floats aligned to 16 bytes.
 inline void loadLanes(Float4& x, const float* p) { x = Float4(_mm_load_ps(p)); }
 inline void storeLanes(float* p, Float4 x) { _mm_store_ps(p, x.v); }
-// Four neighbouring RGBA pixels as lanes, and back (a transpose in registers).
-inline void loadPixels(const float* rgba, Vec3x4& color, Float4& alpha) {
-  __m128 r = _mm_loadu_ps(rgba), g = _mm_loadu_ps(rgba + 4), b = _mm_loadu_ps(rgba + 8), a = _mm_loadu_ps(rgba + 12);
-  _MM_TRANSPOSE4_PS(r, g, b, a);
-  color = {Float4(r), Float4(g), Float4(b)}, alpha = Float4(a);
+// The RGBA pixels at rgba + 4·offsets[k], k < count, as lanes of colour and
+// alpha, and back: a transpose in registers and one 16-byte load or store a
+// pixel. Lanes past count read 0 and write nothing. (Storing the lanes and
+// reading them back a float at a time waits on store forwarding: 7 % of a
+// blended full-screen frame.)
+inline void loadPixels(const float* rgba, const std::size_t* offsets, int count, Vec3x4& color, Float4& alpha) {
+  __m128 pixel[4];
+  for (int k = 0; k < 4; ++k) pixel[k] = k < count ? _mm_loadu_ps(rgba + 4 * offsets[k]) : _mm_setzero_ps();
+  _MM_TRANSPOSE4_PS(pixel[0], pixel[1], pixel[2], pixel[3]);
+  color = {Float4(pixel[0]), Float4(pixel[1]), Float4(pixel[2])}, alpha = Float4(pixel[3]);
 }
-inline void storePixels(float* rgba, const Vec3x4& color, Float4 alpha) {
-  __m128 pixel0 = color.x.v, pixel1 = color.y.v, pixel2 = color.z.v, pixel3 = alpha.v;
-  _MM_TRANSPOSE4_PS(pixel0, pixel1, pixel2, pixel3);
-  _mm_storeu_ps(rgba, pixel0), _mm_storeu_ps(rgba + 4, pixel1), _mm_storeu_ps(rgba + 8, pixel2), _mm_storeu_ps(rgba + 12, pixel3);
-}
-
-// Lanes [0, count) of the colour (r, g, b, 1) to the RGBA pixels at rgba + 4·offsets[k]: a
-// transpose in registers and one 16-byte store a pixel. (Storing the lanes and reading them
-// back a float at a time waits on store forwarding: 7 % of a blended full-screen frame.)
-inline void storeOpaquePixels(float* rgba, const std::size_t* offsets, int count, const Vec3x4& color) {
-  __m128 pixel0 = color.x.v, pixel1 = color.y.v, pixel2 = color.z.v, pixel3 = _mm_set1_ps(1.0f);
-  _MM_TRANSPOSE4_PS(pixel0, pixel1, pixel2, pixel3);
-  if (count > 0) _mm_storeu_ps(rgba + 4 * offsets[0], pixel0);
-  if (count > 1) _mm_storeu_ps(rgba + 4 * offsets[1], pixel1);
-  if (count > 2) _mm_storeu_ps(rgba + 4 * offsets[2], pixel2);
-  if (count > 3) _mm_storeu_ps(rgba + 4 * offsets[3], pixel3);
+inline void storePixels(float* rgba, const std::size_t* offsets, int count, const Vec3x4& color, Float4 alpha) {
+  __m128 pixel[4] = {color.x.v, color.y.v, color.z.v, alpha.v};
+  _MM_TRANSPOSE4_PS(pixel[0], pixel[1], pixel[2], pixel[3]);
+  for (int k = 0; k < 4 && k < count; ++k) _mm_storeu_ps(rgba + 4 * offsets[k], pixel[k]);
 }
 
 #endif
@@ -240,11 +233,21 @@ inline Vec3x8 select(Mask8 mask, const Vec3x8& a, const Vec3x8& b) { return {sel
 // Eight lanes from / to eight floats aligned to 32 bytes.
 inline void loadLanes(Float8& x, const float* p) { x = Float8(_mm256_load_ps(p)); }
 inline void storeLanes(float* p, Float8 x) { _mm256_store_ps(p, x.v); }
-// Float4's storeOpaquePixels on eight lanes: pixel[k] holds lane k in its low half, lane k + 4 in its high half.
-inline void storeOpaquePixels(float* rgba, const std::size_t* offsets, int count, const Vec3x8& color) {
-  const __m256 one = _mm256_set1_ps(1.0f);
+// loadPixels and storePixels on eight lanes: register k holds pixel k in its
+// low half and pixel k + 4 in its high half, so that Float4's transpose,
+// done in both halves at once, leaves lanes 0-3 low and 4-7 high.
+inline void loadPixels(const float* rgba, const std::size_t* offsets, int count, Vec3x8& color, Float8& alpha) {
+  const auto at = [&](int k) { return k < count ? _mm_loadu_ps(rgba + 4 * offsets[k]) : _mm_setzero_ps(); };
+  __m256 pixel[4];
+  for (int k = 0; k < 4; ++k) pixel[k] = _mm256_set_m128(at(k + 4), at(k));
+  const __m256 rg01 = _mm256_unpacklo_ps(pixel[0], pixel[1]), rg23 = _mm256_unpacklo_ps(pixel[2], pixel[3]);  // r0 r1 g0 g1 | r4 r5 g4 g5
+  const __m256 ba01 = _mm256_unpackhi_ps(pixel[0], pixel[1]), ba23 = _mm256_unpackhi_ps(pixel[2], pixel[3]);
+  color = {Float8(_mm256_shuffle_ps(rg01, rg23, 0x44)), Float8(_mm256_shuffle_ps(rg01, rg23, 0xEE)), Float8(_mm256_shuffle_ps(ba01, ba23, 0x44))};
+  alpha = Float8(_mm256_shuffle_ps(ba01, ba23, 0xEE));
+}
+inline void storePixels(float* rgba, const std::size_t* offsets, int count, const Vec3x8& color, Float8 alpha) {
   const __m256 rg01 = _mm256_unpacklo_ps(color.x.v, color.y.v), rg23 = _mm256_unpackhi_ps(color.x.v, color.y.v);  // r0 g0 r1 g1 | r4 g4 r5 g5
-  const __m256 ba01 = _mm256_unpacklo_ps(color.z.v, one), ba23 = _mm256_unpackhi_ps(color.z.v, one);
+  const __m256 ba01 = _mm256_unpacklo_ps(color.z.v, alpha.v), ba23 = _mm256_unpackhi_ps(color.z.v, alpha.v);
   const __m256 pixel[4] = {_mm256_shuffle_ps(rg01, ba01, 0x44), _mm256_shuffle_ps(rg01, ba01, 0xEE), _mm256_shuffle_ps(rg23, ba23, 0x44),
                            _mm256_shuffle_ps(rg23, ba23, 0xEE)};
   for (int k = 0; k < 4; ++k) {
@@ -358,10 +361,29 @@ inline Float16 joined(Float8 low, Float8 high) {
   return Float16(_mm512_castpd_ps(_mm512_insertf64x4(_mm512_castpd256_pd512(_mm256_castps_pd(low.v)), _mm256_castps_pd(high.v), 1)));
 }
 inline Vec3x16 joined(const Vec3x8& low, const Vec3x8& high) { return {joined(low.x, high.x), joined(low.y, high.y), joined(low.z, high.z)}; }
-// Float8's storeOpaquePixels on each half.
-inline void storeOpaquePixels(float* rgba, const std::size_t* offsets, int count, const Vec3x16& color) {
-  storeOpaquePixels(rgba, offsets, count, halfOf(color, 0));
-  if (count > 8) storeOpaquePixels(rgba, offsets + 8, count - 8, halfOf(color, 1));
+// loadPixels and storePixels on sixteen lanes: register k holds pixels k,
+// k + 4, k + 8 and k + 12 in its four quarters, as Float8's does in its halves.
+inline void loadPixels(const float* rgba, const std::size_t* offsets, int count, Vec3x16& color, Float16& alpha) {
+  const auto at = [&](int k) { return k < count ? _mm_loadu_ps(rgba + 4 * offsets[k]) : _mm_setzero_ps(); };
+  __m512 pixel[4];
+  for (int k = 0; k < 4; ++k)
+    pixel[k] = _mm512_insertf32x4(_mm512_insertf32x4(_mm512_insertf32x4(_mm512_castps128_ps512(at(k)), at(k + 4), 1), at(k + 8), 2), at(k + 12), 3);
+  const __m512 rg01 = _mm512_unpacklo_ps(pixel[0], pixel[1]), rg23 = _mm512_unpacklo_ps(pixel[2], pixel[3]);
+  const __m512 ba01 = _mm512_unpackhi_ps(pixel[0], pixel[1]), ba23 = _mm512_unpackhi_ps(pixel[2], pixel[3]);
+  color = {Float16(_mm512_shuffle_ps(rg01, rg23, 0x44)), Float16(_mm512_shuffle_ps(rg01, rg23, 0xEE)), Float16(_mm512_shuffle_ps(ba01, ba23, 0x44))};
+  alpha = Float16(_mm512_shuffle_ps(ba01, ba23, 0xEE));
+}
+inline void storePixels(float* rgba, const std::size_t* offsets, int count, const Vec3x16& color, Float16 alpha) {
+  const __m512 rg01 = _mm512_unpacklo_ps(color.x.v, color.y.v), rg23 = _mm512_unpackhi_ps(color.x.v, color.y.v);
+  const __m512 ba01 = _mm512_unpacklo_ps(color.z.v, alpha.v), ba23 = _mm512_unpackhi_ps(color.z.v, alpha.v);
+  const __m512 pixel[4] = {_mm512_shuffle_ps(rg01, ba01, 0x44), _mm512_shuffle_ps(rg01, ba01, 0xEE), _mm512_shuffle_ps(rg23, ba23, 0x44),
+                           _mm512_shuffle_ps(rg23, ba23, 0xEE)};
+  for (int k = 0; k < 4; ++k) {
+    if (k < count) _mm_storeu_ps(rgba + 4 * offsets[k], _mm512_castps512_ps128(pixel[k]));
+    if (k + 4 < count) _mm_storeu_ps(rgba + 4 * offsets[k + 4], _mm512_extractf32x4_ps(pixel[k], 1));
+    if (k + 8 < count) _mm_storeu_ps(rgba + 4 * offsets[k + 8], _mm512_extractf32x4_ps(pixel[k], 2));
+    if (k + 12 < count) _mm_storeu_ps(rgba + 4 * offsets[k + 12], _mm512_extractf32x4_ps(pixel[k], 3));
+  }
 }
 
 #endif

@@ -68,7 +68,7 @@ void shadeLanes(const FrameInputs& frame, const ShadowMaps& maps, const PhongLan
   const LaneMaterial<F> material{vec3(in.E), lanes(in.ka), lanes(in.kd), lanes(in.ks), lanes(in.n), lanes(in.m)};
   const Vec3 color = fogged(frame.fog, shade(illuminate(frame, maps, material, P, N, viewVector<F>(frame, P)), vec3(in.O)), lanes(in.D));
   if (over) blendPixels(rgba, offsets + first, count - first, color, lanes(in.alpha), *over);
-  else storeOpaquePixels(rgba, offsets + first, count - first, color);
+  else storePixels(rgba, offsets + first, count - first, color, F(1.0f));  // opaque: (C, 1)
 }
 
 }  // namespace facet::cpu

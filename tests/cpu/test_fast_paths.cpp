@@ -335,6 +335,65 @@ TEST_CASE("Phong batch: four, eight and sixteen lanes at a time, and twice eight
   }
 }
 
+TEST_CASE("Phong batch: blended at every width, pixels scattered, gives blend's bits over what each pixel holds, both equations, additive or not") {
+  const Scene scene = makeDefaultScene();
+  const FrameInputs frame = buildFrameInputs(scene, RenderSettings{});
+  cpu::ShadowMaps maps;
+  maps.reset(frame.shadows.mapSize, frame.shadowLayerCount);
+  std::fill(maps.depth.begin(), maps.depth.end(), 1.0f);
+  std::vector<int> widths{1, 4};
+  for (int wide : {8, 16})
+    if (cpu::widestLanes() >= wide) widths.push_back(wide);
+  std::mt19937 random(4242);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f), coordinate(-3.0f, 3.0f), outOfRange(-0.5f, 1.5f);
+  // Runs flushed at 37, 50 and 13 pixels, so that each width meets full and short batches; the pixels
+  // scattered over the buffer, so that loads and stores gather rather than walk a row.
+  constexpr int kRuns[] = {37, 50, 13}, kPixels = 100;
+  for (const int lanes : widths)
+    for (const Blending blending : {Blending::Straight, Blending::Premultiplied})
+      for (const bool additive : {false, true}) {
+        CAPTURE(lanes);
+        CAPTURE(static_cast<int>(blending));
+        CAPTURE(additive);
+        ColorBuffer batched(kPixels, 1, glm::vec4(0.0f)), plain(kPixels, 1, glm::vec4(0.0f));
+        for (int i = 0; i < kPixels; ++i) {
+          batched.at(i, 0) = {unit(random), unit(random), unit(random), i % 9 == 0 ? 0.0f : unit(random)};  // some pixels hold nothing
+          plain.at(i, 0) = batched.at(i, 0);
+        }
+        std::vector<std::size_t> offsets(kPixels);
+        for (int i = 0; i < kPixels; ++i) offsets[static_cast<std::size_t>(i)] = static_cast<std::size_t>(i);
+        std::shuffle(offsets.begin(), offsets.end(), random);
+        const cpu::BlendOver over{blending, additive};
+        cpu::PhongBatch batch(frame, maps, batched.data(), lanes, &over);
+        std::deque<CourseMaterial> materials;
+        for (int run = 0, i = 0; run < 3; ++run) {
+          for (int j = 0; j < kRuns[run]; ++j, ++i) {
+            const glm::vec3 P{coordinate(random), 0.3f * coordinate(random), coordinate(random)};
+            const glm::vec3 N = glm::normalize(glm::vec3(coordinate(random), coordinate(random), coordinate(random)));
+            const glm::vec3 baseColor{unit(random), unit(random), unit(random)};
+            CourseMaterial material;
+            material.ka = unit(random), material.kd = unit(random), material.ks = unit(random), material.shininess = 1.0f + 100.0f * unit(random);
+            materials.push_back(material);
+            float alpha = outOfRange(random);  // clamped to [0, 1] by the blend, NaN to 0
+            if (i % 11 == 0) alpha = std::numeric_limits<float>::quiet_NaN();
+            const std::size_t at = offsets[static_cast<std::size_t>(i)];
+            const bool back = i % 4 == 0;
+            batch.add(at, P, N, back, baseColor, materials.back(), material.emissive, 0.0f, alpha);
+            const glm::vec3 lit = back ? -cpu::normalize3(N) : cpu::normalize3(N);
+            const glm::vec3 C = cpu::shade(cpu::illuminate(frame, maps, cpu::laneMaterial(material), P, lit, cpu::viewVector<float>(frame, P)), baseColor);
+            plain.at(static_cast<int>(at), 0) = cpu::blend(plain.at(static_cast<int>(at), 0), C, alpha, blending, additive);
+          }
+          batch.flush();
+        }
+        int differing = 0;
+        for (int i = 0; i < kPixels; ++i) differing += std::memcmp(&batched.at(i, 0), &plain.at(i, 0), sizeof(glm::vec4)) == 0 ? 0 : 1;  // to the bit
+        CHECK(differing == 0);
+        std::set<int> levels;  // the comparison means something: the blends differ from pixel to pixel
+        for (int i = 0; i < kPixels; ++i) levels.insert(encodeLevel(plain.at(i, 0).r));
+        CHECK(levels.size() > 30);
+      }
+}
+
 TEST_CASE("Phong batch: eight or sixteen pixels of a triangle queued at once give the bits of each pixel interpolated and queued alone") {
   if (cpu::widestLanes() < 8) {
     MESSAGE("this CPU runs " << cpu::widestLanes() << " lanes: addRun queues nothing below eight");
