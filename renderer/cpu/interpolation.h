@@ -5,10 +5,6 @@
 // pixel), as the course, the contract and renderer/PIPELINE.md section 6 say.
 #include <array>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
@@ -79,15 +75,6 @@ class Interpolation {
   // The planes themselves: 1/w's, and varying k's (after setUpVaryings), for a wider evaluation of the same operations.
   const Plane& oneOverWPlane() const { return oneOverW_; }
   const Plane& varyingPlane(int k) const { return varying_[static_cast<std::size_t>(k)]; }
-
-#if defined(__SSE2__)
-  // 1 / plane(1/w) at the four pixels (px .. px+3, py), one per lane; and
-  // varying k there, by the operations of varyingsAt.
-  __m128 inverseW4(int px, int py) const { return _mm_div_ps(_mm_set1_ps(1.0f), planeAt4(oneOverW_, px, py)); }
-  __m128 varying4(int k, int px, int py, __m128 inverseW) const {
-    return _mm_mul_ps(planeAt4(varying_[static_cast<std::size_t>(k)], px, py), inverseW);
-  }
-#endif
 
  private:
   InterpolationVertex vertex_[3]{};

@@ -16,6 +16,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "cpu/plane_equations.h"
+
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -79,6 +81,7 @@ inline Mask4 operator<=(Float4 a, Float4 b) { return {_mm_cmple_ps(a.v, b.v)}; }
 inline Mask4 operator>=(Float4 a, Float4 b) { return {_mm_cmpge_ps(a.v, b.v)}; }
 inline Float4 select(Mask4 mask, Float4 a, Float4 b) { return Float4(_mm_or_ps(_mm_and_ps(mask.m, a.v), _mm_andnot_ps(mask.m, b.v))); }
 inline Float4 squareRoot(Float4 x) { return Float4(_mm_sqrt_ps(x.v)); }
+inline Float4 fusedMultiplyAdd(Float4 a, Float4 b, Float4 c) { return Float4(fusedMultiplyAdd4(a.v, b.v, c.v)); }  // plane_equations.h's
 inline Float4 absOf(Float4 x) { return Float4(_mm_andnot_ps(_mm_set1_ps(-0.0f), x.v)); }  // the sign bit cleared
 
 struct Int4 {

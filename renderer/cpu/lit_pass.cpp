@@ -126,27 +126,23 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
       if constexpr (kMode == ShadingMode::Phong)
         if (plain) {
           const std::size_t offset = color.offset(px, py);
-#if defined(__SSE2__)
-          // Four pixels of the triangle in a row: interpolation on four lanes, straight into the batch.
-          // (Shorter runs padded with lanes shaded and dropped took fewer instructions but more time:
-          // 31 against 29 ms a sphere-100k frame on eight lanes.)
+          // Four pixels of the triangle in a row: interpolated on four lanes, straight into the batch; eight or
+          // sixteen where the batch shades that many (asked only after four: a small triangle's pixels pay
+          // nothing for it). (Shorter runs padded with lanes shaded and dropped took fewer instructions but
+          // more time: 31 against 29 ms a sphere-100k frame on eight lanes.)
           const std::uint32_t* row = &ids[k];
           if (px + 3 <= tx1 && row[1] == id && row[2] == id && row[3] == id) {
-            // Eight or sixteen in a row, where the batch shades that many lanes: interpolated on them (the same
-            // operations). Asked only after four: a small triangle's pixels pay nothing for it.
-            if (lanes >= 8 && px + lanes - 1 <= tx1 && std::all_of(row + 4, row + lanes, [&](std::uint32_t other) { return other == id; }) &&
-                batch.addRun(lanes, offset, *in, px, py, back, material->baseColor, *material, over ? &alpha[k] : nullptr)) {
-              px += lanes - 1;
+            const auto queued = [&](int n) { return batch.addRun(n, offset, *in, px, py, back, material->baseColor, *material, over ? &alpha[k] : nullptr); };
+            int run = 0;
+            if (lanes >= 8 && px + lanes - 1 <= tx1 && std::all_of(row + 4, row + lanes, [&](std::uint32_t other) { return other == id; }) && queued(lanes))
+              run = lanes;
+            else if (queued(4))
+              run = 4;
+            if (run > 0) {
+              px += run - 1;
               continue;
             }
-            const __m128 w = in->inverseW4(px, py);
-            const __m128 P[3] = {in->varying4(0, px, py, w), in->varying4(1, px, py, w), in->varying4(2, px, py, w)};
-            const __m128 N[3] = {in->varying4(3, px, py, w), in->varying4(4, px, py, w), in->varying4(5, px, py, w)};
-            batch.add4(offset, P, N, back, material->baseColor, *material, over ? _mm_loadu_ps(&alpha[k]) : _mm_set1_ps(1.0f));
-            px += 3;
-            continue;
           }
-#endif
           const float w = in->inverseWAt(px, py);
           batch.add(offset, in->varying3At(0, px, py, w), in->varying3At(3, px, py, w), back, material->baseColor, *material, material->emissive, 0.0f, a);
           continue;

@@ -11,7 +11,7 @@ PhongBatch::PhongBatch(const FrameInputs& frame, const ShadowMaps& maps, glm::ve
   checkLanes(lanes);
 }
 
-bool PhongBatch::addRun(int n, std::size_t offset, const Interpolation& in, int px, int py, bool back, glm::vec3 baseColor,
+bool PhongBatch::addWideRun(int n, std::size_t offset, const Interpolation& in, int px, int py, bool back, glm::vec3 baseColor,
                         const CourseMaterial& material, const float* alpha) {
   if (n != lanes_ || count_ % n != 0) return false;
 #if defined(FACET_AVX512_LANES)

@@ -12,15 +12,10 @@
 #include <cstdint>
 
 #include "cpu/blending.h"
-#include "cpu/interpolation.h"
 #include "cpu/lane_width.h"
 #include "cpu/lighting.h"
 #include "cpu/phong_lanes.h"
 #include "image/color_buffer.h"
-
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 namespace facet::cpu {
 
@@ -77,46 +72,26 @@ class PhongBatch {
     if (count_ == capacity_) flush();
   }
 
-#if defined(__SSE2__)
-  // add() for the four pixels pixels[offset .. offset+3] of one triangle, as lanes; frames without fog only.
-  __attribute__((always_inline)) void add4(std::size_t offset, const __m128 (&P)[3], const __m128 (&interpolatedNormal)[3], bool back,
-                                           glm::vec3 baseColor, const CourseMaterial& material, __m128 alpha) {
-    const int at = count_;
-    if (at % 4 != 0 || lanes_ < 4) {  // not on a four-lane column: one pixel at a time
-      alignas(16) float p[3][4], n[3][4], a[4];
-      for (int c = 0; c < 3; ++c) _mm_store_ps(p[c], P[c]), _mm_store_ps(n[c], interpolatedNormal[c]);
-      _mm_store_ps(a, alpha);
-      for (int k = 0; k < 4; ++k)
-        add(offset + static_cast<std::size_t>(k), {p[0][k], p[1][k], p[2][k]}, {n[0][k], n[1][k], n[2][k]}, back, baseColor, material, material.emissive,
-            0.0f, a[k]);
-      return;
-    }
-    for (int k = 0; k < 4; ++k) offset_[at + k] = offset + static_cast<std::size_t>(k);
-    _mm_store_ps(in_.alpha + at, alpha);
-    _mm_store_ps(in_.back + at, _mm_set1_ps(back ? 1.0f : 0.0f));
-    _mm_store_ps(in_.ka + at, _mm_set1_ps(material.ka));
-    _mm_store_ps(in_.kd + at, _mm_set1_ps(material.kd));
-    _mm_store_ps(in_.ks + at, _mm_set1_ps(material.ks));
-    _mm_store_ps(in_.n + at, _mm_set1_ps(material.shininess));
-    _mm_store_ps(in_.m + at, _mm_set1_ps(material.metallic));
-    for (int c = 0; c < 3; ++c) {
-      _mm_store_ps(in_.P[c] + at, P[c]);
-      _mm_store_ps(in_.N[c] + at, interpolatedNormal[c]);
-      _mm_store_ps(in_.O[c] + at, _mm_set1_ps(baseColor[c]));
-      _mm_store_ps(in_.E[c] + at, _mm_set1_ps(material.emissive[c]));
-    }
-    count_ += 4;
-    if (count_ == capacity_) flush();
-  }
-#endif
-
-  // add4 for the n = 8 or 16 pixels pixels[offset .. offset+n-1] of one
-  // triangle, interpolated on n lanes (queueEightLanes, queueSixteenLanes),
-  // with α from alpha[0..n-1] (null: 1); frames without fog only. Only where
-  // the batch shades n lanes and its queue is on an n-lane column; false, and
-  // nothing queued, elsewhere.
+  // The n = 4, 8 or 16 pixels pixels[offset .. offset+n-1] of one triangle,
+  // interpolated on n lanes (queueRunLanes, phong_lanes.h: four here, eight
+  // and sixteen in queueEightLanes and queueSixteenLanes), with α from
+  // alpha[0..n-1] (null: 1); frames without fog only. Four where the batch
+  // shades four lanes or more, eight or sixteen where it shades that many;
+  // and only where its queue is on an n-lane column. Elsewhere false, and
+  // nothing queued.
   bool addRun(int n, std::size_t offset, const Interpolation& in, int px, int py, bool back, glm::vec3 baseColor, const CourseMaterial& material,
-              const float* alpha);  // phong_batch.cpp, built where the wide paths are
+              const float* alpha) {
+#if defined(__SSE2__)
+    if (n == 4) {
+      if (lanes_ < 4 || count_ % 4 != 0) return false;
+      queueRunLanes<Float4>(in, px, py, offset, back, baseColor, material, alpha, in_, offset_, count_);
+      count_ += 4;
+      if (count_ == capacity_) flush();
+      return true;
+    }
+#endif
+    return addWideRun(n, offset, in, px, py, back, baseColor, material, alpha);
+  }
 
   // Shades what is queued.
   void flush();
@@ -131,6 +106,10 @@ class PhongBatch {
   int count_ = 0;
   std::size_t offset_[PhongLanes::kMost];
   PhongLanes in_;
+
+  // addRun's eight or sixteen: phong_batch.cpp, built where the wide paths are.
+  bool addWideRun(int n, std::size_t offset, const Interpolation& in, int px, int py, bool back, glm::vec3 baseColor, const CourseMaterial& material,
+                  const float* alpha);
 };
 
 }  // namespace facet::cpu

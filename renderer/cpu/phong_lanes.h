@@ -23,7 +23,7 @@ struct PhongLanes {
 // 3-5 of `in`, set up) by Interpolation's operations (each plane's two
 // fused multiply-adds, 1 / plane(1/w), the product), the offsets offset ..
 // offset+n-1, α from alpha[0..n-1] (null: 1), the facing, O_d and the
-// material, as PhongBatch::add4 queues four.
+// material.
 template <class F>
 void queueRunLanes(const Interpolation& in, int px, int py, std::size_t offset, bool back, glm::vec3 baseColor, const CourseMaterial& material,
                    const float* alpha, PhongLanes& lanes, std::size_t* offsets, int at) {

@@ -12,6 +12,7 @@
 #include <limits>
 #include <random>
 #include <set>
+#include <utility>
 #include <deque>
 #include <vector>
 
@@ -394,9 +395,9 @@ TEST_CASE("Phong batch: blended at every width, pixels scattered, gives blend's 
       }
 }
 
-TEST_CASE("Phong batch: eight or sixteen pixels of a triangle queued at once give the bits of each pixel interpolated and queued alone") {
-  if (cpu::widestLanes() < 8) {
-    MESSAGE("this CPU runs " << cpu::widestLanes() << " lanes: addRun queues nothing below eight");
+TEST_CASE("Phong batch: four, eight or sixteen pixels of a triangle queued at once give the bits of each pixel interpolated and queued alone") {
+  if (cpu::widestLanes() < 4) {
+    MESSAGE("this CPU runs " << cpu::widestLanes() << " lanes: addRun queues nothing below four");
     return;
   }
   const Scene scene = makeDefaultScene();
@@ -418,10 +419,12 @@ TEST_CASE("Phong batch: eight or sixteen pixels of a triangle queued at once giv
   material.ka = 0.2f, material.kd = 0.7f, material.ks = 0.5f, material.shininess = 37.0f, material.emissive = {0.01f, 0.02f, 0.03f};
   const glm::vec3 baseColor{0.8f, 0.4f, 0.2f};
   constexpr int kWidth = 64, kRows = 16;
-  for (const int lanes : {8, 16}) {
+  // Runs as wide as the batch, and runs of four on batches of four lanes or more (a row of a triangle too short for more).
+  for (const auto& [lanes, width] : {std::pair{4, 4}, std::pair{8, 4}, std::pair{16, 4}, std::pair{8, 8}, std::pair{16, 16}}) {
     if (lanes > cpu::widestLanes()) continue;
     for (const bool blended : {false, true}) {
       CAPTURE(lanes);
+      CAPTURE(width);
       CAPTURE(blended);
       const cpu::BlendOver over{Blending::Straight, false};
       std::vector<float> alpha(kWidth * kRows);
@@ -430,19 +433,19 @@ TEST_CASE("Phong batch: eight or sixteen pixels of a triangle queued at once giv
       cpu::PhongBatch run(frame, maps, wide.data(), lanes, blended ? &over : nullptr), one(frame, maps, alone.data(), lanes, blended ? &over : nullptr);
       int queued = 0;
       for (int py = 0; py < kRows; ++py)
-        for (int px = 0; px < kWidth; px += lanes) {
+        for (int px = 0; px < kWidth; px += width) {
           const auto at = static_cast<std::size_t>(py * kWidth + px);
-          const bool back = (px / lanes + py) % 3 == 0;
-          queued += run.addRun(lanes, at, in, 40 + px, 20 + py, back, baseColor, material, blended ? &alpha[at] : nullptr) ? 1 : 0;
-          for (int k = 0; k < lanes; ++k) {
+          const bool back = (px / width + py) % 3 == 0;
+          queued += run.addRun(width, at, in, 40 + px, 20 + py, back, baseColor, material, blended ? &alpha[at] : nullptr) ? 1 : 0;
+          for (int k = 0; k < width; ++k) {
             const float w = in.inverseWAt(40 + px + k, 20 + py);
             one.add(at + static_cast<std::size_t>(k), in.varying3At(0, 40 + px + k, 20 + py, w), in.varying3At(3, 40 + px + k, 20 + py, w), back,
                     baseColor, material, material.emissive, 0.0f, blended ? alpha[at + static_cast<std::size_t>(k)] : 1.0f);
           }
         }
       run.flush(), one.flush();
-      CHECK(queued == kRows * kWidth / lanes);  // every run went the wide way
-      CHECK_FALSE(run.addRun(lanes == 8 ? 16 : 8, 0, in, 40, 20, false, baseColor, material, nullptr));  // not the batch's width: refused
+      CHECK(queued == kRows * kWidth / width);  // every run went the wide way
+      if (width > 4) CHECK_FALSE(run.addRun(width == 8 ? 16 : 8, 0, in, 40, 20, false, baseColor, material, nullptr));  // eight or sixteen not the batch's: refused
       int differing = 0;
       for (int i = 0; i < kWidth * kRows; ++i) differing += std::memcmp(&wide.data()[i], &alone.data()[i], sizeof(glm::vec4)) == 0 ? 0 : 1;  // to the bit
       CHECK(differing == 0);
