@@ -48,6 +48,37 @@ inline void lessRow(const Plane& z, int x0, int x1, int py, float* depth, std::u
   }
 }
 
+// lessRow for the pixels bx + k of row py whose bit k is set in `covered`
+// (k < 8; bx a block's first column): a row of a block on the triangle's
+// edge (tile_raster.h). depth and ids are pixel bx's, with room for eight.
+inline void lessCovered(const Plane& z, int bx, unsigned covered, int py, float* depth, std::uint32_t* ids, std::uint32_t id) {
+#if defined(__SSE2__)
+  const __m128i laneBit = _mm_setr_epi32(1, 2, 4, 8), idLanes = _mm_set1_epi32(static_cast<int>(id));
+  for (int q = 0; q < 8; q += 4) {
+    const unsigned bits = (covered >> q) & 0xFu;
+    if (bits == 0) continue;
+    const __m128 on = _mm_castsi128_ps(_mm_cmpeq_epi32(_mm_and_si128(_mm_set1_epi32(static_cast<int>(bits)), laneBit), laneBit));
+    float* d = depth + q;
+    const __m128 w = depthAt4(z, bx + q, py), stored = _mm_loadu_ps(d);
+    const __m128 less = _mm_and_ps(_mm_cmplt_ps(w, stored), on);
+    if (_mm_movemask_ps(less) == 0) continue;
+    _mm_storeu_ps(d, _mm_or_ps(_mm_and_ps(less, w), _mm_andnot_ps(less, stored)));
+    if (!ids) continue;
+    auto* i = reinterpret_cast<__m128i*>(ids + q);
+    const __m128i mask = _mm_castps_si128(less);
+    _mm_storeu_si128(i, _mm_or_si128(_mm_and_si128(mask, idLanes), _mm_andnot_si128(mask, _mm_loadu_si128(i))));
+  }
+#else
+  for (; covered != 0; covered &= covered - 1) {
+    const int k = __builtin_ctz(covered);
+    const float w = depthAt(z, bx + k, py);
+    if (!(w < depth[k])) continue;
+    depth[k] = w;
+    if (ids) ids[k] = id;
+  }
+#endif
+}
+
 // Pixels x0..x1 of row py: where depthAt(z, px, py) < depth[px - x0] (a
 // blended fragment in front of the opaque surfaces; the depth is not
 // written), ids[px - x0] takes `id`. Returns the first and last pixel

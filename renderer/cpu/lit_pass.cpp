@@ -508,6 +508,10 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
                                   [&](int x0, int x1, int py) {
                                     const int k = (py - r.y0) * kTileSize + (x0 - r.x0);
                                     lessRow(interpolation.depthPlane(), x0, x1, py, &scratch.depth[k], &scratch.id[k], id);
+                                  },
+                                  [&](int bx, unsigned covered, int py) {  // bx .. bx+7 lie in the tile's row: tiles are whole blocks
+                                    const int k = (py - r.y0) * kTileSize + (bx - r.x0);
+                                    lessCovered(interpolation.depthPlane(), bx, covered, py, &scratch.depth[k], &scratch.id[k], id);
                                   });
                               return;
                             }

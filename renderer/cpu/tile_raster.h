@@ -52,10 +52,11 @@ inline bool fitsInt32(const std::int64_t (&e)[3], const std::int64_t (&reach)[3]
 // A block on an edge of the triangle, its edge values in 32 bits: each row's
 // eight coverage tests at once, as the sign of -w0 & -w1 & -w2 (all three
 // w > 0 exactly when all three -w are negative), then the row to
-// span(x0, x1, py) when it is covered whole, else its pixels to fragment.
-template <class Fragment, class Span>
+// span(x0, x1, py) when it is covered whole, else its covered pixels to
+// covered(bx, bits, py) (rasterizeBlocks).
+template <class Span, class Covered>
 void partialBlock(const std::int64_t (&e)[3], const std::int64_t (&sx)[3], const std::int64_t (&sy)[3], int x0, int x1, int y0, int y1,
-                  Fragment& fragment, Span& span) {
+                  Span& span, Covered& covered) {
   __m128i low[3], high[3], down[3];  // -w at columns x0..x0+3 and x0+4..x0+7 of the row; -(step y)
   for (int i = 0; i < 3; ++i) {
     const auto w = static_cast<std::int32_t>(-e[i]), step = static_cast<std::int32_t>(-sx[i]);  // in range: fitsInt32
@@ -67,10 +68,9 @@ void partialBlock(const std::int64_t (&e)[3], const std::int64_t (&sx)[3], const
   for (int py = y0; py <= y1; ++py) {
     const __m128 l = _mm_castsi128_ps(_mm_and_si128(_mm_and_si128(low[0], low[1]), low[2]));
     const __m128 h = _mm_castsi128_ps(_mm_and_si128(_mm_and_si128(high[0], high[1]), high[2]));
-    unsigned covered = (static_cast<unsigned>(_mm_movemask_ps(l)) | static_cast<unsigned>(_mm_movemask_ps(h)) << 4) & whole;
-    if (covered == whole) span(x0, x1, py);
-    else
-      for (; covered != 0; covered &= covered - 1) fragment(x0 + __builtin_ctz(covered), py);
+    const unsigned bits = (static_cast<unsigned>(_mm_movemask_ps(l)) | static_cast<unsigned>(_mm_movemask_ps(h)) << 4) & whole;
+    if (bits == whole) span(x0, x1, py);
+    else if (bits != 0) covered(x0 & ~7, bits << (x0 & 7), py);  // from the block's first column
     for (int i = 0; i < 3; ++i) {
       low[i] = _mm_add_epi32(low[i], down[i]);
       high[i] = _mm_add_epi32(high[i], down[i]);
@@ -82,11 +82,13 @@ void partialBlock(const std::int64_t (&e)[3], const std::int64_t (&sx)[3], const
 // fragment(px, py) for each covered pixel of the box, except that a row
 // wholly inside the triangle (every row of a block wholly inside, and a
 // block's row on an edge whose pixels all pass) goes to span(x0, x1, py) at
-// once (the depth tests run it four pixels at a time: depth_rows.h). The
-// pixels of one triangle are distinct, so the order they come in changes
-// nothing.
-template <class Fragment, class Span>
-void rasterizeBlocks(const SnappedTriangle& t, const PixelBox& box, Fragment&& fragment, Span&& span) {
+// once (the depth tests run it four pixels at a time: depth_rows.h), and,
+// where SSE2 tests a block's rows eight pixels at once, a row of a block on
+// an edge to covered(bx, bits, py): bx the block's first column (a multiple
+// of 8), bit k of `bits` set where pixel bx + k is covered. The pixels of
+// one triangle are distinct, so the order they come in changes nothing.
+template <class Fragment, class Span, class Covered>
+void rasterizeBlocks(const SnappedTriangle& t, const PixelBox& box, Fragment&& fragment, Span&& span, Covered&& covered) {
   EdgeFunction edges[3];
   edgeFunctions(t, edges);
   std::int64_t c[3], sx[3], sy[3];  // value at pixel (0, 0), step per pixel in x and in y
@@ -120,7 +122,7 @@ void rasterizeBlocks(const SnappedTriangle& t, const PixelBox& box, Fragment&& f
       }
 #if defined(__SSE2__)
       if (fitsInt32(e, reach)) {
-        partialBlock(e, sx, sy, x0, x1, y0, y1, fragment, span);
+        partialBlock(e, sx, sy, x0, x1, y0, y1, span, covered);
         continue;
       }
 #endif
@@ -138,6 +140,14 @@ void rasterizeBlocks(const SnappedTriangle& t, const PixelBox& box, Fragment&& f
       }
     }
   }
+}
+
+// The same with a block's covered pixels of a row on an edge each to fragment.
+template <class Fragment, class Span>
+void rasterizeBlocks(const SnappedTriangle& t, const PixelBox& box, Fragment&& fragment, Span&& span) {
+  rasterizeBlocks(t, box, fragment, span, [&](int bx, unsigned bits, int py) {
+    for (; bits != 0; bits &= bits - 1) fragment(bx + __builtin_ctz(bits), py);
+  });
 }
 
 template <class Fragment>

@@ -521,6 +521,31 @@ TEST_CASE("Depth rows: lessRow's four-lane test writes the depths and ids the on
   }
 }
 
+TEST_CASE("Depth rows: lessCovered writes the depths and ids the one-pixel test writes at the covered pixels of a block's row, and nothing else") {
+  std::mt19937 random(41);
+  std::uniform_real_distribution<float> unit(-0.2f, 1.2f), slope(-0.01f, 0.01f);
+  int written = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    const cpu::Plane z{unit(random), slope(random), slope(random)};
+    const int bx = 8 * (trial % 9), py = trial % 7;
+    const auto covered = static_cast<unsigned>(random() % 255u);  // 0 to 254: some pixels of the eight, none or not all
+    float fast[8], plain[8];
+    std::uint32_t fastIds[8], plainIds[8];
+    for (int i = 0; i < 8; ++i) fast[i] = plain[i] = unit(random), fastIds[i] = plainIds[i] = 7;
+    if (trial % 11 == 0) fast[3] = plain[3] = std::numeric_limits<float>::quiet_NaN();  // a NaN depth keeps nothing out: !(z < NaN)
+    if (trial % 5 == 0) fast[trial % 8] = plain[trial % 8] = cpu::depthAt(z, bx + trial % 8, py);  // equal depths: LESS keeps the first
+    cpu::lessCovered(z, bx, covered, py, fast, trial % 3 == 0 ? nullptr : fastIds, 9);
+    for (int k = 0; k < 8; ++k) {
+      if (!(covered & (1u << k))) continue;
+      const float d = cpu::depthAt(z, bx + k, py);
+      if (d < plain[k]) plain[k] = d, plainIds[k] = trial % 3 == 0 ? 7 : 9, ++written;
+    }
+    CHECK(std::memcmp(fast, plain, sizeof fast) == 0);
+    CHECK(std::memcmp(fastIds, plainIds, sizeof fastIds) == 0);
+  }
+  CHECK(written > 500);  // the test wrote depths, not only kept them
+}
+
 TEST_CASE("Depth rows: frontRow's four-lane test takes the pixels the one-pixel test takes, and reports the first and last") {
   std::mt19937 random(37);
   std::uniform_real_distribution<float> unit(-0.2f, 1.2f), slope(-0.01f, 0.01f);
