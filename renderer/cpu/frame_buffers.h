@@ -64,6 +64,9 @@ struct WorkerBins {
   std::vector<std::vector<std::uint32_t>> tiles;     // per tile: indices into `triangles`, in order
   std::vector<WindowVertex> scratch;                 // the clipper's output
   struct TileTriangle {                              // a triangle the lit pass met in the tile, set up once
+    // Set up in place (emplace_back): an Interpolation is some 400 bytes, a copy per triangle and tile.
+    TileTriangle(const InterpolationVertex (&vertices)[3], const WorkerBins* from, std::uint32_t at)
+        : interpolation(vertices[0], vertices[1], vertices[2]), bins(from), index(at) {}
     Interpolation interpolation;
     const WorkerBins* bins;                          // whose `triangles` holds it
     std::uint32_t index;

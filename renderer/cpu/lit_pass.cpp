@@ -240,7 +240,7 @@ void gatherVisible(const std::vector<WorkerBins>& workers, const PolygonNumberin
       const float* p = workers[w].vertex(v, t.vertex[k]);
       corner[k] = {p[0], p[1], p[2], p[3], p + 4};
     }
-    scratch.triangles.push_back({Interpolation(corner[0], corner[1], corner[2]), &workers[w], index});
+    scratch.triangles.emplace_back(corner, &workers[w], index);
   }
   for (int py = r.y0; py <= r.y1; ++py)
     for (int px = r.x0; px <= r.x1; ++px) {
@@ -480,14 +480,14 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
                                   const PixelBox& box) {
                                 if (!frame.materials[static_cast<std::size_t>(frame.instances[t.instance].material)].blended) return;
                                 scratch.blended.push_back({static_cast<std::uint32_t>(scratch.triangles.size()), box});
-                                scratch.triangles.push_back({Interpolation(vertices[0], vertices[1], vertices[2]), &bins, index});
+                                scratch.triangles.emplace_back(vertices, &bins, index);
                               });
     } else forEachTriangleInTile(buffers.workers, v, tile, r,
                           [&](const WorkerBins& bins, std::uint32_t index, const BinnedTriangle& t, const InterpolationVertex (&vertices)[3],
                               const PixelBox& box) {
                             // Set up once: the z-buffer reads its depth, shading its weights if it wins a pixel.
                             const auto id = static_cast<std::uint32_t>(scratch.triangles.size());
-                            scratch.triangles.push_back({Interpolation(vertices[0], vertices[1], vertices[2]), &bins, index});
+                            scratch.triangles.emplace_back(vertices, &bins, index);
                             Interpolation& interpolation = scratch.triangles.back().interpolation;
                             const FrameInstance& instance = frame.instances[t.instance];
                             const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
