@@ -5,8 +5,7 @@ namespace facet::cpu {
 Interpolation::Interpolation(const InterpolationVertex& a, const InterpolationVertex& b, const InterpolationVertex& c)
     : vertex_{a, b, c}, setup_(setUpPlanes(a.x, a.y, b.x, b.y, c.x, c.y)), z_(planeOf(setup_, a.z, b.z, c.z)) {}
 
-void Interpolation::setUpVaryings(int count) {
-  if (count <= count_) return;
+void Interpolation::setUpMore(int count) {
   const InterpolationVertex &a = vertex_[0], &b = vertex_[1], &c = vertex_[2];
   oneOverW_ = planeOf(setup_, a.invW, b.invW, c.invW);
   count_ = count;

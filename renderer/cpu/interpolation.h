@@ -38,7 +38,9 @@ class Interpolation {
   // Sets up the planes of 1/w and of varyings [0, count), before the calls
   // below; a call for no more varyings than are set up does nothing (a tile
   // meets a triangle's pixels row after row, in runs between other triangles').
-  void setUpVaryings(int count);
+  void setUpVaryings(int count) {
+    if (count > count_) setUpMore(count);  // inline: the shading loop asks again at every change of triangle
+  }
 
   // The same planes with each one's value at pixel (0, 0)'s centre moved to
   // fma(dady, dy, fma(dadx, dx, a(0))), so that every call below at (px, py)
@@ -77,6 +79,8 @@ class Interpolation {
   const Plane& varyingPlane(int k) const { return varying_[static_cast<std::size_t>(k)]; }
 
  private:
+  void setUpMore(int count);
+
   InterpolationVertex vertex_[3]{};
   PlaneSetup setup_;
   Plane z_, oneOverW_;
