@@ -27,6 +27,20 @@
 
 namespace facet::cpu {
 
+// The 4x4 transpose in each 128-bit part of four registers of lane type F
+// (_MM_TRANSPOSE4_PS's steps, at eight or sixteen lanes): RGBA pixels to
+// lanes of r, g, b and a, and back (loadPixels, storePixels). F's register
+// operations come from Shuffles<F>, given below for Float8 and Float16.
+template <class F>
+struct Shuffles;
+template <class F>
+void transposeQuarters(F (&p)[4]) {
+  using S = Shuffles<F>;
+  const F t0 = S::low(p[0], p[1]), t1 = S::low(p[2], p[3]), t2 = S::high(p[0], p[1]), t3 = S::high(p[2], p[3]);
+  p[0] = S::template pick<0x44>(t0, t1), p[1] = S::template pick<0xEE>(t0, t1);
+  p[2] = S::template pick<0x44>(t2, t3), p[3] = S::template pick<0xEE>(t2, t3);
+}
+
 // [SECTION] One lane: the operations the generic code calls by name.
 
 inline float select(bool mask, float a, float b) { return mask ? a : b; }
@@ -236,26 +250,30 @@ inline Vec3x8 select(Mask8 mask, const Vec3x8& a, const Vec3x8& b) { return {sel
 // Eight lanes from / to eight floats aligned to 32 bytes.
 inline void loadLanes(Float8& x, const float* p) { x = Float8(_mm256_load_ps(p)); }
 inline void storeLanes(float* p, Float8 x) { _mm256_store_ps(p, x.v); }
+// unpacklo, unpackhi and shuffle on eight lanes, for transposeQuarters.
+template <>
+struct Shuffles<Float8> {
+  static Float8 low(Float8 a, Float8 b) { return Float8(_mm256_unpacklo_ps(a.v, b.v)); }
+  static Float8 high(Float8 a, Float8 b) { return Float8(_mm256_unpackhi_ps(a.v, b.v)); }
+  template <int kPick>
+  static Float8 pick(Float8 a, Float8 b) { return Float8(_mm256_shuffle_ps(a.v, b.v, kPick)); }
+};
 // loadPixels and storePixels on eight lanes: register k holds pixel k in its
-// low half and pixel k + 4 in its high half, so that Float4's transpose,
-// done in both halves at once, leaves lanes 0-3 low and 4-7 high.
+// low half and pixel k + 4 in its high half, so that the transpose, done in
+// both halves at once, leaves lanes 0-3 low and 4-7 high.
 inline void loadPixels(const float* rgba, const std::size_t* offsets, int count, Vec3x8& color, Float8& alpha) {
   const auto at = [&](int k) { return k < count ? _mm_loadu_ps(rgba + 4 * offsets[k]) : _mm_setzero_ps(); };
-  __m256 pixel[4];
-  for (int k = 0; k < 4; ++k) pixel[k] = _mm256_set_m128(at(k + 4), at(k));
-  const __m256 rg01 = _mm256_unpacklo_ps(pixel[0], pixel[1]), rg23 = _mm256_unpacklo_ps(pixel[2], pixel[3]);  // r0 r1 g0 g1 | r4 r5 g4 g5
-  const __m256 ba01 = _mm256_unpackhi_ps(pixel[0], pixel[1]), ba23 = _mm256_unpackhi_ps(pixel[2], pixel[3]);
-  color = {Float8(_mm256_shuffle_ps(rg01, rg23, 0x44)), Float8(_mm256_shuffle_ps(rg01, rg23, 0xEE)), Float8(_mm256_shuffle_ps(ba01, ba23, 0x44))};
-  alpha = Float8(_mm256_shuffle_ps(ba01, ba23, 0xEE));
+  Float8 pixel[4];
+  for (int k = 0; k < 4; ++k) pixel[k] = Float8(_mm256_set_m128(at(k + 4), at(k)));
+  transposeQuarters(pixel);
+  color = {pixel[0], pixel[1], pixel[2]}, alpha = pixel[3];
 }
 inline void storePixels(float* rgba, const std::size_t* offsets, int count, const Vec3x8& color, Float8 alpha) {
-  const __m256 rg01 = _mm256_unpacklo_ps(color.x.v, color.y.v), rg23 = _mm256_unpackhi_ps(color.x.v, color.y.v);  // r0 g0 r1 g1 | r4 g4 r5 g5
-  const __m256 ba01 = _mm256_unpacklo_ps(color.z.v, alpha.v), ba23 = _mm256_unpackhi_ps(color.z.v, alpha.v);
-  const __m256 pixel[4] = {_mm256_shuffle_ps(rg01, ba01, 0x44), _mm256_shuffle_ps(rg01, ba01, 0xEE), _mm256_shuffle_ps(rg23, ba23, 0x44),
-                           _mm256_shuffle_ps(rg23, ba23, 0xEE)};
+  Float8 pixel[4] = {color.x, color.y, color.z, alpha};
+  transposeQuarters(pixel);
   for (int k = 0; k < 4; ++k) {
-    if (k < count) _mm_storeu_ps(rgba + 4 * offsets[k], _mm256_castps256_ps128(pixel[k]));
-    if (k + 4 < count) _mm_storeu_ps(rgba + 4 * offsets[k + 4], _mm256_extractf128_ps(pixel[k], 1));
+    if (k < count) _mm_storeu_ps(rgba + 4 * offsets[k], _mm256_castps256_ps128(pixel[k].v));
+    if (k + 4 < count) _mm_storeu_ps(rgba + 4 * offsets[k + 4], _mm256_extractf128_ps(pixel[k].v, 1));
   }
 }
 
@@ -364,28 +382,32 @@ inline Float16 joined(Float8 low, Float8 high) {
   return Float16(_mm512_castpd_ps(_mm512_insertf64x4(_mm512_castpd256_pd512(_mm256_castps_pd(low.v)), _mm256_castps_pd(high.v), 1)));
 }
 inline Vec3x16 joined(const Vec3x8& low, const Vec3x8& high) { return {joined(low.x, high.x), joined(low.y, high.y), joined(low.z, high.z)}; }
+// unpacklo, unpackhi and shuffle on sixteen lanes, for transposeQuarters.
+template <>
+struct Shuffles<Float16> {
+  static Float16 low(Float16 a, Float16 b) { return Float16(_mm512_unpacklo_ps(a.v, b.v)); }
+  static Float16 high(Float16 a, Float16 b) { return Float16(_mm512_unpackhi_ps(a.v, b.v)); }
+  template <int kPick>
+  static Float16 pick(Float16 a, Float16 b) { return Float16(_mm512_shuffle_ps(a.v, b.v, kPick)); }
+};
 // loadPixels and storePixels on sixteen lanes: register k holds pixels k,
 // k + 4, k + 8 and k + 12 in its four quarters, as Float8's does in its halves.
 inline void loadPixels(const float* rgba, const std::size_t* offsets, int count, Vec3x16& color, Float16& alpha) {
   const auto at = [&](int k) { return k < count ? _mm_loadu_ps(rgba + 4 * offsets[k]) : _mm_setzero_ps(); };
-  __m512 pixel[4];
+  Float16 pixel[4];
   for (int k = 0; k < 4; ++k)
-    pixel[k] = _mm512_insertf32x4(_mm512_insertf32x4(_mm512_insertf32x4(_mm512_castps128_ps512(at(k)), at(k + 4), 1), at(k + 8), 2), at(k + 12), 3);
-  const __m512 rg01 = _mm512_unpacklo_ps(pixel[0], pixel[1]), rg23 = _mm512_unpacklo_ps(pixel[2], pixel[3]);
-  const __m512 ba01 = _mm512_unpackhi_ps(pixel[0], pixel[1]), ba23 = _mm512_unpackhi_ps(pixel[2], pixel[3]);
-  color = {Float16(_mm512_shuffle_ps(rg01, rg23, 0x44)), Float16(_mm512_shuffle_ps(rg01, rg23, 0xEE)), Float16(_mm512_shuffle_ps(ba01, ba23, 0x44))};
-  alpha = Float16(_mm512_shuffle_ps(ba01, ba23, 0xEE));
+    pixel[k] = Float16(_mm512_insertf32x4(_mm512_insertf32x4(_mm512_insertf32x4(_mm512_castps128_ps512(at(k)), at(k + 4), 1), at(k + 8), 2), at(k + 12), 3));
+  transposeQuarters(pixel);
+  color = {pixel[0], pixel[1], pixel[2]}, alpha = pixel[3];
 }
 inline void storePixels(float* rgba, const std::size_t* offsets, int count, const Vec3x16& color, Float16 alpha) {
-  const __m512 rg01 = _mm512_unpacklo_ps(color.x.v, color.y.v), rg23 = _mm512_unpackhi_ps(color.x.v, color.y.v);
-  const __m512 ba01 = _mm512_unpacklo_ps(color.z.v, alpha.v), ba23 = _mm512_unpackhi_ps(color.z.v, alpha.v);
-  const __m512 pixel[4] = {_mm512_shuffle_ps(rg01, ba01, 0x44), _mm512_shuffle_ps(rg01, ba01, 0xEE), _mm512_shuffle_ps(rg23, ba23, 0x44),
-                           _mm512_shuffle_ps(rg23, ba23, 0xEE)};
+  Float16 pixel[4] = {color.x, color.y, color.z, alpha};
+  transposeQuarters(pixel);
   for (int k = 0; k < 4; ++k) {
-    if (k < count) _mm_storeu_ps(rgba + 4 * offsets[k], _mm512_castps512_ps128(pixel[k]));
-    if (k + 4 < count) _mm_storeu_ps(rgba + 4 * offsets[k + 4], _mm512_extractf32x4_ps(pixel[k], 1));
-    if (k + 8 < count) _mm_storeu_ps(rgba + 4 * offsets[k + 8], _mm512_extractf32x4_ps(pixel[k], 2));
-    if (k + 12 < count) _mm_storeu_ps(rgba + 4 * offsets[k + 12], _mm512_extractf32x4_ps(pixel[k], 3));
+    if (k < count) _mm_storeu_ps(rgba + 4 * offsets[k], _mm512_castps512_ps128(pixel[k].v));
+    if (k + 4 < count) _mm_storeu_ps(rgba + 4 * offsets[k + 4], _mm512_extractf32x4_ps(pixel[k].v, 1));
+    if (k + 8 < count) _mm_storeu_ps(rgba + 4 * offsets[k + 8], _mm512_extractf32x4_ps(pixel[k].v, 2));
+    if (k + 12 < count) _mm_storeu_ps(rgba + 4 * offsets[k + 12], _mm512_extractf32x4_ps(pixel[k].v, 3));
   }
 }
 
