@@ -49,6 +49,9 @@ void put(float* v, int at, glm::vec4 value) {
 
 
 constexpr std::uint32_t kNoTriangle = std::numeric_limits<std::uint32_t>::max();
+// Tiles start at multiples of kTileSize, blocks (tile_raster.h) at multiples of 8: a block's eight
+// pixels of a row lie in one tile's row, which lessCovered reads from the block's first column.
+static_assert(kTileSize % 8 == 0);
 
 // The material Gouraud and flat shading sum at a vertex or a triangle: k_e = 0
 // where an emissive texture adds k_e·E at the pixel instead (PIPELINE.md, section 5).
