@@ -269,7 +269,7 @@ class LeanGlRenderer final : public Renderer {
       mapsDrawn_ = ShadowPassKey(scene, frame);
     }
     litPass(frame, lit);
-    result.image = readImage(frame);
+    result.image = readImage(frame, recycledImage());
     checkError("the frame");
     result.timings.push_back({(frame.shadowLayerCount > 0 ? shadowPassName(frame, kept) + ", " : std::string()) + "lit pass and read-back",
                               millisecondsSince(start)});
@@ -510,8 +510,8 @@ class LeanGlRenderer final : public Renderer {
     gl_.DrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
   }
 
-  Image readImage(const FrameInputs& frame) const {
-    Image image(frame.width, frame.height);
+  Image readImage(const FrameInputs& frame, Image image) const {
+    image.resize(frame.width, frame.height);  // the recycled image's storage where it fits: every pixel is read back
     gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, samples_ > 1 ? resolved_.id() : framebuffer_.id());
     gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
     gl_.PixelStorei(GL_PACK_ROW_LENGTH, 0);

@@ -89,8 +89,9 @@ PointTimes timePoint(const BenchScene& b, std::vector<std::unique_ptr<Renderer>>
     try {
       renderers[r]->forgetShadowMaps();  // each frame draws its maps: the lights axis is their cost
       const auto start = Clock::now();
-      (void)renderers[r]->render(b.scene, frame);
+      RenderResult drawn = renderers[r]->render(b.scene, frame);
       if (timed) ms[r].push_back(millisecondsSince(start));
+      renderers[r]->recycle(std::move(drawn.image));  // the next frame's storage, as bench's scenes do
     } catch (const Error& e) {
       t.failures[r] = e.what();
     }

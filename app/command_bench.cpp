@@ -167,12 +167,12 @@ int runCallgrindMode(const BenchOptions& o, int width, int height) {
   const BenchScene b = makeBenchScene(o.scenes.front(), width, height);
   const FrameInputs frame = buildFrameInputs(b.scene, b.settings);
   std::unique_ptr<Renderer> renderer = makeBackend(o.backends.front(), o.threads);
-  for (int i = 0; i < o.warmup; ++i) (void)renderer->render(b.scene, frame);
+  for (int i = 0; i < o.warmup; ++i) renderer->recycle(renderer->render(b.scene, frame).image);
   CALLGRIND_ZERO_STATS;
   CALLGRIND_START_INSTRUMENTATION;
   for (int i = 0; i < o.frames; ++i) {
     if (!o.keepShadowMaps) renderer->forgetShadowMaps();
-    (void)renderer->render(b.scene, frame);
+    renderer->recycle(renderer->render(b.scene, frame).image);
   }
   CALLGRIND_STOP_INSTRUMENTATION;
   std::printf("callgrind: %s on %s, %d frame(s) instrumented\n", o.scenes.front().c_str(), o.backends.front().c_str(), o.frames);
@@ -265,11 +265,13 @@ Command addBenchCommand(CLI::App& app) {
       std::vector<std::vector<std::pair<std::string, std::vector<double>>>> passes(renderers.size());
       std::vector<RenderResult> last(renderers.size());
       for (std::size_t r = 0; r < renderers.size(); ++r)
-        for (int i = 0; i < o->warmup && !skip[r]; ++i) (void)renderers[r]->render(b.scene, frame);
+        for (int i = 0; i < o->warmup && !skip[r]; ++i) renderers[r]->recycle(renderers[r]->render(b.scene, frame).image);
       for (int i = 0; i < o->frames; ++i)
         for (std::size_t r = 0; r < renderers.size(); ++r) {
           if (skip[r]) continue;
           if (!o->keepShadowMaps) renderers[r]->forgetShadowMaps();
+          // Every column draws into its previous frame's image, as a loop of frames does (Renderer::recycle).
+          renderers[r]->recycle(std::move(last[r].image));
           const auto start = Clock::now();
           last[r] = renderers[r]->render(b.scene, frame);
           ms[r].push_back(millisecondsSince(start));

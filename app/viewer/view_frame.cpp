@@ -87,7 +87,7 @@ bool ViewFrame::drawIfChanged(const ViewerState& state, bool preview, bool force
     if (key != drawn_.key || drawn_.version == 0) ++drawn_.version;
     drawn_.scene = scene;
     drawn_.frame = std::move(frame);
-    drawn_.image = std::move(result.image);
+    renderer.recycle(std::exchange(drawn_.image, std::move(result.image)));  // the last frame's storage holds the next
     drawn_.onCpu = onCpu;
     drawn_.preview = divisor > 1;
     if (onCpu) cpuTexture_.upload(drawn_.image);

@@ -62,7 +62,8 @@ class CpuRenderer final : public Renderer {
     };
     const bool resolvedByTile = frame.samples.empty() && !frame.volume.placed;
     if (resolvedByTile) {
-      result.image = Image::unfilled(frame.width, frame.height);  // every tile resolves into it
+      result.image = recycledImage();
+      result.image.resize(frame.width, frame.height);  // every tile resolves into it
       drawPass(frame, &result.image);
       result.timings.push_back({"lit pass and resolve", millisecondsSince(start)});
     } else if (frame.samples.empty()) {
@@ -88,6 +89,7 @@ class CpuRenderer final : public Renderer {
       result.notes.push_back(line);
     }
     if (!resolvedByTile) {
+      result.image = recycledImage();
       const auto resolveStart = std::chrono::steady_clock::now();
       if (frame.samples.empty()) cpu::resolve(pool_, color_, frame.blending, 1, buffers_.lanes, result.image);
       else cpu::resolve(pool_, sum_, Blending::Premultiplied, static_cast<int>(frame.samples.size()), buffers_.lanes, result.image);

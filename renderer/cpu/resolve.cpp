@@ -26,7 +26,7 @@ void resolveRow(const glm::vec4* in, Rgba8* out, std::size_t n, Blending holding
 }
 
 void resolve(ThreadPool& pool, const ColorBuffer& buffer, Blending holding, int samples, int lanes, Image& image) {
-  image = Image::unfilled(buffer.width(), buffer.height());
+  image.resize(buffer.width(), buffer.height());  // its storage kept where it fits: every pixel is written below
   const auto width = static_cast<std::size_t>(buffer.width());
   forEachRange(pool, static_cast<std::size_t>(buffer.height()), [&](std::size_t begin, std::size_t end, int) {
     resolveRow(buffer.data() + begin * width, image.data() + begin * width, (end - begin) * width, holding, samples, lanes);

@@ -11,9 +11,10 @@
 
 namespace facet::cpu {
 
-// `image` takes the buffer's size; rows are split across the pool. The
-// buffer holds colours as `holding` says, summed over `samples` passes
-// (divided by that count first: anti-aliasing's box filter). `lanes` is the
+// `image` takes the buffer's size (its storage kept where it fits,
+// Image::resize); rows are split across the pool. The buffer holds colours
+// as `holding` says, summed over `samples` passes (divided by that count
+// first: anti-aliasing's box filter). `lanes` is the
 // renderer's width (lane_width.h): at 16 the pixels go four at a time
 // (resolve_avx512.cpp), else one at a time, each channel's clamp and bucket
 // four lanes at a time (srgb_table.h). An eight-lane encode with gathers

@@ -168,8 +168,8 @@ std::vector<PassTiming> GlFrameRenderer::drawFrame(const Scene& scene, const Fra
   return timings;
 }
 
-Image GlFrameRenderer::readImage() const {
-  Image image(image_->width(), image_->height());
+Image GlFrameRenderer::readImage(Image image) const {
+  image.resize(image_->width(), image_->height());  // every pixel read back below
   gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, image_->framebuffer());
   gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
   gl_.PixelStorei(GL_PACK_ROW_LENGTH, 0);

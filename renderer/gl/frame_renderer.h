@@ -53,8 +53,9 @@ class GlFrameRenderer {
   // The next frame draws its shadow maps (Renderer::forgetShadowMaps).
   void forgetShadowMaps() { mapsDrawn_ = {}; }
 
-  // The last frame's RGBA8 pixels, bottom row first as glReadPixels gives them.
-  Image readImage() const;
+  // The last frame's RGBA8 pixels, bottom row first as glReadPixels gives
+  // them, read into `storage` (resized: a recycled image keeps its memory).
+  Image readImage(Image storage = {}) const;
 
   // Which triangle each pixel keeps (Renderer::visibleTriangles): the lit
   // pass's geometry, culling and z-buffer, writing ids instead of colours.

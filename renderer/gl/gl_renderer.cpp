@@ -1,6 +1,7 @@
 #include "gl/gl_renderer.h"
 
 #include <chrono>
+#include <utility>
 
 #include "common/error.h"
 #include "common/stopwatch.h"
@@ -18,14 +19,15 @@ class GlFrames {
  public:
   explicit GlFrames(const gl::GetProcAddress& getProcAddress) : frameRenderer_(getProcAddress) {}
 
-  RenderResult render(const Scene& scene, const FrameInputs& frame) {
+  // `storage`: the renderer's recycled image, whose storage the read-back fills.
+  RenderResult render(const Scene& scene, const FrameInputs& frame, Image storage) {
     check_(scene, frame);
     RenderResult result;
     Clock::time_point start = Clock::now();
     if (upload(scene)) result.timings.push_back({kSceneUploadPass, millisecondsSince(start)});
     for (PassTiming& timing : frameRenderer_.drawFrame(scene, frame)) result.timings.push_back(std::move(timing));
     start = Clock::now();
-    result.image = frameRenderer_.readImage();
+    result.image = frameRenderer_.readImage(std::move(storage));
     result.timings.push_back({"read-back", millisecondsSince(start)});
     return result;
   }
@@ -100,7 +102,7 @@ class HeadlessGlRenderer final : public Renderer {
 
   RenderResult render(const Scene& scene, const FrameInputs& frame) override {
     context_->makeCurrent();  // another renderer of this process may have made its own current
-    return frames_->render(scene, frame);
+    return frames_->render(scene, frame, recycledImage());
   }
 
   void forgetShadowMaps() override { frames_->forgetShadowMaps(); }
@@ -140,7 +142,7 @@ class CurrentContextGlRenderer final : public WindowGlRenderer {
   explicit CurrentContextGlRenderer(const gl::GetProcAddress& getProcAddress) : frames_(getProcAddress) {}
 
   std::string description() const override { return "gl: " + frames_.frameRenderer().rendererName() + " in the window's context"; }
-  RenderResult render(const Scene& scene, const FrameInputs& frame) override { return frames_.render(scene, frame); }
+  RenderResult render(const Scene& scene, const FrameInputs& frame) override { return frames_.render(scene, frame, recycledImage()); }
   void forgetShadowMaps() override { frames_.forgetShadowMaps(); }
   std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) override {
     return frames_.visibleTriangles(scene, frame);

@@ -17,9 +17,13 @@ Image::Image(int width, int height, Rgba8 fill) : width_(width), height_(height)
 
 Image Image::unfilled(int width, int height) {
   Image image;
-  image.pixels_.resize(pixelCount(width, height));  // default-initialized: LargePageAllocator leaves them as handed over
-  image.width_ = width, image.height_ = height;
+  image.resize(width, height);
   return image;
+}
+
+void Image::resize(int width, int height) {
+  pixels_.resize(pixelCount(width, height));  // new pixels default-initialized: LargePageAllocator leaves them as handed over
+  width_ = width, height_ = height;
 }
 
 }  // namespace facet

@@ -25,6 +25,11 @@ class Image {
   // writers, on their threads (the fill took 1.5 % of a sphere-100k frame
   // on one thread, and the kernel's page clearing another 1.8 %).
   static Image unfilled(int width, int height);
+  // The size alone, as ColorBuffer::resize: the pixels keep what they held,
+  // new ones are undefined, and the storage stays where it is large enough
+  // (a recycled frame's image, Renderer::recycle). Throws facet::Error for a
+  // negative size.
+  void resize(int width, int height);
 
   int width() const { return width_; }
   int height() const { return height_; }

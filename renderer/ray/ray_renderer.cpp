@@ -96,6 +96,7 @@ class RayRenderer final : public Renderer {
     });
     result.timings.push_back({"ray tracing" + (summed ? " (" + std::to_string(paths) + " paths a pixel)" : std::string()), millisecondsSince(start)});
     const auto resolveStart = std::chrono::steady_clock::now();
+    result.image = recycledImage();
     cpu::resolve(pool_, color_, summed ? Blending::Premultiplied : Blending::Straight, paths, cpu::widestLanes(), result.image);
     result.timings.push_back({"resolve", millisecondsSince(resolveStart)});
     result.notes.push_back(statistics.summary());

@@ -3,6 +3,7 @@
 // Image out. Backends consume FrameInputs; they never compute a matrix.
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/vec4.hpp>
@@ -86,8 +87,20 @@ class Renderer {
   // its maps is timed on the same work as one that does not.
   virtual void forgetShadowMaps() {}
 
+  // Hands back the image of a frame this renderer returned, once the caller
+  // is done with it: the next frame is written into its storage rather than
+  // into fresh memory, whose pages the kernel clears on first touch (13 % of
+  // a 1920x1080 CPU frame's time: facet bench, the viewer).
+  void recycle(Image&& image) { spare_ = std::move(image); }
+
  protected:
   Error notDrawn(const std::string& stage) const { return Error("the " + stage + " stage is not drawn by " + description()); }
+  // The recycled image (empty if none): a frame's storage, which the
+  // backend sizes (Image::resize) and then writes every pixel of.
+  Image recycledImage() { return std::exchange(spare_, Image()); }
+
+ private:
+  Image spare_;
 };
 
 }  // namespace facet
