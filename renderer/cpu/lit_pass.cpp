@@ -59,6 +59,56 @@ LaneMaterial<float> vertexMaterial(const CourseMaterial& material, const Mesh& m
   return laneMaterial(material, readsMap(material.emissiveMap, mesh) ? glm::vec3(0.0f) : material.emissive);
 }
 
+// What the fragment stage reads of an instance's triangles, besides P and N
+// or the illumination: its maps, and `used`, the prefix of the varying
+// layout it sets up (everything with a procedural pattern; up to the model
+// position with vertex colours; none for flat without maps; Phong: P and N,
+// the texture coordinates only with a map, the tangent only with a normal
+// or bump map).
+struct FragmentReads {
+  const Texture* texture = nullptr;
+  const Texture* normalMap = nullptr;    // Phong and pbr
+  const Texture* emissiveMap = nullptr;  // the course's modes (pbr reads it in pbrSurfaceAt)
+  bool bumpable = false;                 // Phong and pbr: the frame has a bump map and the mesh tangents
+  bool colored = false;
+  int used = 0;
+};
+
+FragmentReads fragmentReads(ShadingMode mode, const Scene& scene, const FrameInputs& frame, const CourseMaterial& material, const Mesh& mesh) {
+  const VaryingLayout layout = varyingLayout(mode);
+  FragmentReads r;
+  r.texture = baseColorTextureOf(scene, frame, material, mesh);
+  r.normalMap = layout.tangent >= 0 ? normalMapOf(scene, material, mesh) : nullptr;
+  r.emissiveMap = mode != ShadingMode::Pbr ? emissiveMapOf(scene, material, mesh) : nullptr;
+  r.bumpable = layout.tangent >= 0 && frame.bump.map && !mesh.tangents.empty();
+  r.colored = !mesh.colors.empty();
+  r.used = frame.procedural != Procedural::None ? layout.count
+           : r.colored                           ? layout.model
+                                                 : (mode == ShadingMode::Flat && !r.texture && !r.emissiveMap ? 0 : layout.color);
+  if (mode == ShadingMode::Phong && r.used == layout.color && !r.normalMap && !r.bumpable)
+    r.used = r.texture || r.emissiveMap ? layout.tangent : layout.uv;
+  return r;
+}
+
+// The varyings the frame's vertex stage packs (PassVertices::window): the
+// most that any instance reads, in its fragments and their α
+// (fragmentReads: every reader sets up that prefix at most) or in its lines
+// and points (COLOR_0). A frame of plain Phong surfaces packs P and N alone:
+// 40 bytes a vertex instead of 88, written once and read by binning and by
+// every tile.
+int packedVaryings(const Scene& scene, const FrameInputs& frame) {
+  const VaryingLayout layout = varyingLayout(frame.shading);
+  int packed = 0;
+  for (const FrameInstance& instance : frame.instances) {
+    const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
+    const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
+    const FragmentReads reads = fragmentReads(frame.shading, scene, frame, material, mesh);
+    packed = std::max(packed, reads.used);
+    if (!mesh.lines.empty() || !mesh.points.empty()) packed = std::max(packed, layout.color + 4);
+  }
+  return packed;
+}
+
 // The fragment stage of one shading mode: no branch on the mode per pixel.
 // It shades the pixels of `box` (within tile r) where `ids` (the tile's, row
 // by row) names a triangle, and writes (colour, 1) there into `color`; with
@@ -77,12 +127,10 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
   Interpolation* in = nullptr;
   const CourseMaterial* material = nullptr;
   const Mesh* drawnMesh = nullptr;
-  const Texture* texture = nullptr;
-  const Texture* normalMap = nullptr;  // Phong and pbr
-  const Texture* emissiveMap = nullptr;  // the course's modes (pbr reads it in pbrSurfaceAt)
-  bool bumpable = false;               // Phong and pbr: the frame has a bump map and the mesh tangents
-  bool colored = false;
-  int used = 0;  // varyings set up for the triangle: a prefix of the layout
+  FragmentReads reads;  // the instance's
+  const Texture *&texture = reads.texture, *&normalMap = reads.normalMap, *&emissiveMap = reads.emissiveMap;
+  const bool &bumpable = reads.bumpable, &colored = reads.colored;
+  const int& used = reads.used;  // varyings set up for the triangle: a prefix of the layout
   const bool procedural = frame.procedural != Procedural::None;
   const bool foggy = frame.fog.mode != FogMode::None;  // fog reads 1/w, set up with the varyings
   bool back = false;
@@ -108,15 +156,7 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
           const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
           material = &frame.materials[static_cast<std::size_t>(instance.material)];
           drawnMesh = &mesh;
-          texture = baseColorTextureOf(scene, frame, *material, mesh);
-          normalMap = layout.tangent >= 0 ? normalMapOf(scene, *material, mesh) : nullptr;
-          emissiveMap = kMode != ShadingMode::Pbr ? emissiveMapOf(scene, *material, mesh) : nullptr;
-          bumpable = layout.tangent >= 0 && frame.bump.map && !mesh.tangents.empty();
-          colored = !mesh.colors.empty();
-          used = procedural ? layout.count : colored ? layout.model : (kMode == ShadingMode::Flat && !texture && !emissiveMap ? 0 : layout.color);
-          // Phong reads P and N, the texture coordinates only with a texture, the tangent only with a normal map or a bump map.
-          if constexpr (kMode == ShadingMode::Phong)
-            if (used == layout.color && !normalMap && !bumpable) used = texture || emissiveMap ? layout.tangent : layout.uv;
+          reads = fragmentReads(kMode, scene, frame, *material, mesh);
           // Phong's plain pixel: lit, without texture, vertex colours, procedural pattern, bent normal,
           // emission map or fog; its P and N go to the batch as they are interpolated.
           plain = kMode == ShadingMode::Phong && !normals && !texture && !colored && !procedural && !normalMap && !bumpable && !emissiveMap &&
@@ -284,10 +324,10 @@ void blendTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
     const Texture* texture = baseColorTextureOf(scene, frame, material, mesh);
     const bool colored = !mesh.colors.empty();
     Interpolation& in = triangle.interpolation;
-    in.setUpVaryings(layout.model);
-    TileRect drawn{r.x1 + 1, r.y1 + 1, r.x0 - 1, r.y0 - 1};  // the pixels it reaches, as a box
     const float constantAlpha = fragmentAlpha(material, nullptr, nullptr);
     const float* const uniformAlpha = texture || colored ? nullptr : &constantAlpha;  // fragmentAlphaAt's value at every pixel
+    if (!uniformAlpha) in.setUpVaryings(fragmentReads(frame.shading, scene, frame, material, mesh).used);  // α's texture coordinates, COLOR_0
+    TileRect drawn{r.x1 + 1, r.y1 + 1, r.x0 - 1, r.y0 - 1};  // the pixels it reaches, as a box
     // A fragment in front of the opaque surfaces (LESS, no depth write) takes its pixel, with its alpha.
     const auto inFront = [&](int px, int py) {
       const int k = (py - r.y0) * kTileSize + (px - r.x0);
@@ -339,7 +379,7 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
   const float halfWidth = 0.5f * static_cast<float>(frame.width), halfHeight = 0.5f * static_cast<float>(frame.height);
   PassVertices& v = buffers.vertices;
   const std::size_t vertexCount = v.world.size();
-  const int packed = layout.packed(frame.procedural);
+  const int packed = packedVaryings(scene, frame);
   const auto stride = static_cast<std::size_t>(4 + packed);
   v.stride = 4 + packed;
   v.window.resize(vertexCount * stride);
@@ -357,15 +397,18 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
       const glm::vec3 P = v.world[g];
       float* out = v.window.data() + g * stride;
       float* varyings = out + 4;
-      putTexcoords(varyings, layout.uv, mesh, local);
-      put(varyings, layout.color, mesh.colors.empty() ? glm::vec4(1.0f) : mesh.colors[local]);
+      // The packed prefix of the layout alone (packedVaryings).
+      if (packed >= layout.uv + 4) putTexcoords(varyings, layout.uv, mesh, local);
+      if (packed >= layout.color + 4) put(varyings, layout.color, mesh.colors.empty() ? glm::vec4(1.0f) : mesh.colors[local]);
       if (packed == layout.count) put(varyings, layout.model, mesh.positions[local]);
       if (interpolatesNormals(frame.shading)) {
         put(varyings, 0, P);
         put(varyings, 3, normalize3(transformDirection(instance.normalMatrix, mesh.normals[local])));
         // The tangent turns with the surface (TM's upper 3×3), w rides along; (0, 0, 0, 1) without one.
-        const glm::vec4 t = mesh.tangents.empty() ? glm::vec4(0.0f, 0.0f, 0.0f, 1.0f) : mesh.tangents[local];
-        put(varyings, layout.tangent, glm::vec4(transformDirection(glm::mat3(instance.worldFromModel), glm::vec3(t)), t.w));
+        if (packed >= layout.tangent + 4) {
+          const glm::vec4 t = mesh.tangents.empty() ? glm::vec4(0.0f, 0.0f, 0.0f, 1.0f) : mesh.tangents[local];
+          put(varyings, layout.tangent, glm::vec4(transformDirection(glm::mat3(instance.worldFromModel), glm::vec3(t)), t.w));
+        }
       } else if (frame.shading == ShadingMode::Gouraud) {
         const glm::vec3 N = normalize3(transformDirection(instance.normalMatrix, mesh.normals[local]));
         const glm::vec3 V = viewVector<float>(frame, P);
@@ -523,7 +566,7 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
                             const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
                             const Texture* texture = material.masked ? baseColorTextureOf(scene, frame, material, mesh) : nullptr;
                             const bool colored = !mesh.colors.empty();
-                            if (material.masked) interpolation.setUpVaryings(layout.model);
+                            if (material.masked) interpolation.setUpVaryings(fragmentReads(frame.shading, scene, frame, material, mesh).used);
                             rasterizeBlocks(t.snapped, box, [&](int px, int py) {
                               const int k = (py - r.y0) * kTileSize + (px - r.x0);
                               const float z = painter ? 0.0f : interpolation.depthAt(px, py);
