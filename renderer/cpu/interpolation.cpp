@@ -10,7 +10,7 @@ void Interpolation::setUpMore(int count) {
   oneOverW_ = planeOf(setup_, a.invW, b.invW, c.invW);
   count_ = count;
   for (int k = 0; k < count; ++k)
-    varying_[static_cast<std::size_t>(k)] = planeOf(setup_, a.varyings[k] * a.invW, b.varyings[k] * b.invW, c.varyings[k] * c.invW);
+    varying_.plane[k] = planeOf(setup_, a.varyings[k] * a.invW, b.varyings[k] * b.invW, c.varyings[k] * c.invW);
 }
 
 Interpolation Interpolation::movedBy(float dx, float dy) const {
@@ -21,7 +21,7 @@ Interpolation Interpolation::movedBy(float dx, float dy) const {
   Interpolation out = *this;
   out.z_ = moved(z_);
   out.oneOverW_ = moved(oneOverW_);
-  for (int k = 0; k < count_; ++k) out.varying_[static_cast<std::size_t>(k)] = moved(varying_[static_cast<std::size_t>(k)]);
+  for (int k = 0; k < count_; ++k) out.varying_.plane[k] = moved(varying_.plane[k]);
   return out;
 }
 
