@@ -142,7 +142,10 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
       const int k = (py - r.y0) * kTileSize + (px - r.x0);  // the pixel in the tile's arrays (ids, alpha)
       const float a = over ? alpha[k] : 1.0f;             // its α in a blended pass
       const std::uint32_t id = ids[k];
-      if (id == kNoTriangle) continue;  // the background the image was cleared to
+      if (id == kNoTriangle) {  // the background the image was cleared to (a blended pass: a pixel its triangle does not take)
+        for (const std::uint32_t* next = &ids[k + 1]; px < tx1 && *next == kNoTriangle; ++next) ++px;  // the rest of their run, in a tight loop
+        continue;
+      }
       if (id != current) {
         current = id;
         WorkerBins::TileTriangle& winner = scratch.triangles[id];
