@@ -38,17 +38,6 @@ WindowVertex windowVertex(const ClipVertex& v, float halfWidth, float halfHeight
 
 }  // namespace
 
-unsigned clipMask(const glm::vec4& p) {
-  unsigned m = 0;
-  if (p.x > p.w) m |= 1u;
-  if (0.0f > p.x + p.w) m |= 2u;
-  if (p.y > p.w) m |= 4u;
-  if (0.0f > p.y + p.w) m |= 8u;
-  if (0.0f > p.z) m |= 16u;
-  if (p.z > p.w) m |= 32u;
-  return m;
-}
-
 WindowVertex toWindow(const ClipVertex& v, float halfWidth, float halfHeight, int varyingCount) {
   return windowVertex(v, halfWidth, halfHeight, varyingCount, false);
 }

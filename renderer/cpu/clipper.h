@@ -47,7 +47,18 @@ void clipTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
 bool clipSegment(const ClipVertex& a, const ClipVertex& b, const WindowVertex& windowA, const WindowVertex& windowB, float halfWidth,
                  float halfHeight, int varyingCount, WindowVertex& outA, WindowVertex& outB);
 
-// The clip mask of one vertex: bit i set when it is outside plane i (order above).
-unsigned clipMask(const glm::vec4& p);
+// The clip mask of one vertex: bit i set when it is outside plane i (order
+// above). Inline: the vertex stage asks it of every vertex (a call each was
+// 1.6 % of a sphere-1m frame's instructions).
+inline unsigned clipMask(const glm::vec4& p) {
+  unsigned m = 0;
+  if (p.x > p.w) m |= 1u;
+  if (0.0f > p.x + p.w) m |= 2u;
+  if (p.y > p.w) m |= 4u;
+  if (0.0f > p.y + p.w) m |= 8u;
+  if (0.0f > p.z) m |= 16u;
+  if (p.z > p.w) m |= 32u;
+  return m;
+}
 
 }  // namespace facet::cpu

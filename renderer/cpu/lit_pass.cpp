@@ -387,46 +387,52 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
   v.stride = 4 + packed;
   v.window.resize(vertexCount * stride);
 
-  // Vertex stage.
+  // Vertex stage, an instance's vertices at a time: its matrices are copied
+  // to locals once, which the stores to the packed vertices cannot alias
+  // (read through the instance, they were loaded again for every vertex).
   forEachRange(pool, vertexCount, [&](std::size_t begin, std::size_t end, int) {
-    std::size_t i = 0;
-    for (std::size_t g = begin; g < end; ++g) {
+    for (std::size_t g = begin, i = 0; g < end;) {
       while (g >= v.firstVertex[i + 1]) ++i;
+      const std::size_t first = v.firstVertex[i], last = std::min(end, v.firstVertex[i + 1]);
       const FrameInstance& instance = frame.instances[i];
       const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
       const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
-      const std::size_t local = g - v.firstVertex[i];
-      const glm::vec4 clip = transformPoint(instance.clipFromModel, mesh.positions[local]);
-      const glm::vec3 P = v.world[g];
-      float* out = v.window.data() + g * stride;
-      float* varyings = out + 4;
-      // The packed prefix of the layout alone (packedVaryings).
-      if (packed >= layout.uv + 4) putTexcoords(varyings, layout.uv, mesh, local);
-      if (packed >= layout.color + 4) put(varyings, layout.color, mesh.colors.empty() ? glm::vec4(1.0f) : mesh.colors[local]);
-      if (packed == layout.count) put(varyings, layout.model, mesh.positions[local]);
-      if (interpolatesNormals(frame.shading)) {
-        put(varyings, 0, P);
-        put(varyings, 3, normalize3(transformDirection(instance.normalMatrix, mesh.normals[local])));
-        // The tangent turns with the surface (TM's upper 3×3), w rides along; (0, 0, 0, 1) without one.
-        if (packed >= layout.tangent + 4) {
-          const glm::vec4 t = mesh.tangents.empty() ? glm::vec4(0.0f, 0.0f, 0.0f, 1.0f) : mesh.tangents[local];
-          put(varyings, layout.tangent, glm::vec4(transformDirection(glm::mat3(instance.worldFromModel), glm::vec3(t)), t.w));
+      const glm::mat4 clipFromModel = instance.clipFromModel;
+      const glm::mat3 normalMatrix = instance.normalMatrix, tangentMatrix(instance.worldFromModel);  // TM's upper 3×3 turns the tangent
+      const LaneMaterial<float> lit = vertexMaterial(material, mesh);
+      for (; g < last; ++g) {
+        const std::size_t local = g - first;
+        const glm::vec4 clip = transformPoint(clipFromModel, mesh.positions[local]);
+        const glm::vec3 P = v.world[g];
+        float* out = v.window.data() + g * stride;
+        float* varyings = out + 4;
+        // The packed prefix of the layout alone (packedVaryings).
+        if (packed >= layout.uv + 4) putTexcoords(varyings, layout.uv, mesh, local);
+        if (packed >= layout.color + 4) put(varyings, layout.color, mesh.colors.empty() ? glm::vec4(1.0f) : mesh.colors[local]);
+        if (packed == layout.count) put(varyings, layout.model, mesh.positions[local]);
+        if (interpolatesNormals(frame.shading)) {
+          put(varyings, 0, P);
+          put(varyings, 3, normalize3(transformDirection(normalMatrix, mesh.normals[local])));
+          // The tangent turns with the surface, w rides along; (0, 0, 0, 1) without one.
+          if (packed >= layout.tangent + 4) {
+            const glm::vec4 t = mesh.tangents.empty() ? glm::vec4(0.0f, 0.0f, 0.0f, 1.0f) : mesh.tangents[local];
+            put(varyings, layout.tangent, glm::vec4(transformDirection(tangentMatrix, glm::vec3(t)), t.w));
+          }
+        } else if (frame.shading == ShadingMode::Gouraud) {
+          const glm::vec3 N = normalize3(transformDirection(normalMatrix, mesh.normals[local]));
+          const glm::vec3 V = viewVector<float>(frame, P);
+          const Illumination front = illuminate(frame, maps, lit, P, N, V);
+          put(varyings, 0, front.diffuse);
+          put(varyings, 3, front.specular);
+          Illumination back;  // zero when one-sided, as ClipVertex's varyings were
+          if (!instance.cullBackFaces) back = illuminate(frame, maps, lit, P, -N, V);
+          put(varyings, 6, back.diffuse);
+          put(varyings, 9, back.specular);
         }
-      } else if (frame.shading == ShadingMode::Gouraud) {
-        const glm::vec3 N = normalize3(transformDirection(instance.normalMatrix, mesh.normals[local]));
-        const glm::vec3 V = viewVector<float>(frame, P);
-        const LaneMaterial<float> lit = vertexMaterial(material, mesh);
-        const Illumination front = illuminate(frame, maps, lit, P, N, V);
-        put(varyings, 0, front.diffuse);
-        put(varyings, 3, front.specular);
-        Illumination back;  // zero when one-sided, as ClipVertex's varyings were
-        if (!instance.cullBackFaces) back = illuminate(frame, maps, lit, P, -N, V);
-        put(varyings, 6, back.diffuse);
-        put(varyings, 9, back.specular);
+        v.clip[g] = clip;
+        v.flags[g] = vertexFlags(clip);
+        packWindow(clip, halfWidth, halfHeight, out);
       }
-      v.clip[g] = clip;
-      v.flags[g] = vertexFlags(clip);
-      packWindow(clip, halfWidth, halfHeight, out);
     }
   });
 

@@ -1,5 +1,6 @@
 // The phases of a pass on the renderer's threads (frame_buffers.h): ranges
 // of vertices or triangles split evenly, tiles handed out as workers free up.
+#include <algorithm>
 #include <atomic>
 
 #include "cpu/passes.h"
@@ -34,13 +35,14 @@ void prepareFrame(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, c
   v.clip.resize(vertices);
   v.flags.resize(vertices);
   if (buffers.workers.size() < static_cast<std::size_t>(pool.size())) buffers.workers.resize(static_cast<std::size_t>(pool.size()));
+  // An instance's vertices at a time, its matrix in a local that the stores cannot alias.
   forEachRange(pool, frame.instances.size() == 0 ? 0 : vertices, [&](std::size_t begin, std::size_t end, int) {
-    std::size_t instance = 0;
-    for (std::size_t g = begin; g < end; ++g) {
+    for (std::size_t g = begin, instance = 0; g < end;) {
       while (g >= v.firstVertex[instance + 1]) ++instance;
-      const FrameInstance& in = frame.instances[instance];
-      const Mesh& mesh = scene.meshes[static_cast<std::size_t>(in.mesh)];
-      v.world[g] = glm::vec3(transformPoint(in.worldFromModel, mesh.positions[g - v.firstVertex[instance]]));
+      const std::size_t first = v.firstVertex[instance], last = std::min(end, v.firstVertex[instance + 1]);
+      const glm::mat4 worldFromModel = frame.instances[instance].worldFromModel;
+      const glm::vec3* positions = scene.meshes[static_cast<std::size_t>(frame.instances[instance].mesh)].positions.data();
+      for (; g < last; ++g) v.world[g] = glm::vec3(transformPoint(worldFromModel, positions[g - first]));
     }
   });
 }
