@@ -29,20 +29,23 @@ void binTriangles(const Scene& scene, const FrameInputs& frame, const PassVertic
     return static_cast<std::size_t>(std::upper_bound(vertices.firstTriangle.begin(), vertices.firstTriangle.end(), global) -
                                     vertices.firstTriangle.begin()) - 1;
   };
-  std::size_t instance = order ? 0 : instanceOf(begin);
-  for (std::size_t position = begin; position < end; ++position) {
-    const std::size_t global = order ? order[position] : position;
-    if (order) instance = instanceOf(global);
-    else while (global >= vertices.firstTriangle[instance + 1]) ++instance;
-    const Mesh& mesh = scene.meshes[static_cast<std::size_t>(frame.instances[instance].mesh)];
-    const bool cullBackFaces = culling && frame.instances[instance].cullBackFaces;
-    const std::size_t first = vertices.firstVertex[instance];
-    const std::size_t t = 3 * (global - vertices.firstTriangle[instance]);
-    const std::uint32_t local[3] = {mesh.indices[t], mesh.indices[t + 1], mesh.indices[t + 2]};
+  // What a triangle reads of its instance, in locals: pointers the stores below (the bins' vectors) cannot alias.
+  struct Instance {
+    std::size_t index, firstVertex, firstTriangle;
+    const std::uint32_t* indices;
+    bool cullBackFaces;
+  };
+  const auto instanceAt = [&](std::size_t i) {
+    const Mesh& mesh = scene.meshes[static_cast<std::size_t>(frame.instances[i].mesh)];
+    return Instance{i, vertices.firstVertex[i], vertices.firstTriangle[i], mesh.indices.data(), culling && frame.instances[i].cullBackFaces};
+  };
+  const std::uint8_t* const flags = vertices.flags.data();
+  const auto bin = [&](const Instance& in, std::size_t global) {
+    const std::size_t t = 3 * (global - in.firstTriangle);
     std::uint32_t ref[3];
-    for (int k = 0; k < 3; ++k) ref[k] = static_cast<std::uint32_t>(first + local[k]);
-    const std::uint8_t f0 = vertices.flags[ref[0]], f1 = vertices.flags[ref[1]], f2 = vertices.flags[ref[2]];
-    if ((f0 | f1 | f2) & kNotFinite) continue;
+    for (int k = 0; k < 3; ++k) ref[k] = static_cast<std::uint32_t>(in.firstVertex + in.indices[t + static_cast<std::size_t>(k)]);
+    const std::uint8_t f0 = flags[ref[0]], f1 = flags[ref[1]], f2 = flags[ref[2]];
+    if ((f0 | f1 | f2) & kNotFinite) return;
 
     // The triangles to draw: the triangle itself, or the clipper's fan (stored packed in `clipped`).
     std::uint32_t fan[3 * 7];
@@ -51,7 +54,7 @@ void binTriangles(const Scene& scene, const FrameInputs& frame, const PassVertic
       fan[0] = ref[0], fan[1] = ref[1], fan[2] = ref[2];
       fanSize = 3;
     } else {
-      if (f0 & f1 & f2) continue;
+      if (f0 & f1 & f2) return;
       ClipVertex c[3];
       WindowVertex w[3];
       for (int k = 0; k < 3; ++k) {
@@ -68,10 +71,10 @@ void binTriangles(const Scene& scene, const FrameInputs& frame, const PassVertic
         pack(v, varyingCount, bins.clipped);
       }
     }
-    if (fanSize == 0) continue;
+    if (fanSize == 0) return;
 
     Illumination illumination[2];
-    if (flat) (*flat)(static_cast<std::uint32_t>(instance), ref, illumination);
+    if (flat) (*flat)(static_cast<std::uint32_t>(in.index), ref, illumination);
 
     for (std::size_t k = 0; k < fanSize; k += 3) {
       BinnedTriangle tri;
@@ -80,10 +83,10 @@ void binTriangles(const Scene& scene, const FrameInputs& frame, const PassVertic
       if (!snapTriangle({p[0][0], p[1][0], p[2][0]}, {p[0][1], p[1][1], p[2][1]}, tri.snapped) ||
           !pixelBox(tri.snapped, 0, 0, grid.width - 1, grid.height - 1, box))
         continue;
-      if (cullBackFaces && !tri.snapped.frontFacing) continue;  // signed area ≤ 0 is dropped
+      if (in.cullBackFaces && !tri.snapped.frontFacing) continue;  // signed area ≤ 0 is dropped
       tri.vertex[0] = fan[k], tri.vertex[1] = fan[k + 1], tri.vertex[2] = fan[k + 2];
       toSetUpOrder(tri.snapped, tri.vertex);
-      tri.instance = static_cast<std::uint32_t>(instance);
+      tri.instance = static_cast<std::uint32_t>(in.index);
       tri.triangle = static_cast<std::uint32_t>(global);
       const auto index = static_cast<std::uint32_t>(bins.triangles.size());
       bins.triangles.push_back(tri);
@@ -92,7 +95,15 @@ void binTriangles(const Scene& scene, const FrameInputs& frame, const PassVertic
         for (int tx = box.minX >> kTileShift; tx <= box.maxX >> kTileShift; ++tx)
           bins.tiles[static_cast<std::size_t>(ty * grid.columns + tx)].push_back(index);
     }
-  }
+  };
+  if (order)  // an order of the frame's own (the painter's, transparency's): any instance from one triangle to the next
+    for (std::size_t position = begin; position < end; ++position) bin(instanceAt(instanceOf(order[position])), order[position]);
+  else  // in submission order, an instance's triangles at a time
+    for (std::size_t global = begin, i = instanceOf(begin); global < end;) {
+      while (global >= vertices.firstTriangle[i + 1]) ++i;
+      const Instance in = instanceAt(i);
+      for (const std::size_t last = std::min(end, vertices.firstTriangle[i + 1]); global < last; ++global) bin(in, global);
+    }
 }
 
 }  // namespace facet::cpu
