@@ -18,6 +18,7 @@
 #include "cpu/depth_rows.h"
 #include "cpu/environment_mapping.h"
 #include "cpu/fog.h"
+#include "cpu/fragment_reads.h"
 #include "cpu/bump_mapping.h"
 #include "cpu/interpolation.h"
 #include "cpu/normal_mapping.h"
@@ -57,37 +58,6 @@ static_assert(kTileSize % 8 == 0);
 // where an emissive texture adds k_e·E at the pixel instead (PIPELINE.md, section 5).
 LaneMaterial<float> vertexMaterial(const CourseMaterial& material, const Mesh& mesh) {
   return laneMaterial(material, readsMap(material.emissiveMap, mesh) ? glm::vec3(0.0f) : material.emissive);
-}
-
-// What the fragment stage reads of an instance's triangles, besides P and N
-// or the illumination: its maps, and `used`, the prefix of the varying
-// layout it sets up (everything with a procedural pattern; up to the model
-// position with vertex colours; none for flat without maps; Phong: P and N,
-// the texture coordinates only with a map, the tangent only with a normal
-// or bump map).
-struct FragmentReads {
-  const Texture* texture = nullptr;
-  const Texture* normalMap = nullptr;    // Phong and pbr
-  const Texture* emissiveMap = nullptr;  // the course's modes (pbr reads it in pbrSurfaceAt)
-  bool bumpable = false;                 // Phong and pbr: the frame has a bump map and the mesh tangents
-  bool colored = false;
-  int used = 0;
-};
-
-FragmentReads fragmentReads(ShadingMode mode, const Scene& scene, const FrameInputs& frame, const CourseMaterial& material, const Mesh& mesh) {
-  const VaryingLayout layout = varyingLayout(mode);
-  FragmentReads r;
-  r.texture = baseColorTextureOf(scene, frame, material, mesh);
-  r.normalMap = layout.tangent >= 0 ? normalMapOf(scene, material, mesh) : nullptr;
-  r.emissiveMap = mode != ShadingMode::Pbr ? emissiveMapOf(scene, material, mesh) : nullptr;
-  r.bumpable = layout.tangent >= 0 && frame.bump.map && !mesh.tangents.empty();
-  r.colored = !mesh.colors.empty();
-  r.used = frame.procedural != Procedural::None ? layout.count
-           : r.colored                           ? layout.model
-                                                 : (mode == ShadingMode::Flat && !r.texture && !r.emissiveMap ? 0 : layout.color);
-  if (mode == ShadingMode::Phong && r.used == layout.color && !r.normalMap && !r.bumpable)
-    r.used = r.texture || r.emissiveMap ? layout.tangent : layout.uv;
-  return r;
 }
 
 // The varyings the frame's vertex stage packs (PassVertices::window): the

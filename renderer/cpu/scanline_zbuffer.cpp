@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "cpu/alpha_mask.h"
+#include "cpu/fragment_reads.h"
 #include "cpu/interpolation.h"
 #include "cpu/passes.h"
 #include "cpu/texture_sampling.h"
@@ -168,7 +169,7 @@ void scanlineVisibility(ThreadPool& pool, const std::vector<WorkerBins>& workers
         const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
         s.texture = baseColorTextureOf(scene, frame, *s.material, mesh);
         s.colored = !mesh.colors.empty();
-        s.planes.setUpVaryings(layout.model);
+        s.planes.setUpVaryings(fragmentReads(frame.shading, scene, frame, *s.material, mesh).used);  // α's texture coordinates, COLOR_0
       }
       a.setUp = static_cast<std::uint32_t>(setUps.size());
       setUps.push_back(s);

@@ -10,6 +10,7 @@
 #include "cpu/cpu_renderer.h"
 #include "cpu/scanline_zbuffer.h"
 #include "cpu_test_scenes.h"
+#include "image/mipmap.h"
 #include "math/transforms.h"
 #include "pipeline/frame_inputs.h"
 #include "pipeline/painters_order.h"
@@ -175,4 +176,44 @@ TEST_CASE("scanline z-buffer: the default scene's image, byte for byte, and dept
   CHECK(cpu::scanlineDepthBytes(1920, 2) == 2 * cpu::scanlineDepthBytes(1920, 1));
   CHECK(cpu::scanlineDepthBytes(3840, 1) == 2 * cpu::scanlineDepthBytes(1920, 1));
   CHECK(cpu::scanlineDepthBytes(1920, 1) < 1920u * 1080u * sizeof(float) / 100);  // a row, not a frame
+}
+
+TEST_CASE("scanline z-buffer: an alpha-masked texture without vertex colours, its vertices the frame's last, as the z-buffer draws it") {
+  // The mask reads the texture coordinates alone: the frame packs no more, and the scanline's set-up must
+  // read no more either (its last vertex ends the packed buffer: under AddressSanitizer, a read past it fails).
+  Scene scene = test::groundScene(1, {0.5f, 0.5f, 0.5f});
+  Texture halves;
+  halves.image = Image(2, 1, Rgba8{230, 20, 20, 255});
+  halves.image.at(0, 0) = Rgba8{230, 20, 20, 0};  // s < 0.5: cut away
+  halves.sampler.mag = MagFilter::Nearest;
+  halves.sampler.min = MinFilter::Nearest;
+  halves.mips = mipLevels(halves.image, halves.encoding);
+  scene.textures.push_back(halves);
+  Mesh quad;
+  quad.positions = {{-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, {-1, 0, -1}};
+  quad.normals.assign(4, {0, 1, 0});
+  quad.texcoords = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  quad.indices = {0, 1, 2, 0, 2, 3};
+  const int masked = scene.addMaterial("masked", {1, 1, 1}, 0.0f, 1.0f);
+  Material& m = scene.materials[static_cast<std::size_t>(masked)];
+  m.alphaMode = AlphaMode::Mask;
+  m.doubleSided = true;
+  m.baseColorTexture = static_cast<int>(scene.textures.size() - 1);
+  scene.addObject(quad, masked, translation({0.0f, 0.5f, 0.0f}));
+  RenderSettings s = test::topDownSettings(96);
+  s.shading = ShadingMode::Phong;
+  const Image zbuffer = test::renderCpu(scene, s);
+  s.hsr = HiddenSurface::Scanline;
+  const Image scanline = test::renderCpu(scene, s);
+  long red = 0, differ = 0;
+  for (int y = 0; y < s.height; ++y)
+    for (int x = 0; x < s.width; ++x) {
+      const Rgba8 p = scanline.at(x, y);
+      red += p.r > 2 * p.g + 20;
+      differ += !(p == zbuffer.at(x, y));
+    }
+  CHECK(differ == 0);
+  // The kept half of the quad is an eighth of the view; the cut half shows the ground.
+  CHECK(red > s.width * s.height / 16);
+  CHECK(red < s.width * s.height * 3 / 16);
 }
