@@ -13,6 +13,7 @@
 //      each pixel sees its triangles in the order they were submitted.
 #include <algorithm>
 #include <cstdint>
+#include <iterator>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -72,8 +73,18 @@ struct WorkerBins {
     std::uint32_t index;
   };
   struct TileScratch {                               // the lit pass's tile: z-buffer and winning triangle
+    // The arrays the shading loop reads a run of pixels from (id, fragment,
+    // alpha) have room for sixteen past the tile's last pixel: it reads a
+    // run's sixteen at once, wherever the run starts (lit_pass.cpp,
+    // phong_lanes.h). What that room holds is never used (it is set, not left unwritten).
+    static constexpr int kRunSlack = 16;
+    TileScratch() {
+      std::fill(std::end(id) - kRunSlack, std::end(id), 0u);
+      std::fill(std::end(fragment) - kRunSlack, std::end(fragment), 0u);
+      std::fill(std::end(alpha) - kRunSlack, std::end(alpha), 0.0f);
+    }
     float depth[kTileSize * kTileSize];
-    std::uint32_t id[kTileSize * kTileSize];         // index into `triangles`
+    std::uint32_t id[kTileSize * kTileSize + kRunSlack];  // index into `triangles`
     std::vector<TileTriangle> triangles;
     // Transparency: the tile's blended triangles in their drawing order (their
     // ids and pixel boxes), then, one triangle at a time, which pixels its
@@ -83,8 +94,8 @@ struct WorkerBins {
       PixelBox box;
     };
     std::vector<Blended> blended;
-    std::uint32_t fragment[kTileSize * kTileSize];   // the id of the blended triangle drawn there, or none
-    float alpha[kTileSize * kTileSize];
+    std::uint32_t fragment[kTileSize * kTileSize + kRunSlack];  // the id of the blended triangle drawn there, or none
+    float alpha[kTileSize * kTileSize + kRunSlack];
     // The tile's linear colours where the lit pass resolves each tile as it finishes it (LitPassOutput::image).
     glm::vec4 pixels[kTileSize * kTileSize];
   } tile;

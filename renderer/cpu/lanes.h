@@ -144,6 +144,9 @@ inline Vec3x4 select(Mask4 mask, const Vec3x4& a, const Vec3x4& b) { return {sel
 // Four lanes from / to four floats aligned to 16 bytes.
 inline void loadLanes(Float4& x, const float* p) { x = Float4(_mm_load_ps(p)); }
 inline void storeLanes(float* p, Float4 x) { _mm_store_ps(p, x.v); }
+// Four lanes from / to four floats at any address.
+inline void loadLanesUnaligned(Float4& x, const float* p) { x = Float4(_mm_loadu_ps(p)); }
+inline void storeLanesUnaligned(float* p, Float4 x) { _mm_storeu_ps(p, x.v); }
 // The RGBA pixels at rgba + 4·offsets[k], k < count, as lanes of colour and
 // alpha, and back: a transpose in registers and one 16-byte load or store a
 // pixel. Lanes past count read 0 and write nothing. (Storing the lanes and
@@ -250,6 +253,8 @@ inline Vec3x8 select(Mask8 mask, const Vec3x8& a, const Vec3x8& b) { return {sel
 // Eight lanes from / to eight floats aligned to 32 bytes.
 inline void loadLanes(Float8& x, const float* p) { x = Float8(_mm256_load_ps(p)); }
 inline void storeLanes(float* p, Float8 x) { _mm256_store_ps(p, x.v); }
+inline void loadLanesUnaligned(Float8& x, const float* p) { x = Float8(_mm256_loadu_ps(p)); }
+inline void storeLanesUnaligned(float* p, Float8 x) { _mm256_storeu_ps(p, x.v); }
 // unpacklo, unpackhi and shuffle on eight lanes, for transposeQuarters.
 template <>
 struct Shuffles<Float8> {
@@ -368,6 +373,8 @@ inline Vec3x16 select(Mask16 mask, const Vec3x16& a, const Vec3x16& b) {
 // Sixteen lanes from / to sixteen floats aligned to 64 bytes.
 inline void loadLanes(Float16& x, const float* p) { x = Float16(_mm512_load_ps(p)); }
 inline void storeLanes(float* p, Float16 x) { _mm512_store_ps(p, x.v); }
+inline void loadLanesUnaligned(Float16& x, const float* p) { x = Float16(_mm512_loadu_ps(p)); }
+inline void storeLanesUnaligned(float* p, Float16 x) { _mm512_storeu_ps(p, x.v); }
 
 // The eight low lanes (half 0) or high lanes (half 1), for code written for eight lanes.
 inline Float8 halfOf(Float16 a, int half) {

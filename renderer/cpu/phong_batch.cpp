@@ -11,24 +11,19 @@ PhongBatch::PhongBatch(const FrameInputs& frame, const ShadowMaps& maps, glm::ve
   checkLanes(lanes);
 }
 
-bool PhongBatch::addWideRun(int n, std::size_t offset, const Interpolation& in, int px, int py, bool back, glm::vec3 baseColor,
-                        const CourseMaterial& material, const float* alpha) {
-  if (n != lanes_ || count_ % n != 0) return false;
+void PhongBatch::queueRun(int n, std::size_t offset, const Interpolation& in, int px, int py, bool back, glm::vec3 baseColor,
+                          const CourseMaterial& material, const float* alpha) {
 #if defined(FACET_AVX512_LANES)
-  if (n == 16) queueSixteenLanes(in, px, py, offset, back, baseColor, material, alpha, in_, offset_, count_);
-  else
+  if (n > 8) return queueSixteenLanes(in, px, py, offset, back, baseColor, material, alpha, in_, offset_, count_);
 #endif
 #if defined(FACET_AVX2_LANES)
-  if (n == 8) queueEightLanes(in, px, py, offset, back, baseColor, material, alpha, in_, offset_, count_);
-  else
+  if (n > 4) return queueEightLanes(in, px, py, offset, back, baseColor, material, alpha, in_, offset_, count_);
 #endif
-  {
-    (void)offset, (void)in, (void)px, (void)py, (void)back, (void)baseColor, (void)material, (void)alpha;
-    return false;
-  }
-  count_ += n;
-  if (count_ == capacity_) flush();
-  return true;
+#if defined(__SSE2__)
+  queueRunLanes<Float4>(in, px, py, offset, back, baseColor, material, alpha, in_, offset_, count_);
+#else
+  (void)n, (void)offset, (void)in, (void)px, (void)py, (void)back, (void)baseColor, (void)material, (void)alpha;  // one lane: addRun adds
+#endif
 }
 
 void PhongBatch::flush() {

@@ -9,6 +9,7 @@
 // it as two interleaved halves (lane_pairs.h; README, "Two batches side by side").
 // Pixels of different triangles and materials share a batch.
 // Without SSE2 the batch shades its pixels one by one.
+#include <algorithm>
 #include <cstdint>
 
 #include "cpu/blending.h"
@@ -35,13 +36,13 @@ void shadeSixteenLanes(const FrameInputs& frame, const ShadowMaps& maps, const P
 #if defined(FACET_AVX2_LANES)
 // queueRunLanes<Float8> (phong_lanes.h): eight pixels of one triangle queued at lanes [at, at + 8);
 // call only where widestLanes() is 8 or more (phong_batch_avx2.cpp).
-void queueEightLanes(const Interpolation& in, int px, int py, std::size_t offset, bool back, glm::vec3 baseColor, const CourseMaterial& material,
-                     const float* alpha, PhongLanes& lanes, std::size_t* offsets, int at);
+void queueEightLanes(const Interpolation& in, int px, int py, std::size_t offset, bool back, glm::vec3 baseColor,
+                     const CourseMaterial& material, const float* alpha, PhongLanes& lanes, std::size_t* offsets, int at);
 #endif
 #if defined(FACET_AVX512_LANES)
 // queueRunLanes<Float16>: sixteen, at lanes [at, at + 16); only where widestLanes() is 16 (phong_batch_avx512.cpp).
-void queueSixteenLanes(const Interpolation& in, int px, int py, std::size_t offset, bool back, glm::vec3 baseColor, const CourseMaterial& material,
-                       const float* alpha, PhongLanes& lanes, std::size_t* offsets, int at);
+void queueSixteenLanes(const Interpolation& in, int px, int py, std::size_t offset, bool back, glm::vec3 baseColor,
+                       const CourseMaterial& material, const float* alpha, PhongLanes& lanes, std::size_t* offsets, int at);
 #endif
 
 class PhongBatch {
@@ -72,25 +73,31 @@ class PhongBatch {
     if (count_ == capacity_) flush();
   }
 
-  // The n = 4, 8 or 16 pixels pixels[offset .. offset+n-1] of one triangle,
-  // interpolated on n lanes (queueRunLanes, phong_lanes.h: four here, eight
-  // and sixteen in queueEightLanes and queueSixteenLanes), with α from
-  // alpha[0..n-1] (null: 1); frames without fog only. Four where the batch
-  // shades four lanes or more, eight or sixteen where it shades that many;
-  // and only where its queue is on an n-lane column. Elsewhere false, and
-  // nothing queued.
-  bool addRun(int n, std::size_t offset, const Interpolation& in, int px, int py, bool back, glm::vec3 baseColor, const CourseMaterial& material,
+  // The n pixels pixels[offset .. offset+n-1] of one triangle, n from 1 to
+  // the batch's lanes, interpolated on the narrowest of 4, 8 and 16 lanes
+  // that holds them (queueRunLanes, phong_lanes.h: four here, eight and
+  // sixteen in queueEightLanes and queueSixteenLanes) straight into the
+  // queue wherever it stands, with α from alpha[0..n-1] (null: 1); frames
+  // without fog only. A run the queue has no room for is split where the
+  // batch is shaded. A batch of one lane queues each pixel as add does.
+  void addRun(int n, std::size_t offset, const Interpolation& in, int px, int py, bool back, glm::vec3 baseColor, const CourseMaterial& material,
               const float* alpha) {
-#if defined(__SSE2__)
-    if (n == 4) {
-      if (lanes_ < 4 || count_ % 4 != 0) return false;
-      queueRunLanes<Float4>(in, px, py, offset, back, baseColor, material, alpha, in_, offset_, count_);
-      count_ += 4;
-      if (count_ == capacity_) flush();
-      return true;
+    if (lanes_ < 4) {
+      for (int k = 0; k < n; ++k) {
+        const float w = in.inverseWAt(px + k, py);
+        add(offset + static_cast<std::size_t>(k), in.varying3At(0, px + k, py, w), in.varying3At(3, px + k, py, w), back, baseColor, material,
+            material.emissive, 0.0f, alpha ? alpha[k] : 1.0f);
+      }
+      return;
     }
-#endif
-    return addWideRun(n, offset, in, px, py, back, baseColor, material, alpha);
+    while (n > 0) {
+      const int m = std::min(n, capacity_ - count_);
+      queueRun(m, offset, in, px, py, back, baseColor, material, alpha);
+      count_ += m;
+      if (count_ == capacity_) flush();
+      n -= m, px += m, offset += static_cast<std::size_t>(m);
+      if (alpha) alpha += m;
+    }
   }
 
   // Shades what is queued.
@@ -104,12 +111,12 @@ class PhongBatch {
   int lanes_;
   int capacity_;  // pixels queued before they are shaded: twice the lanes at 16 (lane_pairs.h)
   int count_ = 0;
-  std::size_t offset_[PhongLanes::kMost];
+  std::size_t offset_[PhongLanes::kColumn];  // as a column: room for a run's store past the queue
   PhongLanes in_;
 
-  // addRun's eight or sixteen: phong_batch.cpp, built where the wide paths are.
-  bool addWideRun(int n, std::size_t offset, const Interpolation& in, int px, int py, bool back, glm::vec3 baseColor, const CourseMaterial& material,
-                  const float* alpha);
+  // n pixels of addRun's at lanes [count_, count_ + n), n ≤ capacity_ - count_ (phong_batch.cpp).
+  void queueRun(int n, std::size_t offset, const Interpolation& in, int px, int py, bool back, glm::vec3 baseColor, const CourseMaterial& material,
+                const float* alpha);
 };
 
 }  // namespace facet::cpu

@@ -18,7 +18,7 @@ __attribute__((flatten)) void shadeSixteenLanes(const FrameInputs& frame, const 
 }
 
 __attribute__((flatten)) void queueSixteenLanes(const Interpolation& in, int px, int py, std::size_t offset, bool back, glm::vec3 baseColor,
-                                                const CourseMaterial& material, const float* alpha, PhongLanes& lanes, std::size_t* offsets, int at) {
+                                              const CourseMaterial& material, const float* alpha, PhongLanes& lanes, std::size_t* offsets, int at) {
   queueRunLanes<Float16>(in, px, py, offset, back, baseColor, material, alpha, lanes, offsets, at);
 }
 

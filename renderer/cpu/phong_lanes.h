@@ -12,29 +12,35 @@
 namespace facet::cpu {
 
 struct PhongLanes {
-  static constexpr int kMost = 32;  // twice sixteen lanes (lane_pairs.h); each column aligned for 512-bit loads
-  alignas(64) float P[3][kMost], N[3][kMost], O[3][kMost], E[3][kMost], D[kMost], back[kMost];
-  alignas(64) float ka[kMost], kd[kMost], ks[kMost], n[kMost], m[kMost];
-  alignas(64) float alpha[kMost];  // a blended pass's α (BlendOver); unread by an opaque one
+  static constexpr int kMost = 32;  // twice sixteen lanes (lane_pairs.h)
+  // A column holds kMost lanes and room for a run's store of sixteen past
+  // the last one queued (queueRunLanes); each is aligned for 512-bit loads.
+  static constexpr int kColumn = kMost + 16;
+  alignas(64) float P[3][kColumn], N[3][kColumn], O[3][kColumn], E[3][kColumn], D[kColumn], back[kColumn];
+  alignas(64) float ka[kColumn], kd[kColumn], ks[kColumn], n[kColumn], m[kColumn];
+  alignas(64) float alpha[kColumn];  // a blended pass's α (BlendOver); unread by an opaque one
 };
 
-// A run of F's width of pixels (px .. px+n-1, py) of one triangle queued
-// at lanes [at, at + n) (at a multiple of n): P and N (varyings 0-2 and
+// F's width of pixels (px, py), (px+1, py), ... of one triangle queued at
+// lanes [at, at + width) (any at below kMost): P and N (varyings 0-2 and
 // 3-5 of `in`, set up) by Interpolation's operations (each plane's two
-// fused multiply-adds, 1 / plane(1/w), the product), the offsets offset ..
-// offset+n-1, α from alpha[0..n-1] (null: 1), the facing, O_d and the
-// material.
+// fused multiply-adds, 1 / plane(1/w), the product), the offsets offset,
+// offset+1, ..., α from alpha[0..width) (null: 1), the facing, O_d and the
+// material. A run of n pixels, n below the width, is queued this way too:
+// the batch counts n lanes, and the next pixels queued or its padding
+// (PhongBatch::flush) write over the rest. So the columns have room past
+// the last lane, and the tile's arrays past its last pixel for α
+// (frame_buffers.h).
 template <class F>
-void queueRunLanes(const Interpolation& in, int px, int py, std::size_t offset, bool back, glm::vec3 baseColor, const CourseMaterial& material,
-                   const float* alpha, PhongLanes& lanes, std::size_t* offsets, int at) {
-  constexpr int n = static_cast<int>(sizeof(F) / sizeof(float));
+void queueRunLanes(const Interpolation& in, int px, int py, std::size_t offset, bool back, glm::vec3 baseColor,
+                   const CourseMaterial& material, const float* alpha, PhongLanes& lanes, std::size_t* offsets, int at) {
   alignas(64) static constexpr float kLane[16] = {0.0f, 1.0f, 2.0f, 3.0f, 4.0f, 5.0f, 6.0f, 7.0f, 8.0f, 9.0f, 10.0f, 11.0f, 12.0f, 13.0f, 14.0f, 15.0f};
   F lane;
   loadLanes(lane, kLane);
   const F x = F(static_cast<float>(px)) + lane, y(static_cast<float>(py));
   const auto planeAt = [&](const Plane& p) { return fusedMultiplyAdd(F(p.dady), y, fusedMultiplyAdd(F(p.dadx), x, F(p.a0))); };
   const F w = F(1.0f) / planeAt(in.oneOverWPlane());
-  const auto put = [&](float* column, F v) { storeLanes(column + at, v); };
+  const auto put = [&](float* column, F v) { storeLanesUnaligned(column + at, v); };
   for (int c = 0; c < 3; ++c) {
     put(lanes.P[c], planeAt(in.varyingPlane(c)) * w);
     put(lanes.N[c], planeAt(in.varyingPlane(3 + c)) * w);
@@ -44,9 +50,10 @@ void queueRunLanes(const Interpolation& in, int px, int py, std::size_t offset, 
   put(lanes.back, F(back ? 1.0f : 0.0f));
   put(lanes.ka, F(material.ka)), put(lanes.kd, F(material.kd)), put(lanes.ks, F(material.ks));
   put(lanes.n, F(material.shininess)), put(lanes.m, F(material.metallic));
-  if (alpha) std::copy_n(alpha, n, lanes.alpha + at);
-  else put(lanes.alpha, F(1.0f));
-  for (int k = 0; k < n; ++k) offsets[at + k] = offset + static_cast<std::size_t>(k);
+  F a(1.0f);
+  if (alpha) loadLanesUnaligned(a, alpha);
+  put(lanes.alpha, a);
+  for (int k = 0; k < kLaneCount<F>; ++k) offsets[at + k] = offset + static_cast<std::size_t>(k);
 }
 
 // Lanes [first, first + width of F) shaded; those below count written to the RGBA pixels at
@@ -60,7 +67,7 @@ void shadeLanes(const FrameInputs& frame, const ShadowMaps& maps, const PhongLan
     loadLanes(x, column + first);
     return x;
   };
-  const auto vec3 = [&](const float (&columns)[3][PhongLanes::kMost]) { return Vec3(lanes(columns[0]), lanes(columns[1]), lanes(columns[2])); };
+  const auto vec3 = [&](const float (&columns)[3][PhongLanes::kColumn]) { return Vec3(lanes(columns[0]), lanes(columns[1]), lanes(columns[2])); };
   const Vec3 P = vec3(in.P);
   // N = normalize(interpolated N), then -N on a back face (two-sided lighting; back is 0 or 1)
   const Vec3 unit = normalize3(vec3(in.N));
