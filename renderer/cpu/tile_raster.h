@@ -80,9 +80,10 @@ void partialBlock(const std::int64_t (&e)[3], const std::int64_t (&sx)[3], const
 #endif
 
 // fragment(px, py) for each covered pixel of the box, except that a row
-// wholly inside the triangle (every row of a block wholly inside, and a
-// block's row on an edge whose pixels all pass) goes to span(x0, x1, py) at
-// once (the depth tests run it four pixels at a time: depth_rows.h), and,
+// wholly inside the triangle (each row across a run of blocks wholly inside,
+// side by side, and a block's row on an edge whose pixels all pass) goes to
+// span(x0, x1, py) at once (the depth tests run it four pixels at a time:
+// depth_rows.h), and,
 // where SSE2 tests a block's rows eight pixels at once, a row of a block on
 // an edge to covered(bx, bits, py): bx the block's first column (a multiple
 // of 8), bit k of `bits` set where pixel bx + k is covered. The pixels of
@@ -103,6 +104,12 @@ void rasterizeBlocks(const SnappedTriangle& t, const PixelBox& box, Fragment&& f
   const int minX = box.minX, minY = box.minY, maxX = box.maxX, maxY = box.maxY;
   for (int by = minY & ~7; by <= maxY; by += 8) {
     const int y0 = std::max(by, minY), y1 = std::min(by + 7, maxY);
+    // Blocks wholly inside, side by side, go to span as one run per row (columns inside0..inside1):
+    // one depth-test call for a row of the tile instead of one per block.
+    int inside0 = 0, inside1 = -1;
+    const auto handOver = [&] {
+      for (int py = y0; py <= y1 && inside0 <= inside1; ++py) span(inside0, inside1, py);
+    };
     for (int bx = minX & ~7; bx <= maxX; bx += 8) {
       const int x0 = std::max(bx, minX), x1 = std::min(bx + 7, maxX);
       std::int64_t e[3];
@@ -117,7 +124,11 @@ void rasterizeBlocks(const SnappedTriangle& t, const PixelBox& box, Fragment&& f
       }
       if (outside) continue;
       if (inside) {
-        for (int py = y0; py <= y1; ++py) span(x0, x1, py);
+        if (inside0 > inside1 || inside1 + 1 != x0) {  // not next to the run (a convex triangle's inside blocks are, in a row of blocks)
+          handOver();
+          inside0 = x0;
+        }
+        inside1 = x1;
         continue;
       }
 #if defined(__SSE2__)
@@ -139,6 +150,7 @@ void rasterizeBlocks(const SnappedTriangle& t, const PixelBox& box, Fragment&& f
         e[2] += sy[2];
       }
     }
+    handOver();
   }
 }
 
