@@ -399,17 +399,44 @@ struct Shuffles<Float16> {
 };
 // loadPixels and storePixels on sixteen lanes: register k holds pixels k,
 // k + 4, k + 8 and k + 12 in its four quarters, as Float8's does in its halves.
+// Sixteen pixels side by side in the buffer (a run's, or runs' next to each
+// other) are four 64-byte loads or stores instead, their quarters swapped
+// into that order by swapQuarters.
+inline bool sixteenInARow(const std::size_t* offsets, int count) {
+  if (count < 16) return false;
+  const __m512i first = _mm512_set1_epi64(static_cast<long long>(offsets[0]));
+  const __m512i low = _mm512_add_epi64(first, _mm512_setr_epi64(0, 1, 2, 3, 4, 5, 6, 7));
+  const __m512i high = _mm512_add_epi64(low, _mm512_set1_epi64(8));
+  return (_mm512_cmpeq_epi64_mask(_mm512_loadu_si512(offsets), low) & _mm512_cmpeq_epi64_mask(_mm512_loadu_si512(offsets + 8), high)) == 0xFF;
+}
+// Quarter j of register i to quarter i of register j (its own inverse).
+inline void swapQuarters(Float16 (&p)[4]) {
+  const __m512 t0 = _mm512_shuffle_f32x4(p[0].v, p[1].v, 0x44), t1 = _mm512_shuffle_f32x4(p[0].v, p[1].v, 0xEE);
+  const __m512 t2 = _mm512_shuffle_f32x4(p[2].v, p[3].v, 0x44), t3 = _mm512_shuffle_f32x4(p[2].v, p[3].v, 0xEE);
+  p[0] = Float16(_mm512_shuffle_f32x4(t0, t2, 0x88)), p[1] = Float16(_mm512_shuffle_f32x4(t0, t2, 0xDD));
+  p[2] = Float16(_mm512_shuffle_f32x4(t1, t3, 0x88)), p[3] = Float16(_mm512_shuffle_f32x4(t1, t3, 0xDD));
+}
 inline void loadPixels(const float* rgba, const std::size_t* offsets, int count, Vec3x16& color, Float16& alpha) {
-  const auto at = [&](int k) { return k < count ? _mm_loadu_ps(rgba + 4 * offsets[k]) : _mm_setzero_ps(); };
   Float16 pixel[4];
-  for (int k = 0; k < 4; ++k)
-    pixel[k] = Float16(_mm512_insertf32x4(_mm512_insertf32x4(_mm512_insertf32x4(_mm512_castps128_ps512(at(k)), at(k + 4), 1), at(k + 8), 2), at(k + 12), 3));
+  if (sixteenInARow(offsets, count)) {
+    for (int k = 0; k < 4; ++k) pixel[k] = Float16(_mm512_loadu_ps(rgba + 4 * offsets[0] + 16 * k));
+    swapQuarters(pixel);
+  } else {
+    const auto at = [&](int k) { return k < count ? _mm_loadu_ps(rgba + 4 * offsets[k]) : _mm_setzero_ps(); };
+    for (int k = 0; k < 4; ++k)
+      pixel[k] = Float16(_mm512_insertf32x4(_mm512_insertf32x4(_mm512_insertf32x4(_mm512_castps128_ps512(at(k)), at(k + 4), 1), at(k + 8), 2), at(k + 12), 3));
+  }
   transposeQuarters(pixel);
   color = {pixel[0], pixel[1], pixel[2]}, alpha = pixel[3];
 }
 inline void storePixels(float* rgba, const std::size_t* offsets, int count, const Vec3x16& color, Float16 alpha) {
   Float16 pixel[4] = {color.x, color.y, color.z, alpha};
   transposeQuarters(pixel);
+  if (sixteenInARow(offsets, count)) {
+    swapQuarters(pixel);
+    for (int k = 0; k < 4; ++k) _mm512_storeu_ps(rgba + 4 * offsets[0] + 16 * k, pixel[k].v);
+    return;
+  }
   for (int k = 0; k < 4; ++k) {
     if (k < count) _mm_storeu_ps(rgba + 4 * offsets[k], _mm512_castps512_ps128(pixel[k].v));
     if (k + 4 < count) _mm_storeu_ps(rgba + 4 * offsets[k + 4], _mm512_extractf32x4_ps(pixel[k].v, 1));
