@@ -111,4 +111,17 @@ inline TakenRun frontRow(const Plane& z, int x0, int x1, int py, const float* de
   return taken;
 }
 
+#if defined(FACET_AVX512_LANES)
+// lessRow and frontRow sixteen pixels at a time, the same pixels and bits
+// (depth_rows_avx512.cpp; call only where widestLanes() is 16).
+void lessRowSixteen(const Plane& z, int x0, int x1, int py, float* depth, std::uint32_t* ids, std::uint32_t id);
+TakenRun frontRowSixteen(const Plane& z, int x0, int x1, int py, const float* depth, std::uint32_t* ids, std::uint32_t id);
+#endif
+
+// lessRow and frontRow for a frame shading `lanes` lanes: sixteen at a time
+// where that is 16 (depth_rows.cpp, which is built knowing whether the
+// sixteen-lane code is there).
+void lessRowOnLanes(int lanes, const Plane& z, int x0, int x1, int py, float* depth, std::uint32_t* ids, std::uint32_t id);
+TakenRun frontRowOnLanes(int lanes, const Plane& z, int x0, int x1, int py, const float* depth, std::uint32_t* ids, std::uint32_t id);
+
 }  // namespace facet::cpu

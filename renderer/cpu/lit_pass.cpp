@@ -324,7 +324,7 @@ void blendTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         },
         [&](int x0, int x1, int py) {  // a row of a block wholly inside: four depth tests at a time, the box grown once
           const int k0 = (py - r.y0) * kTileSize + (x0 - r.x0);
-          const TakenRun taken = frontRow(in.depthPlane(), x0, x1, py, &scratch.depth[k0], &scratch.fragment[k0], blended.id);
+          const TakenRun taken = frontRowOnLanes(lanes, in.depthPlane(), x0, x1, py, &scratch.depth[k0], &scratch.fragment[k0], blended.id);
           if (taken.first > taken.last) return;
           // α where it was taken; one α for the triangle without texture or COLOR_0, written over the whole
           // run (a pixel not taken keeps kNoTriangle, and its α is never read).
@@ -537,7 +537,7 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
                                   },
                                   [&](int x0, int x1, int py) {
                                     const int k = (py - r.y0) * kTileSize + (x0 - r.x0);
-                                    lessRow(interpolation.depthPlane(), x0, x1, py, &scratch.depth[k], &scratch.id[k], id);
+                                    lessRowOnLanes(buffers.lanes, interpolation.depthPlane(), x0, x1, py, &scratch.depth[k], &scratch.id[k], id);
                                   },
                                   [&](int bx, unsigned covered, int py) {  // bx .. bx+7 lie in the tile's row: tiles are whole blocks
                                     const int k = (py - r.y0) * kTileSize + (bx - r.x0);

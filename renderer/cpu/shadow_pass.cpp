@@ -81,7 +81,7 @@ void shadowPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, con
                                     float& stored = *texel(px, py);
                                     if (z < stored) stored = z;
                                   },
-                                  [&](int x0, int x1, int py) { lessRow(interpolation.depthPlane(), x0, x1, py, texel(x0, py), nullptr, 0); });
+                                  [&](int x0, int x1, int py) { lessRowOnLanes(buffers.lanes, interpolation.depthPlane(), x0, x1, py, texel(x0, py), nullptr, 0); });
                               return;
                             }
                             const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];

@@ -506,24 +506,28 @@ TEST_CASE("Phong batch: a width this CPU or build does not run is refused") {
   if (cpu::widestLanes() < 16) CHECK_THROWS_AS(cpu::PhongBatch(frame, maps, pixels.data(), 16), Error);
 }
 
-TEST_CASE("Depth rows: lessRow's four-lane test writes the depths and ids the one-pixel test writes") {
-  std::mt19937 random(31);
-  std::uniform_real_distribution<float> unit(-0.2f, 1.2f), slope(-0.01f, 0.01f);
-  for (int trial = 0; trial < 500; ++trial) {
-    const cpu::Plane z{unit(random), slope(random), slope(random)};
-    const int x0 = trial % 13, x1 = x0 + trial % 29, py = trial % 7;
-    float fast[64], plain[64];
-    std::uint32_t fastIds[64], plainIds[64];
-    for (int i = 0; i < 64; ++i) fast[i] = plain[i] = unit(random), fastIds[i] = plainIds[i] = 7;
-    if (trial % 11 == 0) fast[3] = plain[3] = std::numeric_limits<float>::quiet_NaN();  // a NaN depth keeps nothing out: !(z < NaN)
-    for (int px = x0; px <= x1; px += 3) fast[px - x0] = plain[px - x0] = cpu::depthAt(z, px, py);  // equal depths: LESS keeps the first
-    cpu::lessRow(z, x0, x1, py, fast, fastIds, 9);
-    for (int px = x0; px <= x1; ++px) {
-      const float d = cpu::depthAt(z, px, py);
-      if (d < plain[px - x0]) plain[px - x0] = d, plainIds[px - x0] = 9;
+TEST_CASE("Depth rows: lessRow's four- and sixteen-lane tests write the depths and ids the one-pixel test writes") {
+  for (const int lanes : {4, 16}) {
+    if (lanes > cpu::widestLanes()) continue;
+    CAPTURE(lanes);
+    std::mt19937 random(31);
+    std::uniform_real_distribution<float> unit(-0.2f, 1.2f), slope(-0.01f, 0.01f);
+    for (int trial = 0; trial < 500; ++trial) {
+      const cpu::Plane z{unit(random), slope(random), slope(random)};
+      const int x0 = trial % 13, x1 = x0 + trial % 29, py = trial % 7;
+      float fast[64], plain[64];
+      std::uint32_t fastIds[64], plainIds[64];
+      for (int i = 0; i < 64; ++i) fast[i] = plain[i] = unit(random), fastIds[i] = plainIds[i] = 7;
+      if (trial % 11 == 0) fast[3] = plain[3] = std::numeric_limits<float>::quiet_NaN();  // a NaN depth keeps nothing out: !(z < NaN)
+      for (int px = x0; px <= x1; px += 3) fast[px - x0] = plain[px - x0] = cpu::depthAt(z, px, py);  // equal depths: LESS keeps the first
+      cpu::lessRowOnLanes(lanes, z, x0, x1, py, fast, fastIds, 9);
+      for (int px = x0; px <= x1; ++px) {
+        const float d = cpu::depthAt(z, px, py);
+        if (d < plain[px - x0]) plain[px - x0] = d, plainIds[px - x0] = 9;
+      }
+      CHECK(std::memcmp(fast, plain, sizeof fast) == 0);  // and nothing past x1 written
+      CHECK(std::memcmp(fastIds, plainIds, sizeof fastIds) == 0);
     }
-    CHECK(std::memcmp(fast, plain, sizeof fast) == 0);
-    CHECK(std::memcmp(fastIds, plainIds, sizeof fastIds) == 0);
   }
 }
 
@@ -552,31 +556,35 @@ TEST_CASE("Depth rows: lessCovered writes the depths and ids the one-pixel test 
   CHECK(written > 500);  // the test wrote depths, not only kept them
 }
 
-TEST_CASE("Depth rows: frontRow's four-lane test takes the pixels the one-pixel test takes, and reports the first and last") {
-  std::mt19937 random(37);
-  std::uniform_real_distribution<float> unit(-0.2f, 1.2f), slope(-0.01f, 0.01f);
-  int none = 0, some = 0;
-  for (int trial = 0; trial < 500; ++trial) {
-    const cpu::Plane z{unit(random), slope(random), slope(random)};
-    const int x0 = trial % 13, x1 = x0 + trial % 29, py = trial % 7;
-    float depth[64], before[64];
-    std::uint32_t fastIds[64], plainIds[64];
-    for (int i = 0; i < 64; ++i) depth[i] = unit(random), fastIds[i] = plainIds[i] = 7;
-    if (trial % 11 == 0) depth[3] = std::numeric_limits<float>::quiet_NaN();  // a NaN depth keeps nothing out: !(z < NaN)
-    for (int px = x0; px <= x1; px += 3) depth[px - x0] = cpu::depthAt(z, px, py);  // equal depths: LESS does not take them
-    std::memcpy(before, depth, sizeof depth);
-    const cpu::TakenRun taken = cpu::frontRow(z, x0, x1, py, depth, fastIds, 9);
-    int first = x1 + 1, last = x0 - 1;
-    for (int px = x0; px <= x1; ++px)
-      if (cpu::depthAt(z, px, py) < depth[px - x0]) plainIds[px - x0] = 9, first = std::min(first, px), last = px;
-    CHECK(std::memcmp(fastIds, plainIds, sizeof fastIds) == 0);
-    CHECK(std::memcmp(depth, before, sizeof depth) == 0);  // read, not written
-    CHECK(taken.first == first);
-    CHECK(taken.last == last);
-    (first > last ? none : some) += 1;
+TEST_CASE("Depth rows: frontRow's four- and sixteen-lane tests take the pixels the one-pixel test takes, and report the first and last") {
+  for (const int lanes : {4, 16}) {
+    if (lanes > cpu::widestLanes()) continue;
+    CAPTURE(lanes);
+    std::mt19937 random(37);
+    std::uniform_real_distribution<float> unit(-0.2f, 1.2f), slope(-0.01f, 0.01f);
+    int none = 0, some = 0;
+    for (int trial = 0; trial < 500; ++trial) {
+      const cpu::Plane z{unit(random), slope(random), slope(random)};
+      const int x0 = trial % 13, x1 = x0 + trial % 29, py = trial % 7;
+      float depth[64], before[64];
+      std::uint32_t fastIds[64], plainIds[64];
+      for (int i = 0; i < 64; ++i) depth[i] = unit(random), fastIds[i] = plainIds[i] = 7;
+      if (trial % 11 == 0) depth[3] = std::numeric_limits<float>::quiet_NaN();  // a NaN depth keeps nothing out: !(z < NaN)
+      for (int px = x0; px <= x1; px += 3) depth[px - x0] = cpu::depthAt(z, px, py);  // equal depths: LESS does not take them
+      std::memcpy(before, depth, sizeof depth);
+      const cpu::TakenRun taken = cpu::frontRowOnLanes(lanes, z, x0, x1, py, depth, fastIds, 9);
+      int first = x1 + 1, last = x0 - 1;
+      for (int px = x0; px <= x1; ++px)
+        if (cpu::depthAt(z, px, py) < depth[px - x0]) plainIds[px - x0] = 9, first = std::min(first, px), last = px;
+      CHECK(std::memcmp(fastIds, plainIds, sizeof fastIds) == 0);  // and nothing past x1 written
+      CHECK(std::memcmp(depth, before, sizeof depth) == 0);  // read, not written
+      CHECK(taken.first == first);
+      CHECK(taken.last == last);
+      (first > last ? none : some) += 1;
+    }
+    CHECK(none > 10);  // rows with nothing taken and rows with pixels taken both occur
+    CHECK(some > 100);
   }
-  CHECK(none > 10);  // rows with nothing taken and rows with pixels taken both occur
-  CHECK(some > 100);
 }
 
 #if defined(__SSE2__)
