@@ -19,11 +19,7 @@ void PhongBatch::queueRun(int n, std::size_t offset, const Interpolation& in, in
 #if defined(FACET_AVX2_LANES)
   if (n > 4) return queueEightLanes(in, px, py, offset, back, baseColor, material, alpha, in_, offset_, count_);
 #endif
-#if defined(__SSE2__)
-  queueRunLanes<Float4>(in, px, py, offset, back, baseColor, material, alpha, in_, offset_, count_);
-#else
-  (void)n, (void)offset, (void)in, (void)px, (void)py, (void)back, (void)baseColor, (void)material, (void)alpha;  // one lane: addRun adds
-#endif
+  (void)n, (void)offset, (void)in, (void)px, (void)py, (void)back, (void)baseColor, (void)material, (void)alpha;  // four or fewer: addRun's
 }
 
 void PhongBatch::flush() {

@@ -92,7 +92,11 @@ class PhongBatch {
     }
     while (n > 0) {
       const int m = std::min(n, capacity_ - count_);
-      queueRun(m, offset, in, px, py, back, baseColor, material, alpha);
+#if defined(__SSE2__)
+      if (m <= 4) queueRunLanes<Float4>(in, px, py, offset, back, baseColor, material, alpha, in_, offset_, count_);  // inline: most runs
+      else
+#endif
+        queueRun(m, offset, in, px, py, back, baseColor, material, alpha);
       count_ += m;
       if (count_ == capacity_) flush();
       n -= m, px += m, offset += static_cast<std::size_t>(m);
@@ -114,7 +118,7 @@ class PhongBatch {
   std::size_t offset_[PhongLanes::kColumn];  // as a column: room for a run's store past the queue
   PhongLanes in_;
 
-  // n pixels of addRun's at lanes [count_, count_ + n), n ≤ capacity_ - count_ (phong_batch.cpp).
+  // n pixels of addRun's at lanes [count_, count_ + n), n ≤ capacity_ - count_, more than four (phong_batch.cpp).
   void queueRun(int n, std::size_t offset, const Interpolation& in, int px, int py, bool back, glm::vec3 baseColor, const CourseMaterial& material,
                 const float* alpha);
 };
