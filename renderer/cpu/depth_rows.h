@@ -1,6 +1,7 @@
 #pragma once
 // The LESS depth test over a run of pixels of one row of one triangle, four
-// pixels at a time where SSE2 is there: each lane's window z is depthAt's
+// pixels at a time where SSE2 is there (sixteen where the frame shades
+// sixteen lanes: lessRowOnLanes, frontRowOnLanes below): each lane's window z is depthAt's
 // (planeAt4: the same two fused multiply-adds; minps then maxps: the same
 // clamp, NaN to 1), compared and written as the one-pixel test does. For
 // the runs rasterizeBlocks hands over whole (tile_raster.h): an opaque

@@ -322,7 +322,7 @@ void blendTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         [&](int px, int py) {
           if (inFront(px, py)) reach(px, px, py);
         },
-        [&](int x0, int x1, int py) {  // a row of a block wholly inside: four depth tests at a time, the box grown once
+        [&](int x0, int x1, int py) {  // a row across blocks wholly inside: the depth tests four or sixteen at a time, the box grown once
           const int k0 = (py - r.y0) * kTileSize + (x0 - r.x0);
           const TakenRun taken = frontRowOnLanes(lanes, in.depthPlane(), x0, x1, py, &scratch.depth[k0], &scratch.fragment[k0], blended.id);
           if (taken.first > taken.last) return;

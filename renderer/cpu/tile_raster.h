@@ -82,8 +82,8 @@ void partialBlock(const std::int64_t (&e)[3], const std::int64_t (&sx)[3], const
 // fragment(px, py) for each covered pixel of the box, except that a row
 // wholly inside the triangle (each row across a run of blocks wholly inside,
 // side by side, and a block's row on an edge whose pixels all pass) goes to
-// span(x0, x1, py) at once (the depth tests run it four pixels at a time:
-// depth_rows.h), and,
+// span(x0, x1, py) at once (the depth tests run it four or sixteen pixels
+// at a time: depth_rows.h), and,
 // where SSE2 tests a block's rows eight pixels at once, a row of a block on
 // an edge to covered(bx, bits, py): bx the block's first column (a multiple
 // of 8), bit k of `bits` set where pixel bx + k is covered. The pixels of
