@@ -11,16 +11,13 @@
 #include "common/error.h"
 #include "common/json_text.h"
 #include "common/quote.h"
+#include "vocabulary/limits.h"
 
 namespace facet {
 namespace {
 
 using nlohmann::json;
 
-// A job file is a list of short lines; this bounds a mistaken huge file.
-constexpr std::uint64_t kMaxJobFileBytes = 64ull << 20;
-// A job nests a settings object, whose deepest keys sit 4 levels down.
-constexpr std::size_t kMaxJobDepth = 10;
 
 std::string keyName(std::string_view key) { return "key " + quoteInput(key); }
 

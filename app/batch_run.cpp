@@ -29,6 +29,7 @@
 #include "settings/settings_json.h"
 #if FACET_HAVE_GL
 #include "gl/gl_renderer.h"
+#include "vocabulary/limits.h"
 #endif
 
 namespace facet {
@@ -36,8 +37,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A file's bytes count toward its inputs hash; a glTF or a map is far below this.
-constexpr std::uint64_t kMaxHashedFileBytes = 2ull << 30;
 
 struct LoadedScene {
   Scene scene;

@@ -11,8 +11,8 @@
 
 #include "common/error.h"
 #include "common/stopwatch.h"
-#include "cpu/function_ref.h"
-#include "cpu/thread_pool.h"
+#include "common/function_ref.h"
+#include "common/thread_pool.h"
 #include "ray/camera_rays.h"
 #include "ray/traced_scene.h"
 #include "scene/memory_budget.h"
@@ -33,7 +33,7 @@ double median(std::vector<double> v) {
 }
 
 // trace(k) for every ray k, chunk by chunk on the pool; the milliseconds it took.
-double timed(cpu::ThreadPool& pool, std::size_t count, cpu::FunctionRef<void(std::size_t)> trace) {
+double timed(ThreadPool& pool, std::size_t count, FunctionRef<void(std::size_t)> trace) {
   const auto start = Clock::now();
   std::atomic<std::size_t> next{0};
   pool.run([&](int) {
@@ -178,7 +178,7 @@ class EmbreePeer {
 }  // namespace
 
 void printRayRates(const Scene& scene, const FrameInputs& frame, int threads, int frames) {
-  cpu::ThreadPool pool(threads);
+  ThreadPool pool(threads);
   std::vector<double> builds;
   std::unique_ptr<ray::TracedScene> traced;
   for (int i = 0; i < frames; ++i) {

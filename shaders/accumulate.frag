@@ -3,7 +3,7 @@
 // Anti-aliasing (renderer/PIPELINE.md, section 7, "Anti-aliasing"): one
 // sample's colour buffer added, premultiplied, into the sum of the samples
 // drawn before it, read at the pixel by framebuffer fetch. Mirror:
-// accumulate in renderer/cpu/resolve.cpp.
+// accumulate in renderer/shading/resolve.cpp.
 #include "blending.glsl"
 
 layout(binding = 8) uniform sampler2D linearColor;  // this sample's RGBA32F colour buffer (kResolveUnit)

@@ -1,7 +1,7 @@
 // Transparency's blending equations and the colour buffer's two ways of
 // holding a colour (renderer/PIPELINE.md, section 7, "Transparency"), each
 // product and sum rounded once in the order written. Mirror:
-// renderer/cpu/blending.h.
+// renderer/shading/blending.h.
 
 // A colour C with alpha a as the buffer holds it: (C, a) straight, (C·a, a) premultiplied.
 vec4 stored(vec3 color, float alpha, bool premultiplied) {

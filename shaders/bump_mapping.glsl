@@ -1,6 +1,6 @@
 // Bump mapping (renderer/PIPELINE.md, section 8, "Bump mapping"): the
 // course's perturbed normal from a height map's partial derivatives and the
-// surface's. Mirror: renderer/cpu/bump_mapping.h. Needs shading_math.glsl,
+// surface's. Mirror: renderer/shading/bump_mapping.h. Needs shading_math.glsl,
 // texture.glsl and normal_mapping.glsl (tangentFrame) before it.
 
 layout(binding = 7) uniform usampler2D bumpMap;  // grey bytes, read as data at level 0
@@ -11,7 +11,7 @@ float bumpHeight(vec2 st) {
   return sampleRegion(bumpMap, false, 0, ivec2(0, 0), size, true, 0, 0, st).r;
 }
 
-// N' = N + B_u·(N × P_t) - B_v·(N × P_s) before it is normalized (renderer/cpu/bump_mapping.h says how).
+// N' = N + B_u·(N × P_t) - B_v·(N × P_s) before it is normalized (renderer/shading/bump_mapping.h says how).
 vec3 bumped(vec3 N, vec4 tangent, vec2 st) {
   ivec2 size = textureSize(bumpMap, 0);
   precise float ds = 1.0 / float(size.x), dt = 1.0 / float(size.y);

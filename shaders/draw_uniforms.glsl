@@ -64,7 +64,7 @@ vec4 baseColorAt(Texcoords t, vec4 vertexColor, vec3 modelPoint) {
   // A procedural texture in place of the base colour texture (grey, alpha 1); frame.ambient.y is its scale k.
   O = O * proceduralGrey(FACET_PROCEDURAL, modelPoint, frame.ambient.y);
 #elif FACET_TEXTURED
-  // KHR_texture_transform: st' by the 2×3 matrix, the derivatives by its linear part (renderer/cpu/texture_sampling.h).
+  // KHR_texture_transform: st' by the 2×3 matrix, the derivatives by its linear part (renderer/shading/texture.h).
   vec3 a = baseColorTransform[0], b = baseColorTransform[1];
   vec2 st = setOf(t, baseColorSet);
   vec4 stDerivatives = derivativesOf(t, baseColorSet);
@@ -80,7 +80,7 @@ vec4 baseColorAt(Texcoords t, vec4 vertexColor, vec3 modelPoint) {
 
 // k_e·E: the emissive texture's RGB at its set of t, times k_e
 // (renderer/PIPELINE.md, section 5). Mirror: emissionAt in
-// renderer/cpu/texture_sampling.h. For draws with FACET_EMISSIVE_MAP.
+// renderer/shading/texture.h. For draws with FACET_EMISSIVE_MAP.
 vec3 emissionAt(Texcoords t) {
   precise vec3 e = material.emissive * sampleTexture(emissiveMap, mapsSrgb.z != 0, emissiveSampler, setOf(t, mapSets.z), derivativesOf(t, mapSets.z)).rgb;
   return e;

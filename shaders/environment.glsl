@@ -1,6 +1,6 @@
 // Environment mapping (renderer/PIPELINE.md, section 8): the cube map's
 // linear RGB in a direction, for the reflection k_r·I_r and the background.
-// Mirror: renderer/cpu/environment_mapping.h. Needs shading_math.glsl and texture.glsl before it.
+// Mirror: renderer/shading/environment.h. Needs shading_math.glsl and texture.glsl before it.
 
 layout(binding = 2) uniform usampler2D environmentMap;  // six square faces side by side, +x -x +y -y +z -z (GL_RGBA8UI), and their mips
 

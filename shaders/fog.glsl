@@ -1,7 +1,7 @@
 // The course's fog (renderer/PIPELINE.md, section 7, "Fog"): C = C_fog +
 // f·(C - C_fog) by the pixel's eye-space depth d; FACET_FOG is the mode
 // (0 none: compiled out, 1 linear, 2 exponential, 3 exponential2).
-// Mirror: renderer/cpu/fog.h. Needs frame_block.glsl and shading_math.glsl before it.
+// Mirror: renderer/shading/fog.h. Needs frame_block.glsl and shading_math.glsl before it.
 
 const float kLog2E = 1.44269502;  // log2 e as a float
 

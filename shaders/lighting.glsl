@@ -1,5 +1,5 @@
 // The course's illumination equation in GLSL.
-// Mirror: renderer/cpu/lighting.h — the same functions, in the same order,
+// Mirror: renderer/shading/lighting.h — the same functions, in the same order,
 // with the same names, arguments and float operations (shading_math.glsl).
 // Change one, change the other.
 //

@@ -1,6 +1,6 @@
 // glTF normal textures (renderer/PIPELINE.md, section 8, "Normal textures"):
 // the tangent-space normal of the texture turned into world space by the
-// pixel's tangent frame. Mirror: renderer/cpu/normal_mapping.h.
+// pixel's tangent frame. Mirror: renderer/shading/normal_mapping.h.
 // Needs shading_math.glsl, texture.glsl and draw_uniforms.glsl before it.
 
 // The pixel's unit tangent frame: T = normalize3(t - N·(N·t)), B = (w < 0 ? -1 : 1)·(N × T).

@@ -1,6 +1,6 @@
 // Procedural textures (renderer/PIPELINE.md, section 8): a checker and four
 // octaves of value noise of the model-space point.
-// Mirror: renderer/cpu/procedural.h — same functions, same order.
+// Mirror: renderer/shading/procedural.h — same functions, same order.
 
 const int kProceduralChecker = 1;  // settings' Procedural::Checker (Noise is 2)
 

@@ -2,7 +2,7 @@
 // The resolve (renderer/PIPELINE.md, section 7, "The colour buffer and the
 // resolve"): the lit pass's linear RGBA, read texel for texel, encoded
 // once into the RGBA8 image, straight (a premultiplied buffer's colour
-// divided by its alpha first). Mirror: renderer/cpu/resolve.cpp.
+// divided by its alpha first). Mirror: renderer/shading/resolve.cpp.
 #include "resolved.glsl"
 
 uniform bool premultiplied;  // the buffer holds C·a (blending=premultiplied, or a sum of samples)

@@ -1,6 +1,6 @@
 // The few functions the shading code builds on, in the float operations of
 // renderer/PIPELINE.md section 7 ("Arithmetic"). Mirror:
-// renderer/cpu/shading_math.h, the same names, the same operations in the
+// renderer/shading/shading_math.h, the same names, the same operations in the
 // same order. Only +, -, *, /, sqrt, floor, comparisons, selects and bit
 // casts, each exact in llvmpipe as in C++; every result is `precise` so that
 // the compiler keeps the order written (no rebalancing, factoring or
@@ -43,7 +43,7 @@ float minOne(float x) {
 }
 
 // x^y for the specular term: exp2(y*log2(x)) by the series of
-// renderer/cpu/shading_math.h (the comment there says how and how well).
+// renderer/shading/shading_math.h (the comment there says how and how well).
 const float kLog2Series[5] = float[5](2.88539004, 0.961796701, 0.577078044, 0.412198573, 0.3205989);
 const float kExp2Series[10] = float[10](1.0, 0.693147182, 0.240226507, 0.0555041097, 0.00961812865, 0.00133335579, 0.000154035297,
                                         1.52527336e-05, 1.32154867e-06, 1.01780863e-07);

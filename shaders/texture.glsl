@@ -1,7 +1,7 @@
 // Texture lookup by hand from integer texel reads, so that no hardware
 // filtering differs between backends: level of detail, the sampler's filters
 // and wraps (renderer/PIPELINE.md, section 8).
-// Mirror: renderer/cpu/texture_sampling.cpp. Needs shading_math.glsl and srgb.glsl before it.
+// Mirror: renderer/shading/texture.cpp. Needs shading_math.glsl and srgb.glsl before it.
 //
 // The texture is GL_RGBA8UI with the loader's mipmaps as its levels, read
 // through a usampler2D: bytes, decoded to linear by the shared table

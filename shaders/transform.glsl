@@ -1,6 +1,6 @@
 // Matrix times point in one fixed order, never fused into multiply-adds:
 //   M·(x, y, z, 1) = ((M[0]·x + M[1]·y) + M[2]·z) + M[3]
-// Mirror: renderer/cpu/vertex_math.h. With `precise`, llvmpipe computes the
+// Mirror: renderer/shading/transform.h. With `precise`, llvmpipe computes the
 // same roundings as the CPU backend, so clip coordinates agree bit for bit
 // and both backends snap vertices to the same sub-pixel positions.
 vec4 transformPoint(mat4 m, vec3 p) {

@@ -1,4 +1,5 @@
 #include "common/interrupt_cleanup.h"
+#include "vocabulary/limits.h"
 
 #include <atomic>
 #include <cerrno>
@@ -18,7 +19,6 @@ namespace {
 // by the OS's signal interface. Slots, not one path: a report folder is
 // guarded while the image file inside it is being written.
 constexpr int kSlots = 8;
-constexpr std::size_t kMaxPath = 4096;
 constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
 
 enum SlotState : int { kFree, kFilling, kHeld };
@@ -26,7 +26,7 @@ enum SlotState : int { kFree, kFilling, kHeld };
 struct Slot {
   std::atomic<int> state{kFree};
   InterruptCleanup::Kind kind = InterruptCleanup::Kind::File;
-  char path[kMaxPath] = {};
+  char path[kMaxPathBytes] = {};
 };
 static_assert(std::atomic<int>::is_always_lock_free, "the handler reads the slots' state");
 
@@ -100,7 +100,7 @@ void installHandler() {
 }  // namespace
 
 InterruptCleanup::InterruptCleanup(const std::string& path, Kind kind) {
-  if (path.empty() || path.size() >= kMaxPath || path.find('\0') != std::string::npos) return;
+  if (path.empty() || path.size() >= kMaxPathBytes || path.find('\0') != std::string::npos) return;
   installHandler();
   for (int i = 0; i < kSlots; ++i) {
     int expected = kFree;

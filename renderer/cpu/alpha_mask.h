@@ -1,27 +1,15 @@
 #pragma once
-// alphaMode MASK (renderer/PIPELINE.md, section 8): a fragment of a masked
-// material is kept when α = (factor.a · COLOR_0.a) · texel.a, each where
-// present, is at least the cutoff; a NaN α discards. Evaluated where the
-// z-buffer test is, before the fragment writes depth, so that what a mask
-// cuts away hides nothing behind it.
-// Mirror: alphaKept in shaders/draw_uniforms.glsl.
+// The alpha mask where the rasterizer meets it: α at a pixel of a triangle
+// from its interpolated varyings (shading/alpha_mask.h's rule), evaluated
+// where the z-buffer test is, before the fragment writes depth, so that what
+// a mask cuts away hides nothing behind it.
 #include "cpu/interpolation.h"
-#include "cpu/texture_sampling.h"
+#include "shading/alpha_mask.h"
+#include "shading/texture.h"
 #include "cpu/varyings.h"
 #include "pipeline/material_coefficients.h"
 
 namespace facet::cpu {
-
-// α from the texel (the base colour texture's sample, or null without one)
-// and the interpolated COLOR_0 alpha (null without one).
-inline float fragmentAlpha(const CourseMaterial& material, const float* vertexAlpha, const glm::vec4* texel) {
-  float alpha = material.baseAlpha;
-  if (vertexAlpha) alpha = alpha * *vertexAlpha;
-  if (texel) alpha = alpha * texel->a;
-  return alpha;
-}
-
-inline bool alphaKept(const CourseMaterial& material, float alpha) { return alpha >= material.alphaCutoff; }
 
 // α at pixel (px, py) of a triangle whose planes `in` has set up up to the
 // layout's vertex colour (`texture`: the base colour texture, null when the

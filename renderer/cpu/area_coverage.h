@@ -8,6 +8,8 @@
 
 #include <glm/vec2.hpp>
 
+#include "vocabulary/limits.h"
+
 namespace facet::cpu {
 
 // How a surface takes part in visibility: an opaque one hides what lies
@@ -32,10 +34,6 @@ struct AreaCell {
   glm::dvec2 centroid{0.0};
   std::uint32_t first = 0, count = 0;
 };
-
-// More cells than this in one pixel is refused: the scene is too fine for
-// the image size (each cell is shaded once per surface it holds).
-inline constexpr std::size_t kMaxAreaCells = 4096;
 
 // Cuts pixel (px, py) by the surfaces `overlapping` it (indices into
 // `surfaces`, in draw order; each index is also its draw order) and appends

@@ -2,7 +2,7 @@
 // Phase 2 of a pass (frame_buffers.h): clip, snap, cull and bin the
 // triangles [begin, end) of the frame's triangle list, in order.
 #include <cstddef>
-#include "cpu/function_ref.h"
+#include "common/function_ref.h"
 
 #include "cpu/frame_buffers.h"
 #include "pipeline/frame_inputs.h"

@@ -8,17 +8,17 @@
 
 #include "common/quote.h"
 #include "common/stopwatch.h"
-#include "cpu/environment_mapping.h"
+#include "shading/environment.h"
 #include "cpu/frame_buffers.h"
-#include "cpu/lighting.h"
+#include "shading/lighting.h"
 #include "cpu/passes.h"
-#include "cpu/lane_width.h"
+#include "common/lane_width.h"
 #include "cpu/reference/reference_renderer.h"
-#include "cpu/resolve.h"
+#include "shading/resolve.h"
 #include "cpu/volume_pass.h"
 #include "pipeline/antialiasing.h"
 #include "cpu/scanline_zbuffer.h"
-#include "cpu/thread_pool.h"
+#include "common/thread_pool.h"
 #include "pipeline/frame_checks.h"
 #include "pipeline/shadow_pass_key.h"
 #include "pipeline/stage_frames.h"
@@ -34,8 +34,8 @@ class CpuRenderer final : public Renderer {
  public:
   CpuRenderer(int threads, int lanes)
       : pool_(threads > 0 ? threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()))) {
-    buffers_.lanes = lanes > 0 ? lanes : cpu::widestLanes();
-    cpu::checkLanes(buffers_.lanes);
+    buffers_.lanes = lanes > 0 ? lanes : widestLanes();
+    checkLanes(buffers_.lanes);
   }
 
   std::string description() const override {
@@ -72,7 +72,7 @@ class CpuRenderer final : public Renderer {
     } else {  // anti-aliasing: a pass per sample, summed premultiplied (PIPELINE.md, section 7)
       for (std::size_t i = 0; i < frame.samples.size(); ++i) {
         drawPass(sampleFrame(frame, frame.samples[i]), nullptr);
-        cpu::accumulate(pool_, color_, frame.blending, sum_, i == 0);
+        accumulate(pool_, color_, frame.blending, sum_, i == 0);
       }
       result.timings.push_back({"lit pass (" + std::to_string(frame.samples.size()) + " samples)", millisecondsSince(start)});
     }
@@ -91,8 +91,8 @@ class CpuRenderer final : public Renderer {
     if (!resolvedByTile) {
       result.image = recycledImage();
       const auto resolveStart = std::chrono::steady_clock::now();
-      if (frame.samples.empty()) cpu::resolve(pool_, color_, frame.blending, 1, buffers_.lanes, result.image);
-      else cpu::resolve(pool_, sum_, Blending::Premultiplied, static_cast<int>(frame.samples.size()), buffers_.lanes, result.image);
+      if (frame.samples.empty()) resolve(pool_, color_, frame.blending, 1, buffers_.lanes, result.image);
+      else resolve(pool_, sum_, Blending::Premultiplied, static_cast<int>(frame.samples.size()), buffers_.lanes, result.image);
       result.timings.push_back({"resolve", millisecondsSince(resolveStart)});
     }
     if (frame.hsr == HiddenSurface::Scanline) {
@@ -183,9 +183,9 @@ class CpuRenderer final : public Renderer {
   }
 
   FrameCheck check_;
-  cpu::ThreadPool pool_;
+  ThreadPool pool_;
   cpu::FrameBuffers buffers_;
-  cpu::ShadowMaps maps_;
+  ShadowMaps maps_;
   ShadowPassKey mapsDrawn_;  // what maps_ holds the shadow maps of
   ColorBuffer color_;  // the lit pass's linear colours, kept from frame to frame
   ColorBuffer sum_;    // anti-aliasing: the samples' premultiplied sum

@@ -7,7 +7,7 @@ namespace facet {
 
 // The CPU reference rasterizer: the pipeline of renderer/PIPELINE.md in
 // software, covering the same pixels as llvmpipe. threads = 0: one per core.
-// lanes: pixels Phong's lighting takes at a time (cpu/lane_width.h), 8
+// lanes: pixels Phong's lighting takes at a time (common/lane_width.h), 8
 // (AVX2), 4 or 1; 0: the widest this CPU runs. Every width gives the same image.
 std::unique_ptr<Renderer> makeCpuRenderer(int threads = 0, int lanes = 0);
 

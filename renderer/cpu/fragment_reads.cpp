@@ -1,7 +1,7 @@
 #include "cpu/fragment_reads.h"
 
-#include "cpu/normal_mapping.h"
-#include "cpu/texture_sampling.h"
+#include "shading/normal_mapping.h"
+#include "shading/texture.h"
 #include "cpu/varyings.h"
 
 namespace facet::cpu {

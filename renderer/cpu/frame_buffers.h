@@ -21,7 +21,7 @@
 
 #include "cpu/clipper.h"
 #include "cpu/interpolation.h"
-#include "cpu/lighting.h"
+#include "shading/lighting.h"
 #include "cpu/line_raster.h"
 #include "cpu/triangle_setup.h"
 #include "image/color_buffer.h"

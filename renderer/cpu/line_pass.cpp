@@ -1,6 +1,6 @@
-#include "cpu/fog.h"
+#include "shading/fog.h"
 #include "cpu/line_pass.h"
-#include "cpu/blending.h"
+#include "shading/blending.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,18 +4,9 @@
 #include <atomic>
 
 #include "cpu/passes.h"
-#include "cpu/vertex_math.h"
+#include "shading/transform.h"
 
 namespace facet::cpu {
-
-void forEachRange(ThreadPool& pool, std::size_t n, FunctionRef<void(std::size_t, std::size_t, int)> work) {
-  const auto workers = static_cast<std::size_t>(pool.size());
-  pool.run([&](int w) {
-    const auto i = static_cast<std::size_t>(w);
-    const std::size_t begin = n * i / workers, end = n * (i + 1) / workers;
-    work(begin, end, w);  // an empty range too: phase 2 clears the worker's bins
-  });
-}
 
 void prepareFrame(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const FrameInputs& frame) {
   PassVertices& v = buffers.vertices;

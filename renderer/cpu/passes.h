@@ -9,18 +9,15 @@
 #include <vector>
 
 #include "cpu/frame_buffers.h"
-#include "cpu/function_ref.h"
-#include "cpu/shadow_maps.h"
-#include "cpu/thread_pool.h"
+#include "common/function_ref.h"
+#include "shading/shadow_maps.h"
+#include "common/thread_pool.h"
 #include "image/color_buffer.h"
 #include "image/image.h"
 #include "pipeline/frame_inputs.h"
 #include "scene/scene.h"
 
 namespace facet::cpu {
-
-// Splits [0, n) into one contiguous range per worker: work(begin, end, worker).
-void forEachRange(ThreadPool& pool, std::size_t n, FunctionRef<void(std::size_t, std::size_t, int)> work);
 
 // Hands the grid's tiles to the workers, each next tile to whichever worker
 // is free: work(worker, tile, its pixel rectangle).

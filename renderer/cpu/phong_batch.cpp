@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "cpu/blending.h"
+#include "shading/blending.h"
 
 namespace facet::cpu {
 

@@ -12,9 +12,9 @@
 #include <algorithm>
 #include <cstdint>
 
-#include "cpu/blending.h"
-#include "cpu/lane_width.h"
-#include "cpu/lighting.h"
+#include "shading/blending.h"
+#include "common/lane_width.h"
+#include "shading/lighting.h"
 #include "cpu/phong_lanes.h"
 #include "image/color_buffer.h"
 

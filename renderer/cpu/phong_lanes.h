@@ -2,10 +2,10 @@
 // What a Phong batch (phong_batch.h) shades on its lanes: the queued
 // pixels' inputs, one column per lane, and the shading of F's width of them
 // (Float4, Float8 or Float16), the same steps as one pixel's in lit_pass.cpp.
-#include "cpu/blending.h"
-#include "cpu/fog.h"
+#include "shading/blending.h"
+#include "shading/fog.h"
 #include "cpu/interpolation.h"
-#include "cpu/lighting.h"
+#include "shading/lighting.h"
 
 namespace facet::cpu {
 

@@ -9,9 +9,9 @@
 
 #include "common/error.h"
 #include "cpu/cpu_renderer.h"
-#include "cpu/lighting.h"
+#include "shading/lighting.h"
 #include "cpu/passes.h"
-#include "cpu/vertex_math.h"
+#include "shading/transform.h"
 #include "image/srgb.h"
 
 namespace facet {

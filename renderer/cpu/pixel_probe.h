@@ -8,7 +8,7 @@
 //
 //   I = k_e + k_a·I_a·O_d + Σ_lights S·f_att·(k_d·I_p·max(N·L, 0)·O_d + k_s·I_p·spec·O_s)
 //
-// computed by the CPU backend's own functions (cpu/lighting.h), then the
+// computed by the CPU backend's own functions (shading/lighting.h), then the
 // colour they sum to and the pixel the backend drew. What the viewer shows
 // for a clicked pixel and `facet render --probe X,Y` prints.
 #include <cstdint>
@@ -31,7 +31,7 @@ struct ProbedLight {
   glm::vec3 RorH{0.0f};        // R = 2(L·N)N - L (phong) or H = normalize(L + V) (blinn-phong)
   float specularBase = 0;      // R·V or N·H, before max(·, 0)^n
   float spec = 0;              // max(·, 0)^n
-  // The shadow test (cpu/lighting.h, shadowLookup and shadowFactor).
+  // The shadow test (shading/lighting.h, shadowLookup and shadowFactor).
   bool shadowMapped = false;   // the light has a shadow map
   bool outsideMap = false;     // P is read as lit without a read (behind the light, beyond its far plane)
   int face = 0, texelX = 0, texelY = 0;  // the face (0..5 for a point light) and texel holding (u, v)
@@ -61,7 +61,7 @@ struct PixelProbe {
   glm::vec3 ambient{0.0f};         // k_a·I_a·O_d
   std::vector<ProbedLight> lights;  // in FrameInputs order
   glm::vec3 sum{0.0f};             // I, linear: the terms above summed
-  glm::vec3 shaded{0.0f};          // I as the lit pass computes it (cpu/lighting.h, illuminate and shade)
+  glm::vec3 shaded{0.0f};          // I as the lit pass computes it (shading/lighting.h, illuminate and shade)
   Rgba8 encoded{};                 // `shaded` encoded to sRGB, as the resolve writes it
   Rgba8 drawn{};                   // the pixel the CPU backend drew
 };

@@ -23,26 +23,9 @@
 // semantics, so NaN becomes 1). A perspective-correct attribute is the plane
 // of a_i·(1/w_i), times 1/w_plane, where w_plane is the plane of the 1/w_i:
 // one division, one product.
-#include <cmath>
-
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-#if defined(__FMA__)
-#include <immintrin.h>
-#endif
+#include "shading/lanes.h"  // fusedMultiplyAdd, minX86, maxX86
 
 namespace facet::cpu {
-
-// a·b + c with one rounding. The rule is the fused operation; on CPUs with
-// FMA (llvmpipe fuses there) the build uses the instruction, elsewhere the C
-// library computes it exactly.
-inline float fusedMultiplyAdd(float a, float b, float c) { return std::fma(a, b, c); }
-
-// x86's minps / maxps on one value: (a < b) ? a : b and (a > b) ? a : b, so
-// a NaN in a gives b.
-inline float minX86(float a, float b) { return a < b ? a : b; }
-inline float maxX86(float a, float b) { return a > b ? a : b; }
 
 // The per-triangle part of the set-up.
 struct PlaneSetup {
@@ -86,18 +69,6 @@ inline Plane planeOf(const PlaneSetup& s, float a0, float a1, float a2) {
 }
 
 #if defined(__SSE2__)
-// fusedMultiplyAdd on four lanes.
-inline __m128 fusedMultiplyAdd4(__m128 a, __m128 b, __m128 c) {
-#if defined(__FMA__)
-  return _mm_fmadd_ps(a, b, c);
-#else
-  alignas(16) float x[4], y[4], z[4];
-  _mm_store_ps(x, a), _mm_store_ps(y, b), _mm_store_ps(z, c);
-  for (int k = 0; k < 4; ++k) x[k] = fusedMultiplyAdd(x[k], y[k], z[k]);
-  return _mm_load_ps(x);
-#endif
-}
-
 // Plane::at for the four pixels (px .. px+3, py), one per lane.
 inline __m128 planeAt4(const Plane& p, int px, int py) {
   const __m128 x = _mm_add_ps(_mm_set1_ps(static_cast<float>(px)), _mm_setr_ps(0.0f, 1.0f, 2.0f, 3.0f));

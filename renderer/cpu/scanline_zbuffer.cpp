@@ -7,7 +7,7 @@
 #include "cpu/fragment_reads.h"
 #include "cpu/interpolation.h"
 #include "cpu/passes.h"
-#include "cpu/texture_sampling.h"
+#include "shading/texture.h"
 #include "cpu/varyings.h"
 
 namespace facet::cpu {

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "cpu/frame_buffers.h"
-#include "cpu/thread_pool.h"
+#include "common/thread_pool.h"
 #include "pipeline/frame_inputs.h"
 #include "scene/scene.h"
 

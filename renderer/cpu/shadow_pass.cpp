@@ -7,10 +7,10 @@
 #include "cpu/depth_rows.h"
 #include "cpu/interpolation.h"
 #include "cpu/passes.h"
-#include "cpu/texture_sampling.h"
+#include "shading/texture.h"
 #include "cpu/tile_raster.h"
 #include "cpu/varyings.h"
-#include "cpu/vertex_math.h"
+#include "shading/transform.h"
 
 namespace facet::cpu {
 

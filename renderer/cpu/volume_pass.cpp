@@ -3,7 +3,7 @@
 
 #include <glm/mat4x4.hpp>
 
-#include "cpu/blending.h"
+#include "shading/blending.h"
 
 namespace facet::cpu {
 

@@ -14,7 +14,7 @@
 #include "common/error.h"
 #include "common/stopwatch.h"
 #include "gl/shader_variant.h"
-#include "cpu/blending.h"
+#include "shading/blending.h"
 #include "image/srgb.h"
 #include "pipeline/antialiasing.h"
 #include "pipeline/clip_volume.h"
@@ -331,8 +331,8 @@ std::vector<std::uint32_t> GlFrameRenderer::drawFragmentCounts(const FrameInputs
 DrawVariant GlFrameRenderer::drawVariant(const FrameInputs& frame, const FrameInstance& instance) const {
   const MeshBuffers& mesh = scene_.mesh(instance.mesh);
   const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
-  // A procedural texture takes the base colour texture's place (renderer/cpu/texture_sampling.h, baseColorTextureOf);
-  // shading=pbr alone reads the metallic-roughness and occlusion maps (renderer/cpu/physically_based.h, pbrSurfaceAt).
+  // A procedural texture takes the base colour texture's place (renderer/shading/texture.h, baseColorTextureOf);
+  // shading=pbr alone reads the metallic-roughness and occlusion maps (renderer/shading/physically_based.h, pbrSurfaceAt).
   // Each map only where the mesh has the texture coordinate set it reads.
   const auto reads = [&](const MaterialMap& map) { return map.texture >= 0 && mesh.hasSet(map.set); };
   const bool pbr = frame.shading == ShadingMode::Pbr;
@@ -341,7 +341,7 @@ DrawVariant GlFrameRenderer::drawVariant(const FrameInputs& frame, const FrameIn
           material.masked,
           pbr && reads(material.metallicRoughnessMap),
           pbr && reads(material.occlusionMap),
-          reads(material.emissiveMap),  // every mode: k_e·E (renderer/cpu/texture_sampling.h, emissionAt)
+          reads(material.emissiveMap),  // every mode: k_e·E (renderer/shading/texture.h, emissionAt)
           interpolatesNormals(frame.shading) && reads(material.normalMap) && mesh.tangents,
           frame.bump.map != nullptr && mesh.tangents,
           material.blended};
@@ -499,8 +499,8 @@ void GlFrameRenderer::litPass(const FrameInputs& frame, LitOutput output) {
     // One colour everywhere: a clear to the value background.frag would write at every pixel, stored
     // by the C++ mirror of blending.glsl (the same product), instead of a full-frame draw; encoded
     // as drawn, its levels by the CPU's resolve (each level / 255, which the RGBA8 target stores as that level).
-    const glm::vec4 held = cpu::stored(frame.background, frame.backgroundAlpha, frame.blending);
-    const Rgba8 encoded = encodePixel(cpu::unstored(held, frame.blending));  // resolved.glsl's rule
+    const glm::vec4 held = stored(frame.background, frame.backgroundAlpha, frame.blending);
+    const Rgba8 encoded = encodePixel(unstored(held, frame.blending));  // resolved.glsl's rule
     const glm::vec4 value = levels ? glm::vec4(encoded.r, encoded.g, encoded.b, encoded.a) / 255.0f : held;
     gl_.ClearNamedFramebufferfv(target.framebuffer(), GL_COLOR, 0, glm::value_ptr(value));
   } else {

@@ -6,17 +6,10 @@
 
 #include "image/image.h"
 #include "image/stored_channels.h"
-#include "settings/render_settings.h"
+
+#include "vocabulary/limits.h"
 
 namespace facet {
-
-// The largest PNG facet reads, checked from the header before anything is
-// decoded: the largest image facet renders. Each side at most kMaxImageSide,
-// and at most kMaxPngDecodedBytes for the RGBA samples at the file's bit
-// depth (4 bytes a pixel, 8 for 16-bit files), the largest buffer the
-// decoder builds: a 16384x16384 8-bit PNG fits, a 16-bit one up to 2^27 pixels.
-inline constexpr std::uint64_t kMaxPngDecodedBytes = 4ull * kMaxImageSide * kMaxImageSide;  // 1 GiB
-inline constexpr std::uint64_t kMaxPngFileBytes = 512ull << 20;
 
 // An 8-bit RGBA PNG of `image`, top row first. Throws facet::OutOfMemory.
 std::vector<std::uint8_t> encodePng(const Image& image, const std::string& name);

@@ -13,7 +13,7 @@
 #include <thread>
 
 #include "common/error.h"
-#include "cpu/denormals.h"  // header only: the mode the CPU backend and llvmpipe compute in
+#include "common/denormals.h"  // header only: the mode the CPU backend and llvmpipe compute in
 
 namespace facet {
 namespace {
@@ -21,8 +21,6 @@ namespace {
 // Indices stay at most 2^52, where double(n) is exact: birth times then
 // never decrease with n, and the search for the alive range is exact.
 constexpr std::uint64_t kMaxParticleIndex = std::uint64_t{1} << 52;
-// lifetime / step beyond this is refused: a particle's cost is bounded.
-constexpr double kMaxStepsPerParticle = 1e7;
 // The particles each lane group integrates in lockstep (one AVX register of floats).
 constexpr int kLanes = 8;
 // A worker costs more to start than this many particles do to integrate.
@@ -271,7 +269,7 @@ void integrate(const Job& job, std::uint64_t from, std::uint64_t to) {
 // flushed to zero, whatever mode its thread had: the same bits on any
 // thread, and no slow denormal arithmetic as a resting particle's speed decays.
 void runRange(const Job& job, std::uint64_t from, std::uint64_t to) {
-  const cpu::FlushDenormals flush;
+  const FlushDenormals flush;
   if (job.emitter->ground) integrate<true>(job, from, to);
   else integrate<false>(job, from, to);
 }

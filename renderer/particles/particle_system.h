@@ -10,11 +10,10 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "scene/emitter.h"
+#include "vocabulary/emitter.h"
+#include "vocabulary/limits.h"
 
 namespace facet {
-
-inline constexpr std::uint64_t kMaxParticles = 4'000'000;  // alive at once, over every emitter of a frame
 
 struct Particle {
   std::uint64_t index = 0;   // the n-th particle the emitter bore (born at startTime + n/rate)

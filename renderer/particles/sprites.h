@@ -11,7 +11,7 @@
 #include <glm/vec4.hpp>
 
 #include "image/image.h"
-#include "scene/emitter.h"
+#include "vocabulary/emitter.h"
 #include "scene/scene.h"
 #include "settings/render_settings.h"
 

@@ -16,12 +16,9 @@
 #include "pipeline/material_coefficients.h"
 #include "scene/scene.h"
 #include "settings/render_settings.h"
+#include "vocabulary/limits.h"
 
 namespace facet {
-
-// Vertices a frame draws over all its instances: the CPU backend refers to
-// them with 31 bits (the top bit marks a vertex the clipper made).
-inline constexpr std::size_t kMaxFrameVertices = std::size_t{1} << 31;
 
 struct FrameInstance {
   int mesh = 0;                   // index into Scene::meshes

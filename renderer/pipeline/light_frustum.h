@@ -7,7 +7,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "pipeline/view_setup.h"
-#include "scene/light.h"
+#include "vocabulary/light.h"
 
 namespace facet {
 

@@ -91,7 +91,7 @@ bool Bvh::intersect(const Ray& ray, Hit& hit) const {
   return nearest(ray, hit, [](const Hit&) { return true; });
 }
 
-bool Bvh::intersect(const Ray& ray, Hit& hit, cpu::FunctionRef<bool(const Hit&)> accept) const { return nearest(ray, hit, accept); }
+bool Bvh::intersect(const Ray& ray, Hit& hit, FunctionRef<bool(const Hit&)> accept) const { return nearest(ray, hit, accept); }
 
 template <class Visit>
 bool Bvh::anyHit(const Ray& ray, const Visit& visit) const {
@@ -130,6 +130,6 @@ bool Bvh::occluded(const Ray& ray) const {
   return anyHit(ray, [](const Hit&) { return true; });
 }
 
-void Bvh::forEachHit(const Ray& ray, cpu::FunctionRef<bool(const Hit&)> visit) const { anyHit(ray, visit); }
+void Bvh::forEachHit(const Ray& ray, FunctionRef<bool(const Hit&)> visit) const { anyHit(ray, visit); }
 
 }  // namespace facet::ray

@@ -22,11 +22,11 @@
 
 #include <glm/vec3.hpp>
 
-#include "cpu/function_ref.h"
+#include "common/function_ref.h"
 #include "ray/primitives.h"
 #include "ray/ray.h"
 
-namespace facet::cpu {
+namespace facet {
 class ThreadPool;
 }
 
@@ -67,18 +67,18 @@ class Bvh {
   // Builds over a copy of the primitives with the pool's workers. Throws
   // facet::Error when the counts overflow the node format
   // (checkPrimitiveCounts).
-  Bvh(const Primitives& primitives, cpu::ThreadPool& pool);
+  Bvh(const Primitives& primitives, ThreadPool& pool);
 
   // The nearest hit in (tMin, tMax), by nearer(); false when none.
   bool intersect(const Ray& ray, Hit& hit) const;
   // The nearest hit in (tMin, tMax) that `accept` takes, by nearer(): a
   // culled back face or what an alpha mask discards is looked through.
-  bool intersect(const Ray& ray, Hit& hit, cpu::FunctionRef<bool(const Hit&)> accept) const;
+  bool intersect(const Ray& ray, Hit& hit, FunctionRef<bool(const Hit&)> accept) const;
   // Whether anything is hit in (tMin, tMax); stops at the first hit found.
   bool occluded(const Ray& ray) const;
   // Every hit in (tMin, tMax), each primitive once, in no order, until
   // `visit` returns true: shadow rays through transmissive surfaces, depth complexity.
-  void forEachHit(const Ray& ray, cpu::FunctionRef<bool(const Hit&)> visit) const;
+  void forEachHit(const Ray& ray, FunctionRef<bool(const Hit&)> visit) const;
 
   const std::vector<BvhNode>& nodes() const { return nodes_; }
   // The primitive index of every slot, in leaf order.

@@ -16,8 +16,8 @@
 
 #include "common/error.h"
 #include "common/stopwatch.h"
-#include "cpu/denormals.h"
-#include "cpu/thread_pool.h"
+#include "common/denormals.h"
+#include "common/thread_pool.h"
 #include "ray/bvh.h"
 
 namespace facet::ray {
@@ -99,7 +99,7 @@ void addBins(const Bins& from, Bins& to) {
 // caller; the merges are unions and counts, exact in any order, so the result
 // does not depend on which worker took which chunk.
 template <class Work>
-void forChunks(cpu::ThreadPool& pool, std::size_t begin, std::size_t end, Work&& work) {
+void forChunks(ThreadPool& pool, std::size_t begin, std::size_t end, Work&& work) {
   std::atomic<std::size_t> next{begin};
   pool.run([&](int worker) {
     for (;;) {
@@ -110,7 +110,7 @@ void forChunks(cpu::ThreadPool& pool, std::size_t begin, std::size_t end, Work&&
   });
 }
 
-Summary summarise(const std::vector<Reference>& refs, std::size_t begin, std::size_t end, cpu::ThreadPool* pool) {
+Summary summarise(const std::vector<Reference>& refs, std::size_t begin, std::size_t end, ThreadPool* pool) {
   Summary s;
   if (pool && end - begin >= kParallelPassPrimitives) {
     std::vector<Summary> perWorker(static_cast<std::size_t>(pool->size()));
@@ -124,7 +124,7 @@ Summary summarise(const std::vector<Reference>& refs, std::size_t begin, std::si
   return s;
 }
 
-Bins bin(const std::vector<Reference>& refs, std::size_t begin, std::size_t end, int axis, float low, float high, cpu::ThreadPool* pool) {
+Bins bin(const std::vector<Reference>& refs, std::size_t begin, std::size_t end, int axis, float low, float high, ThreadPool* pool) {
   Bins bins;
   if (pool && end - begin >= kParallelPassPrimitives) {
     std::vector<Bins> perWorker(static_cast<std::size_t>(pool->size()));
@@ -142,7 +142,7 @@ Bins bin(const std::vector<Reference>& refs, std::size_t begin, std::size_t end,
 
 // Splits [begin, end) into [begin, middle) and [middle, end), reordering
 // it, and says on which axis; false when the range stays one leaf.
-bool split(std::vector<Reference>& refs, std::size_t begin, std::size_t end, int depth, const Summary& s, cpu::ThreadPool* pool,
+bool split(std::vector<Reference>& refs, std::size_t begin, std::size_t end, int depth, const Summary& s, ThreadPool* pool,
            std::size_t& middle, int& axis) {
   const std::size_t count = end - begin;
   if (count == 1) return false;
@@ -261,7 +261,7 @@ struct UpperTree {
   std::vector<Subtree> subtrees;
 };
 
-std::size_t buildUpper(std::vector<Reference>& refs, std::size_t begin, std::size_t end, int depth, cpu::ThreadPool& pool, UpperTree& tree) {
+std::size_t buildUpper(std::vector<Reference>& refs, std::size_t begin, std::size_t end, int depth, ThreadPool& pool, UpperTree& tree) {
   const std::size_t index = tree.nodes.size();
   tree.nodes.emplace_back();
   if (end - begin <= kSubtreePrimitives) {
@@ -306,12 +306,12 @@ void join(const UpperTree& tree, std::size_t upper, std::vector<BvhNode>& out) {
 
 // [SECTION] The constructor
 
-Bvh::Bvh(const Primitives& primitives, cpu::ThreadPool& pool) {
+Bvh::Bvh(const Primitives& primitives, ThreadPool& pool) {
   const auto start = std::chrono::steady_clock::now();
   checkPrimitiveCounts(primitives.triangleCorners.size(), primitives.spheres.size());
   // Every step of the build in one floating-point mode, the workers' (they
   // flush denormals, thread_pool.h), whichever thread runs it.
-  const cpu::FlushDenormals flush;
+  const FlushDenormals flush;
   const std::size_t count = primitives.count();
   triangleCount_ = static_cast<std::uint32_t>(primitives.triangleCount());
 

@@ -11,10 +11,10 @@
 #include "common/error.h"
 #include "common/quote.h"
 #include "common/stopwatch.h"
-#include "cpu/blending.h"
-#include "cpu/lane_width.h"
-#include "cpu/resolve.h"
-#include "cpu/thread_pool.h"
+#include "shading/blending.h"
+#include "common/lane_width.h"
+#include "shading/resolve.h"
+#include "common/thread_pool.h"
 #include "image/color_buffer.h"
 #include "pipeline/frame_checks.h"
 #include "ray/ray_tracer.h"
@@ -87,7 +87,7 @@ class RayRenderer final : public Renderer {
         const glm::vec2 offset = frame.ray.samples > 1 ? ray::pixelJitter(k, paths, sampler.uniform2())
                                                        : (frame.samples.empty() ? glm::vec2(0.0f) : frame.samples[static_cast<std::size_t>(k)]);
         const glm::vec4 held = tracers[static_cast<std::size_t>(k) % tracers.size()].pixel(x, y, offset, sampler, local);
-        sum = summed ? sum + cpu::premultipliedOf(held, Blending::Straight) : held;
+        sum = summed ? sum + premultipliedOf(held, Blending::Straight) : held;
       }
       color_.at(x, y) = sum;
     }, [&](const RayStatistics& local) {
@@ -97,7 +97,7 @@ class RayRenderer final : public Renderer {
     result.timings.push_back({"ray tracing" + (summed ? " (" + std::to_string(paths) + " paths a pixel)" : std::string()), millisecondsSince(start)});
     const auto resolveStart = std::chrono::steady_clock::now();
     result.image = recycledImage();
-    cpu::resolve(pool_, color_, summed ? Blending::Premultiplied : Blending::Straight, paths, cpu::widestLanes(), result.image);
+    resolve(pool_, color_, summed ? Blending::Premultiplied : Blending::Straight, paths, widestLanes(), result.image);
     result.timings.push_back({"resolve", millisecondsSince(resolveStart)});
     result.notes.push_back(statistics.summary());
     if (frame.hsr != HiddenSurface::ZBuffer)
@@ -164,7 +164,7 @@ class RayRenderer final : public Renderer {
     if (progress_) progress_(1.0);  // the last tile may have been another worker's
   }
 
-  cpu::ThreadPool pool_;
+  ThreadPool pool_;
   RenderProgress progress_;
   std::vector<FrameInputs> sliceFrames_;            // motion blur: the frame at each shutter time
   std::vector<std::unique_ptr<TracedScene>> slices_;  // and its primitives

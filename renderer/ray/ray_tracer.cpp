@@ -7,11 +7,11 @@
 
 #include <glm/geometric.hpp>
 
-#include "cpu/alpha_mask.h"
-#include "cpu/blending.h"
-#include "cpu/environment_mapping.h"
-#include "cpu/fog.h"
-#include "cpu/vertex_math.h"
+#include "shading/alpha_mask.h"
+#include "shading/blending.h"
+#include "shading/environment.h"
+#include "shading/fog.h"
+#include "shading/transform.h"
 #include "ray/camera_rays.h"
 #include "ray/optics.h"
 
@@ -81,7 +81,7 @@ bool RayTracer::nearestHit(const Ray& ray, bool primary, Hit& hit, bool throughB
     if (primary && scene_.instanceOf(frame_, candidate.primitive).cullBackFaces && !scene_.frontFacing(candidate, ray)) return false;
     const CourseMaterial& material = *scene_.drawOf(candidate.primitive).material;
     if (throughBlended && material.blended) return false;
-    return !material.masked || cpu::alphaKept(material, scene_.alphaAt(candidate, ray));
+    return !material.masked || alphaKept(material, scene_.alphaAt(candidate, ray));
   });
 }
 
@@ -98,7 +98,7 @@ float RayTracer::shadowFactor(const FrameLight& light, glm::vec3 P, glm::vec3 Ng
       direction = uniformCone(-l.direction, std::cos(l.radius * std::numbers::pi_v<float> / 180.0f), sampler.uniform2());
     } else {
       glm::vec3 a, b;
-      frameAround(cpu::normalize3(P - l.position), a, b);
+      frameAround(normalize3(P - l.position), a, b);
       const glm::vec2 d = diskPoint(sampler.uniform2());
       target = l.position + l.radius * (d.x * a + d.y * b);
     }
@@ -113,7 +113,7 @@ float RayTracer::shadowFactor(const FrameLight& light, glm::vec3 P, glm::vec3 Ng
     const CourseMaterial& material = *scene_.drawOf(hit.primitive).material;
     if (!material.castsShadow) return false;  // as the shadow maps leave it out
     // The shadow pass's alpha test (blended: transparency.shadowCutoff): what it discards casts nothing.
-    if ((material.masked || material.blended) && !cpu::alphaKept(material, scene_.alphaAt(hit, ray))) return false;
+    if ((material.masked || material.blended) && !alphaKept(material, scene_.alphaAt(hit, ray))) return false;
     S = material.transmission > 0.0f ? S * material.transmission : 0.0f;
     return !(S > 0.0f);  // an opaque surface ends the search
   });
@@ -127,15 +127,15 @@ glm::vec4 RayTracer::trace(const Ray& ray, const Path& path, RayStatistics& stat
   }
   Hit hit;
   if (!nearestHit(ray, path.primary, hit)) {
-    if (path.primary) return cpu::stored(cpu::backgroundAt(frame_, path.px, path.py, path.offset), frame_.backgroundAlpha, Blending::Straight);
-    const glm::vec3 D = cpu::normalize3(ray.direction);
-    return glm::vec4(frame_.environment.map ? cpu::environmentAt(*frame_.environment.map, D, 0) : frame_.background, 1.0f);
+    if (path.primary) return stored(backgroundAt(frame_, path.px, path.py, path.offset), frame_.backgroundAlpha, Blending::Straight);
+    const glm::vec3 D = normalize3(ray.direction);
+    return glm::vec4(frame_.environment.map ? environmentAt(*frame_.environment.map, D, 0) : frame_.background, 1.0f);
   }
-  const cpu::SurfaceDraw& base = scene_.drawOf(hit.primitive);
+  const SurfaceDraw& base = scene_.drawOf(hit.primitive);
   const CourseMaterial& material = *base.material;
   const glm::vec3 P = scene_.pointOf(hit, ray);
   const glm::vec3 Ng = scene_.geometricNormal(hit, P);
-  cpu::SurfacePoint p = scene_.surfaceAt(hit, ray, path.differentials);
+  SurfacePoint p = scene_.surfaceAt(hit, ray, path.differentials);
   const bool sphere = scene_.primitives().isSphere(hit.primitive);
   const FrameInstance& instance = scene_.instanceOf(frame_, hit.primitive);
 
@@ -145,12 +145,12 @@ glm::vec4 RayTracer::trace(const Ray& ray, const Path& path, RayStatistics& stat
   glm::vec3 kr{0.0f}, R{0.0f}, T{0.0f};
   float kTransmit = 0.0f;
   if (material.reflectivity > 0.0f || kt > 0.0f) {
-    const glm::vec3 D = cpu::normalize3(ray.direction);
+    const glm::vec3 D = normalize3(ray.direction);
     // The normal the rays turn about, facing the incoming ray (the geometric one where the interpolated one does not).
-    glm::vec3 N = interpolatesNormals(frame_.shading) && !sphere ? cpu::shadingNormal(base, p) : (p.front ? Ng : -Ng);
+    glm::vec3 N = interpolatesNormals(frame_.shading) && !sphere ? shadingNormal(base, p) : (p.front ? Ng : -Ng);
     if (!(glm::dot(N, D) < 0.0f)) N = glm::dot(Ng, D) < 0.0f ? Ng : -Ng;
     const float m = material.metallic;
-    kr = material.reflectivity * (glm::vec3(1.0f - m) + m * cpu::baseColorAt(base, p));
+    kr = material.reflectivity * (glm::vec3(1.0f - m) + m * baseColorAt(base, p));
     kTransmit = kt;
     if (kt > 0.0f) {
       // Snell's law from n1 into n2: entering through a front face, leaving through a back one.
@@ -196,7 +196,7 @@ glm::vec4 RayTracer::trace(const Ray& ray, const Path& path, RayStatistics& stat
 
   // The local term: a surface loses the diffuse share it reflects or transmits as a traced ray, k_a and
   // k_d times (1 - reflectivity) and (1 - k_t); its highlights stay. Where no ray is traced it keeps all of it.
-  cpu::SurfaceDraw draw = base;
+  SurfaceDraw draw = base;
   CourseMaterial shared;
   const float keep = (reflects ? 1.0f - material.reflectivity : 1.0f) * (transmits ? 1.0f - kt : 1.0f);
   if (keep < 1.0f) {
@@ -204,7 +204,7 @@ glm::vec4 RayTracer::trace(const Ray& ray, const Path& path, RayStatistics& stat
     shared.ka = shared.ka * keep;
     shared.kd = shared.kd * keep;
     draw.material = &shared;
-    draw.summed = cpu::laneMaterial(shared, draw.emissiveMap ? glm::vec3(0.0f) : shared.emissive);
+    draw.summed = laneMaterial(shared, draw.emissiveMap ? glm::vec3(0.0f) : shared.emissive);
   }
   TracedShadows shadows{this, Ng, &statistics, path.sampler};
   if (!interpolatesNormals(frame_.shading) && !sphere) {
@@ -213,15 +213,15 @@ glm::vec4 RayTracer::trace(const Ray& ray, const Path& path, RayStatistics& stat
     const float side = p.front ? 1.0f : -1.0f;
     if (frame_.shading == ShadingMode::Flat) {
       const glm::vec3 centroid = (corner[0] + corner[1] + corner[2]) / 3.0f;
-      p.lit = cpu::illuminate(frame_, shadows, draw.summed, centroid, side * Ng, cpu::viewVector<float>(frame_, centroid));
+      p.lit = illuminate(frame_, shadows, draw.summed, centroid, side * Ng, viewVector<float>(frame_, centroid));
     } else {
       const Mesh& mesh = *base.mesh;
       const std::uint32_t* index = &mesh.indices[scene_.primitive(hit.primitive).first];
       const float w[3] = {1.0f - hit.u - hit.v, hit.u, hit.v};
-      cpu::Illumination sum;
+      Illumination sum;
       for (int k = 0; k < 3; ++k) {
-        const glm::vec3 N = cpu::normalize3(cpu::transformDirection(instance.normalMatrix, mesh.normals[index[k]]));
-        const cpu::Illumination I = cpu::illuminate(frame_, shadows, draw.summed, corner[k], side * N, cpu::viewVector<float>(frame_, corner[k]));
+        const glm::vec3 N = normalize3(transformDirection(instance.normalMatrix, mesh.normals[index[k]]));
+        const Illumination I = illuminate(frame_, shadows, draw.summed, corner[k], side * N, viewVector<float>(frame_, corner[k]));
         sum.diffuse = sum.diffuse + w[k] * I.diffuse;
         sum.specular = sum.specular + w[k] * I.specular;
       }
@@ -229,9 +229,9 @@ glm::vec4 RayTracer::trace(const Ray& ray, const Path& path, RayStatistics& stat
     }
   } else if (!interpolatesNormals(frame_.shading)) {
     // A traced sphere has no vertices or facets: every mode lights it at the hit.
-    p.lit = cpu::illuminate(frame_, shadows, draw.summed, P, p.front ? p.normal : -p.normal, cpu::viewVector<float>(frame_, P));
+    p.lit = illuminate(frame_, shadows, draw.summed, P, p.front ? p.normal : -p.normal, viewVector<float>(frame_, P));
   }
-  glm::vec3 color = cpu::shadeSurface(draw, shadows, p);
+  glm::vec3 color = shadeSurface(draw, shadows, p);
 
   // The recursive terms k_r·I_r + k_t·I_t.
   Path next;
@@ -250,7 +250,7 @@ glm::vec4 RayTracer::trace(const Ray& ray, const Path& path, RayStatistics& stat
     next.medium = p.front ? material.absorption : glm::vec3(0.0f);  // into the medium, or out of it
     color = color + kTransmit * glm::vec3(trace(leaving(P, Ng, T), next, statistics));
   }
-  if (path.primary) color = cpu::fogged(frame_.fog, color, (frame_.eyeFromWorld * glm::vec4(P, 1.0f)).z);
+  if (path.primary) color = fogged(frame_.fog, color, (frame_.eyeFromWorld * glm::vec4(P, 1.0f)).z);
   glm::vec4 result(color, 1.0f);
   if (material.blended) {
     // Past a blended surface the same ray goes on; what lies behind is blended under it by the straight equation.
@@ -261,7 +261,7 @@ glm::vec4 RayTracer::trace(const Ray& ray, const Path& path, RayStatistics& stat
     onward.continuation = true;
     const float alpha = scene_.alphaAt(hit, ray);
     onward.weight = material.additive ? path.weight : path.weight * (1.0f - clampUnit(alpha));
-    result = cpu::blend(trace(behind, onward, statistics), color, alpha, Blending::Straight, material.additive);
+    result = blend(trace(behind, onward, statistics), color, alpha, Blending::Straight, material.additive);
   }
   // Beer's law over the distance travelled inside a medium.
   if (largest(path.medium) > 0.0f) {

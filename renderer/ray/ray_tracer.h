@@ -35,7 +35,7 @@ struct RayStatistics {
 };
 
 // A shadow ray's view of the scene, for the fragment stage's S
-// (cpu/lighting.h: illuminate calls shadowFactorLanes with it).
+// (shading/lighting.h: illuminate calls shadowFactorLanes with it).
 struct TracedShadows {
   const class RayTracer* tracer = nullptr;
   glm::vec3 geometricNormal{0.0f};  // of the surface the shadow rays leave (the offset's direction)

@@ -6,8 +6,8 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
-#include "cpu/alpha_mask.h"
-#include "cpu/vertex_math.h"
+#include "shading/alpha_mask.h"
+#include "shading/transform.h"
 
 namespace facet::ray {
 namespace {
@@ -38,7 +38,7 @@ std::optional<glm::vec2> planeBarycentrics(glm::vec3 p0, glm::vec3 p1, glm::vec3
 
 }  // namespace
 
-TracedScene::TracedScene(const Scene& scene, const FrameInputs& frame, bool spheres, cpu::ThreadPool& pool)
+TracedScene::TracedScene(const Scene& scene, const FrameInputs& frame, bool spheres, ThreadPool& pool)
     : scene_(&scene), frame_(&frame), sceneToken_(scene.identity.token()), spheres_(spheres) {
   std::uint32_t frameTriangle = 0;
   std::vector<TracedPrimitive> sphereRecords;  // each sphere's instance and its mesh's first triangle in the frame
@@ -51,7 +51,7 @@ TracedScene::TracedScene(const Scene& scene, const FrameInputs& frame, bool sphe
     const std::optional<float> scale = mesh.sphere && spheres ? uniformScale(instance.worldFromModel) : std::nullopt;
     if (scale) {
       TracedSphere s;
-      s.center = glm::vec3(cpu::transformPoint(instance.worldFromModel, glm::vec3(0.0f)));
+      s.center = glm::vec3(transformPoint(instance.worldFromModel, glm::vec3(0.0f)));
       s.radius = *scale;
       s.modelFromWorld = glm::inverse(instance.worldFromModel);
       sphereFrames_.push_back(s);
@@ -60,7 +60,7 @@ TracedScene::TracedScene(const Scene& scene, const FrameInputs& frame, bool sphe
       // The corners the rasterizers' vertex stage computes: TM·p in float.
       for (std::uint32_t t = 0; t < triangles; ++t) {
         for (std::uint32_t k = 0; k < 3; ++k)
-          primitives_.triangleCorners.push_back(glm::vec3(cpu::transformPoint(instance.worldFromModel, mesh.positions[mesh.indices[3 * t + k]])));
+          primitives_.triangleCorners.push_back(glm::vec3(transformPoint(instance.worldFromModel, mesh.positions[mesh.indices[3 * t + k]])));
         traced_.push_back({static_cast<std::uint32_t>(i), frameTriangle + t, 3 * t});
       }
     }
@@ -87,22 +87,22 @@ void TracedScene::bind(const Scene& scene, const FrameInputs& frame) {
   scene_ = &scene;
   frame_ = &frame;
   draws_.clear();
-  for (const FrameInstance& instance : frame.instances) draws_.push_back(cpu::surfaceDraw(scene, frame, instance));
+  for (const FrameInstance& instance : frame.instances) draws_.push_back(surfaceDraw(scene, frame, instance));
 }
 
 glm::vec3 TracedScene::geometricNormal(const Hit& hit, glm::vec3 P) const {
   if (primitives_.isSphere(hit.primitive)) {
     const glm::vec4 s = primitives_.spheres[hit.primitive - primitives_.triangleCount()];
-    return cpu::normalize3((P - glm::vec3(s)) / s.w);
+    return normalize3((P - glm::vec3(s)) / s.w);
   }
   const glm::vec3* c = &primitives_.triangleCorners[3 * static_cast<std::size_t>(hit.primitive)];
-  return cpu::normalize3(cpu::cross3(c[1] - c[0], c[2] - c[0]));
+  return normalize3(cross3(c[1] - c[0], c[2] - c[0]));
 }
 
 bool TracedScene::frontFacing(const Hit& hit, const Ray& ray) const {
   if (primitives_.isSphere(hit.primitive)) return glm::dot(geometricNormal(hit, pointOf(hit, ray)), ray.direction) < 0.0f;
   const glm::vec3* c = &primitives_.triangleCorners[3 * static_cast<std::size_t>(hit.primitive)];
-  return glm::dot(cpu::cross3(c[1] - c[0], c[2] - c[0]), ray.direction) < 0.0f;
+  return glm::dot(cross3(c[1] - c[0], c[2] - c[0]), ray.direction) < 0.0f;
 }
 
 glm::vec3 TracedScene::pointOf(const Hit& hit, const Ray& ray) const {
@@ -115,27 +115,27 @@ glm::vec3 TracedScene::pointOf(const Hit& hit, const Ray& ray) const {
 // The builtin sphere's texture coordinates (scene/primitives.cpp): s = θ/2π
 // with θ = atan2(x, z) in [0, 2π), t = φ/π with φ = acos(y), of the model-space direction.
 glm::vec2 TracedScene::sphereTexcoords(const TracedSphere& s, glm::vec3 P) const {
-  const glm::vec3 d = cpu::normalize3(glm::vec3(cpu::transformPoint(s.modelFromWorld, P)));
+  const glm::vec3 d = normalize3(glm::vec3(transformPoint(s.modelFromWorld, P)));
   float theta = std::atan2(d.x, d.z);
   if (theta < 0.0f) theta += 2.0f * std::numbers::pi_v<float>;
   return {theta / (2.0f * std::numbers::pi_v<float>), std::acos(std::clamp(d.y, -1.0f, 1.0f)) / std::numbers::pi_v<float>};
 }
 
-cpu::SurfacePoint TracedScene::surfaceAt(const Hit& hit, const Ray& ray, const RayDifferentials* differentials) const {
+SurfacePoint TracedScene::surfaceAt(const Hit& hit, const Ray& ray, const RayDifferentials* differentials) const {
   const TracedPrimitive& traced = traced_[hit.primitive];
   const FrameInstance& instance = frame_->instances[traced.instance];
   const Mesh& mesh = scene_->meshes[static_cast<std::size_t>(instance.mesh)];
-  cpu::SurfacePoint p;
+  SurfacePoint p;
   p.front = frontFacing(hit, ray);
   if (primitives_.isSphere(hit.primitive)) {
     const TracedSphere& s = sphereFrames_[hit.primitive - primitives_.triangleCount()];
     p.P = pointOf(hit, ray);
     p.normal = geometricNormal(hit, p.P);
-    p.model = glm::vec3(cpu::transformPoint(s.modelFromWorld, p.P));
+    p.model = glm::vec3(transformPoint(s.modelFromWorld, p.P));
     p.st[0] = p.st[1] = sphereTexcoords(s, p.P);
     // ∂P/∂s along the parallel, the bitangent down the meridian (increasing t).
-    const glm::vec3 m = cpu::normalize3(p.model);
-    p.tangent = glm::vec4(cpu::normalize3(cpu::transformDirection(glm::mat3(instance.worldFromModel), glm::vec3(m.z, 0.0f, -m.x))), -1.0f);
+    const glm::vec3 m = normalize3(p.model);
+    p.tangent = glm::vec4(normalize3(transformDirection(glm::mat3(instance.worldFromModel), glm::vec3(m.z, 0.0f, -m.x))), -1.0f);
     if (differentials) {
       // The neighbouring rays met on the tangent plane, their points read as directions from the centre.
       const auto texcoordsThrough = [&](const Ray& r, glm::vec2& st) {
@@ -164,11 +164,11 @@ cpu::SurfacePoint TracedScene::surfaceAt(const Hit& hit, const Ray& ray, const R
     return sum + w[2] * value(index[2]);
   };
   p.P = pointOf(hit, ray);
-  p.normal = weighted([&](std::uint32_t i) { return cpu::normalize3(cpu::transformDirection(instance.normalMatrix, mesh.normals[i])); });
+  p.normal = weighted([&](std::uint32_t i) { return normalize3(transformDirection(instance.normalMatrix, mesh.normals[i])); });
   p.model = weighted([&](std::uint32_t i) { return mesh.positions[i]; });
   if (!mesh.colors.empty()) p.color = weighted([&](std::uint32_t i) { return mesh.colors[i]; });
   if (!mesh.tangents.empty()) {
-    const glm::vec3 T = weighted([&](std::uint32_t i) { return cpu::transformDirection(glm::mat3(instance.worldFromModel), glm::vec3(mesh.tangents[i])); });
+    const glm::vec3 T = weighted([&](std::uint32_t i) { return transformDirection(glm::mat3(instance.worldFromModel), glm::vec3(mesh.tangents[i])); });
     p.tangent = glm::vec4(T, mesh.tangents[index[0]].w);
   }
   for (int set = 0; set < 2; ++set) {
@@ -193,7 +193,7 @@ float TracedScene::alphaAt(const Hit& hit, const Ray& ray) const {
   // Only what α reads (it runs inside traversals, for each masked or blended candidate): the base
   // colour texture's coordinates and COLOR_0's alpha at the hit, weighted as surfaceAt weights them.
   const TracedPrimitive& traced = traced_[hit.primitive];
-  const cpu::SurfaceDraw& draw = draws_[traced.instance];
+  const SurfaceDraw& draw = draws_[traced.instance];
   const Mesh& mesh = *draw.mesh;
   const int set = draw.material->baseColorSet;
   glm::vec2 st{0.0f};
@@ -208,8 +208,8 @@ float TracedScene::alphaAt(const Hit& hit, const Ray& ray) const {
     if (draw.colored) vertexAlpha = (w[0] * mesh.colors[index[0]].a + w[1] * mesh.colors[index[1]].a) + w[2] * mesh.colors[index[2]].a;
   }
   glm::vec4 texel{1.0f};
-  if (draw.texture) texel = cpu::sampleBaseColorTexture(*draw.texture, *draw.material, st, glm::vec4(0.0f));
-  return cpu::fragmentAlpha(*draw.material, draw.colored ? &vertexAlpha : nullptr, draw.texture ? &texel : nullptr);
+  if (draw.texture) texel = sampleBaseColorTexture(*draw.texture, *draw.material, st, glm::vec4(0.0f));
+  return fragmentAlpha(*draw.material, draw.colored ? &vertexAlpha : nullptr, draw.texture ? &texel : nullptr);
 }
 
 std::size_t TracedScene::bytes() const {

@@ -3,7 +3,7 @@
 // every instance's world triangles, the rasterizers' corners, or a sphere in
 // place of the builtin sphere's; which instance and which of its mesh's
 // triangles each primitive is; the BVH over them; and what a hit point
-// carries for the fragment stage (cpu/surface_shading.h).
+// carries for the fragment stage (shading/surface_shading.h).
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -11,8 +11,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "cpu/surface_shading.h"
-#include "cpu/thread_pool.h"
+#include "shading/surface_shading.h"
+#include "common/thread_pool.h"
 #include "pipeline/frame_inputs.h"
 #include "ray/bvh.h"
 #include "ray/primitives.h"
@@ -49,7 +49,7 @@ class TracedScene {
   // The frame's primitives and their BVH, built on `pool`. With `spheres`,
   // an instance of a sphere mesh (Mesh::sphere) whose TM scales alike on
   // every axis is one sphere instead of its triangles.
-  TracedScene(const Scene& scene, const FrameInputs& frame, bool spheres, cpu::ThreadPool& pool);
+  TracedScene(const Scene& scene, const FrameInputs& frame, bool spheres, ThreadPool& pool);
 
   // Whether this was built from `scene` and the instances of `frame` as they are now.
   bool builtFrom(const Scene& scene, const FrameInputs& frame, bool spheres) const;
@@ -61,7 +61,7 @@ class TracedScene {
   const Bvh& bvh() const { return bvh_; }
   const TracedPrimitive& primitive(std::uint32_t p) const { return traced_[p]; }
   const FrameInstance& instanceOf(const FrameInputs& frame, std::uint32_t p) const { return frame.instances[traced_[p].instance]; }
-  const cpu::SurfaceDraw& drawOf(std::uint32_t p) const { return draws_[traced_[p].instance]; }
+  const SurfaceDraw& drawOf(std::uint32_t p) const { return draws_[traced_[p].instance]; }
 
   // The unit geometric normal at a hit: (p1 - p0) × (p2 - p0) of a triangle's world corners, (P - C)/r on a sphere.
   glm::vec3 geometricNormal(const Hit& hit, glm::vec3 P) const;
@@ -73,7 +73,7 @@ class TracedScene {
   // What the fragment stage reads at the hit: world position and normal,
   // tangent, texture coordinates (with their derivatives from `differentials`
   // where given, else 0: level 0), COLOR_0, model position, the side seen.
-  cpu::SurfacePoint surfaceAt(const Hit& hit, const Ray& ray, const RayDifferentials* differentials) const;
+  SurfacePoint surfaceAt(const Hit& hit, const Ray& ray, const RayDifferentials* differentials) const;
 
   // α of a masked or blended material at the ray's hit (alpha_mask.h's product, texture read at level 0).
   float alphaAt(const Hit& hit, const Ray& ray) const;
@@ -92,7 +92,7 @@ class TracedScene {
   Primitives primitives_;
   std::vector<TracedPrimitive> traced_;
   std::vector<TracedSphere> sphereFrames_;
-  std::vector<cpu::SurfaceDraw> draws_;  // per instance
+  std::vector<SurfaceDraw> draws_;  // per instance
   Bvh bvh_;
 };
 

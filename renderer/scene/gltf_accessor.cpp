@@ -1,4 +1,5 @@
 #include "scene/gltf_accessor.h"
+#include "vocabulary/limits.h"
 
 #include <cstring>
 #include <algorithm>
@@ -9,10 +10,6 @@
 
 namespace facet {
 namespace {
-
-// No accessor in a file we accept holds more elements than this: it keeps a
-// hostile count from turning into a huge allocation.
-constexpr std::uint64_t kMaxAccessorCount = 1ull << 28;
 
 std::string name(int accessor) { return "accessors[" + std::to_string(accessor) + "]"; }
 

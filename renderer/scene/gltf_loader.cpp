@@ -39,18 +39,10 @@
 #include "scene/vertex_tangents.h"
 #include "settings/settings_json.h"
 #include "settings/render_settings.h"
+#include "vocabulary/limits.h"
 
 namespace facet {
 namespace {
-
-// [SECTION] Limits
-// Beyond these a file is refused with a message instead of a huge allocation
-// or a deep recursion. Memory is priced against kSceneMemoryBudget and
-// kFrameMemoryBudget (settings/render_settings.h) before it is allocated.
-constexpr std::uint64_t kMaxFileBytes = 1ull << 30;     // .gltf/.glb and each external buffer
-constexpr int kMaxJsonDepth = 64;                       // glTF needs about 8
-constexpr int kMaxNodeDepth = 256;                      // node hierarchy
-constexpr int kMaxTextureSide = 16384;                  // texture width/height
 
 using Warnings = std::vector<std::string>;
 
@@ -72,7 +64,7 @@ int jsonDepth(const char* text, std::size_t length) {
       inString = true;
     } else if (c == '{' || c == '[') {
       deepest = std::max(deepest, ++depth);
-      if (deepest > kMaxJsonDepth) return deepest;
+      if (deepest > kMaxGltfJsonDepth) return deepest;
     } else if (c == '}' || c == ']') {
       --depth;
     }
@@ -113,7 +105,7 @@ bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std:
     return false;
   }
   try {
-    const std::string bytes = readFile(canonical.string(), kMaxFileBytes);
+    const std::string bytes = readFile(canonical.string(), kMaxGltfFileBytes);
     out->assign(bytes.begin(), bytes.end());
     folder->read.push_back(canonical.string());
     return true;
@@ -886,8 +878,8 @@ struct NodeWalker {
     }
     if (visited[n]) throw Error(at("nodes", n) + ": is reached twice in the node hierarchy (NODE_PARENT_OVERRIDE)");
     visited[n] = 1;
-    if (depth > kMaxNodeDepth) {
-      warnings.push_back(at("nodes", n) + ": deeper than " + std::to_string(kMaxNodeDepth) + " levels; its subtree is skipped");
+    if (depth > kMaxGltfNodeDepth) {
+      warnings.push_back(at("nodes", n) + ": deeper than " + std::to_string(kMaxGltfNodeDepth) + " levels; its subtree is skipped");
       return;
     }
     const tinygltf::Node& node = model.nodes[n];
@@ -1111,7 +1103,7 @@ std::string tinygltfLine(std::string text) {
 
 Scene loadGltf(const std::string& path) {
   namespace fs = std::filesystem;
-  const std::string bytes = readFile(path, kMaxFileBytes);
+  const std::string bytes = readFile(path, kMaxGltfFileBytes);
   std::error_code ec;
   const std::string folder = fs::weakly_canonical(fs::absolute(path).parent_path(), ec).string();
   Scene scene = loadGltfFromMemory(bytes, path, folder.empty() ? "/" : folder);
@@ -1124,14 +1116,14 @@ Scene loadGltfFromMemory(const std::string& bytes, const std::string& path, cons
   const std::string extension = fs::path(path).extension().string();
   const GltfLayout layout = gltfLayout(path, bytes, extension == ".glb" || extension == ".GLB");
   const std::string_view json = std::string_view(bytes).substr(layout.jsonOffset, layout.jsonLength);
-  if (jsonDepth(json.data(), json.size()) > kMaxJsonDepth)
-    throw Error(path + ": JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+  if (jsonDepth(json.data(), json.size()) > kMaxGltfJsonDepth)
+    throw Error(path + ": JSON nested deeper than " + std::to_string(kMaxGltfJsonDepth) + " levels");
   Warnings warnings;
   std::string repaired;  // the bytes tinygltf parses when the document or the GLB layout had to change
   {
     nlohmann::json document = parseGltfJson(path, json);
     checkRequiredExtensions(path, document);
-    checkGltfDocument(path, document, assetFolder, kMaxFileBytes);
+    checkGltfDocument(path, document, assetFolder, kMaxGltfFileBytes);
     const bool changed = removeChannelsWithoutNode(document, warnings);
     const std::string_view bin = layout.hasBin ? std::string_view(bytes).substr(layout.binOffset, layout.binLength) : std::string_view();
     if (changed) repaired = layout.binary ? glbBytes(document.dump(), bin) : document.dump();

@@ -4,7 +4,7 @@
 
 #include "common/error.h"
 #include "scene/cornell_box.h"
-#include "volume/load_volume.h"
+#include "scene/volume.h"
 #include "scene/default_scene.h"
 #include "scene/gltf_loader.h"
 #include "scene/primitives.h"

@@ -16,10 +16,11 @@
 #include "image/image.h"
 #include "image/mipmap.h"
 #include "scene/animation.h"
-#include "scene/emitter.h"
-#include "scene/light.h"
-#include "volume/transfer_function.h"
-#include "volume/volume.h"
+#include "vocabulary/emitter.h"
+#include "vocabulary/enums.h"
+#include "vocabulary/light.h"
+#include "scene/transfer_function.h"
+#include "scene/volume.h"
 
 namespace facet {
 
@@ -149,7 +150,6 @@ struct EnvironmentMap {
   const Image& level(int k) const { return k == 0 ? faces : mips[static_cast<std::size_t>(k - 1)]; }
 };
 
-enum class ProjectionKind { Perspective, Parallel, Count };
 
 // A camera as a scene file gives it. Its angle of view is vertical, as in
 // glTF; pipeline/camera turns it into the course's horizontal half-angle.

@@ -12,62 +12,14 @@
 
 #include <glm/vec3.hpp>
 
-#include "scene/emitter.h"
-#include "scene/light.h"
-#include "scene/scene.h"
+#include "vocabulary/emitter.h"
+#include "vocabulary/enums.h"
+#include "vocabulary/light.h"
+#include "vocabulary/limits.h"
 
 namespace facet {
 
-// The limits of a frame, each written once; the field table, the command
-// line, the frame checks (pipeline/frame_checks.h) and the OpenGL backend's
-// uniform block read them here.
-inline constexpr int kMaxImageSide = 16384;       // pixels, each side (llvmpipe's largest render target)
-inline constexpr int kMinShadowMapSize = 16;      // S
-inline constexpr int kMaxShadowMapSize = 8192;    // S
-inline constexpr int kMaxPcfRadius = 8;           // r
-inline constexpr std::size_t kMaxLights = 8;      // lights a frame shades; a scene's others are dropped with a warning
-
-// Memory, priced before anything is allocated (scene/memory_budget.h), so
-// that a small file cannot take gigabytes. The scene budget holds what the
-// glTF loader keeps of a scene: vertices, normals, texture coordinates,
-// indices and decoded textures (from each image's header, before decoding).
-// The frame budget holds what a frame works in: the vertex and triangle
-// buffers of every instance (the CPU backend's, the larger) and the shadow
-// maps (S² floats per face, six faces per point light; 8 point lights at
-// the default S = 2048 take 768 MiB, so the defaults fit). A file or frame
-// that needs more is refused with a line naming what needs it.
-inline constexpr std::uint64_t kSceneMemoryBudget = std::uint64_t{1} << 30;   // bytes
-inline constexpr std::uint64_t kFrameMemoryBudget = std::uint64_t{1} << 30;   // bytes
-// The largest world coordinate a scene may place a vertex, light or camera
-// at: the pipeline squares distances in float (the projection's N·F, the
-// attenuation's d²), which overflows past 1.8e19. Beyond it the loader
-// drops what it placed there, with a warning.
-inline constexpr float kMaxWorldCoordinate = 1e18f;
-
-enum class ShadingMode { Flat, Gouraud, Phong, Pbr, Count };
-// Phong and pbr interpolate the world position and normal and light each pixel.
-constexpr bool interpolatesNormals(ShadingMode mode) { return mode == ShadingMode::Phong || mode == ShadingMode::Pbr; }
-inline constexpr std::array<std::string_view, static_cast<int>(ShadingMode::Count)> kShadingModeNames = {"flat", "gouraud", "phong", "pbr"};
-
-enum class SpecularModel { Phong, BlinnPhong, Count };
-inline constexpr std::array<std::string_view, static_cast<int>(SpecularModel::Count)> kSpecularModelNames = {"phong", "blinn-phong"};
-
-inline constexpr std::array<std::string_view, static_cast<int>(ProjectionKind::Count)> kProjectionKindNames = {"perspective", "parallel"};
-
-// auto: the scene's own (its first camera / its lights), or, when it has none,
-// fitted to the scene's bounding sphere. manual: exactly the values written here.
-enum class Source { Auto, Manual, Count };
-inline constexpr std::array<std::string_view, static_cast<int>(Source::Count)> kSourceNames = {"auto", "manual"};
-
-// auto: each texture's glTF sampler (REPEAT, bilinear and trilinear where
-// the file gives none); nearest, bilinear, trilinear: that filter for every
-// texture, magnified and minified (wraps stay the sampler's).
-enum class TextureFilter { Auto, Nearest, Bilinear, Trilinear, Count };
-inline constexpr std::array<std::string_view, static_cast<int>(TextureFilter::Count)> kTextureFilterNames = {"auto", "nearest", "bilinear",
-                                                                                                            "trilinear"};
-
 // The course's environment (reflection) mapping (renderer/PIPELINE.md, section 8).
-inline constexpr std::size_t kMaxSettingsPathBytes = 4096;  // a file name a setting holds
 struct EnvironmentSettings {
   std::string map;             // a cube map PNG (six square faces side by side); empty: none
   float reflectivity = 0.25f;  // k_r of k_r·I_r
@@ -93,11 +45,6 @@ struct CameraSettings {
   float focusDistance = 0.0f;             // eye depth in focus, world units; 0: autofocus on the image's centre
   float shutter = 0.0f;                   // seconds the shutter stays open from `time` (motion blur); 0: an instant
 };
-
-// The course's procedural mapping (renderer/PIPELINE.md, section 8): a
-// pattern of the model-space surface point in place of every base colour texture.
-enum class Procedural { None, Checker, Noise, Count };
-inline constexpr std::array<std::string_view, static_cast<int>(Procedural::Count)> kProceduralNames = {"none", "checker", "noise"};
 
 // glTF materials carry no k_a, k_d, k_s, n; pipeline/material_coefficients
 // derives them. A value set here overrides the derived one for every material.
@@ -125,7 +72,6 @@ struct MaterialOverrides {
   std::string bumpMap;              // a greyscale PNG height map h in [0, 1], read at TEXCOORD_0; empty: none
   float bumpScale = 0.05f;          // k: B = k·h, in texture-coordinate units
 };
-inline constexpr int kMaxDisplacementSubdivisions = 6;
 
 struct ShadowSettings {
   bool enabled = true;
@@ -144,8 +90,6 @@ struct ShadowSettings {
 // "Fog"): C = f·C_surface + (1 - f)·C_fog by the eye-space depth d,
 // linear f = (end - d)/(end - start), exponential e^(-density·d),
 // exponential2 e^(-(density·d)²), f clamped to [0, 1].
-enum class FogMode { None, Linear, Exponential, Exponential2, Count };
-inline constexpr std::array<std::string_view, static_cast<int>(FogMode::Count)> kFogModeNames = {"none", "linear", "exponential", "exponential2"};
 struct FogSettings {
   FogMode mode = FogMode::None;
   glm::vec3 color{0.5f, 0.55f, 0.6f};  // C_fog, linear RGB
@@ -154,37 +98,11 @@ struct FogSettings {
   float density = 0.1f;                // exponential and exponential2, per world unit
 };
 
-// Hidden-surface removal (renderer/PIPELINE.md, section 6, "Hidden-surface
-// removal"): the z-buffer; the painter's algorithm (triangles sorted by their
-// farthest eye depth, drawn back to front with no depth buffer); or the
-// scanline z-buffer (CPU backend: one row of depth at a time, the z-buffer's image).
-enum class HiddenSurface { ZBuffer, Painter, Scanline, Count };
-inline constexpr std::array<std::string_view, static_cast<int>(HiddenSurface::Count)> kHiddenSurfaceNames = {"zbuffer", "painter", "scanline"};
-
-// Transparency (renderer/PIPELINE.md, section 7, "Transparency"): the
-// course's two blending equations, straight
-//   C_o = (C_f α_f + C_b α_b (1 − α_f)) / α_o,  α_o = α_f + α_b (1 − α_f)
-// and premultiplied C_o = C_f + C_b (1 − α_f) (the colour buffer holds C·α);
-// blended triangles are drawn after the opaque ones, back to front by object
-// or by triangle (the painter's key), depth-tested without depth writes.
-enum class Blending { Straight, Premultiplied, Count };
-inline constexpr std::array<std::string_view, static_cast<int>(Blending::Count)> kBlendingNames = {"straight", "premultiplied"};
-enum class TransparencySort { Object, Triangle, Count };
-inline constexpr std::array<std::string_view, static_cast<int>(TransparencySort::Count)> kTransparencySortNames = {"object", "triangle"};
 struct TransparencySettings {
   TransparencySort sort = TransparencySort::Object;
   float shadowCutoff = 0.5f;  // a blended fragment casts a shadow where α ≥ this
 };
 
-// Anti-aliasing (renderer/PIPELINE.md, section 7, "Anti-aliasing"): the
-// course's supersampling, `samples` = s² sub-pixel positions per pixel on an
-// s × s ordered grid, or one jittered position in each grid cell from a
-// seeded generator; every sample is a full pass, box-filtered in linear light.
-// `area` (the CPU backend's) is the course's area-weighted averaging instead:
-// exact coverage of each pixel by each polygon, `samples` playing no part.
-enum class SamplePattern { Grid, Jittered, Area, Count };
-inline constexpr std::array<std::string_view, static_cast<int>(SamplePattern::Count)> kSamplePatternNames = {"grid", "jittered", "area"};
-inline constexpr int kMaxSamplesPerSide = 4;  // samples: 1, 4, 9 or 16
 // s for s × s samples: the largest s with s² ≤ samples.
 inline int samplesPerSide(int samples) {
   int side = 1;
@@ -198,7 +116,6 @@ struct AntialiasingSettings {
 };
 
 // The ray-tracing backend (renderer/PIPELINE.md, section 10).
-inline constexpr int kMaxRayDepth = 16;  // levels of the ray tree; the tree doubles with each
 struct RaySettings {
   int depth = 5;                  // levels of the ray tree: 1 casts primary rays only
   float minContribution = 0.01f;  // a ray whose weight (largest channel) is below this is not traced
@@ -211,22 +128,12 @@ struct RaySettings {
   bool gloss = false;             // reflected rays spread by the surface's roughness
   bool translucency = false;      // transmitted rays spread likewise
 };
-inline constexpr int kMaxRaySamples = 4096;
 
-// Particle systems (renderer/PIPELINE.md, section 12): the emitters of the
-// settings, particles.N.* (the scene's, from glTF node extras, come on top).
-inline constexpr std::size_t kMaxEmitters = 16;
-
-// Volume rendering (renderer/PIPELINE.md, section 11): a scalar volume
-// placed in the scene, drawn by the course's v-buffer ray casting,
-// splatting, or marching cubes' iso-surface.
-enum class VolumeMode { Raycast, Splat, Isosurface, Count };
-inline constexpr std::array<std::string_view, static_cast<int>(VolumeMode::Count)> kVolumeModeNames = {"raycast", "splat", "isosurface"};
 struct VolumeSettings {
   std::string file;                   // a NRRD (.nrrd, .nhdr) or NIfTI-1 (.nii, .nii.gz) file, or builtin:marschner-lobb; empty: none
   int resolution = 64;                // builtin:marschner-lobb: samples along each axis
   VolumeMode mode = VolumeMode::Isosurface;  // the one every backend draws, and the quickest
-  std::string transfer = "grey";      // a preset, or control points "value r g b a, ..." (volume/transfer_function.h)
+  std::string transfer = "grey";      // a preset, or control points "value r g b a, ..." (scene/transfer_function.h)
   glm::vec3 center{0.0f, 1.0f, 0.0f};// world position of the volume box's centre
   float size = 2.0f;                  // world length of the box's longest side
   glm::vec3 rotation{0.0f};           // degrees about x, then y, then z (R = Rz·Ry·Rx), about the box's centre

@@ -6,6 +6,7 @@
 #include <limits>
 #include <set>
 
+#include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
 #include "common/atomic_file.h"
@@ -13,6 +14,7 @@
 #include "common/json_text.h"
 #include "common/quote.h"
 #include "settings/settings_fields.h"
+#include "vocabulary/limits.h"
 
 namespace facet {
 namespace {
@@ -26,9 +28,6 @@ std::string join(const std::string& prefix, std::string_view key) {
 // How every message names a key: "settings key 'lights.0.intensity'".
 std::string settingsKey(const std::string& dotted) { return "settings key " + quoteInput(dotted); }
 
-// The deepest valid settings nest 4 levels (lights, a light, its position);
-// a few more leave room for a helpful "expected ..." message.
-constexpr std::size_t kMaxSettingsDepth = 8;
 
 // The shortest decimal that reads back as the same float, as a double: 0.15f
 // is written 0.15, not 0.15000000596046448.

@@ -6,15 +6,10 @@
 // allocating them.
 #include <string>
 
-#include "volume/volume.h"
+#include "scene/volume.h"
+#include "vocabulary/limits.h"
 
 namespace facet {
-
-inline constexpr int kMinMarschnerLobbResolution = 2;
-inline constexpr int kMaxMarschnerLobbResolution = 512;
-
-// Whether `path` names a volume: builtin:marschner-lobb or a NRRD or NIfTI-1 file by its extension (any case).
-bool isVolumeName(const std::string& path);
 
 // "builtin:marschner-lobb" (at `resolution`³ samples), a NRRD file (.nrrd,
 // .nhdr, read by teem), or a NIfTI-1 file (.nii, .nii.gz, read by nifti2).

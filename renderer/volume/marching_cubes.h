@@ -2,7 +2,7 @@
 // Marching cubes (Lorensen and Cline 1987): the iso-surface f = isoValue of a
 // volume as a triangle mesh (renderer/PIPELINE.md, section 11, "Marching cubes").
 #include "scene/scene.h"
-#include "volume/volume.h"
+#include "scene/volume.h"
 
 namespace facet {
 

@@ -28,6 +28,7 @@
 #include "settings/render_settings.h"
 #include "volume/load_volume.h"
 #include "volume/volume_file.h"
+#include "vocabulary/limits.h"
 
 // teem's gzip stream (nrrd/gzio.c): exported by libteem, declared only in
 // its private header. Only zlib's gzFile type comes from zlib.h.
@@ -40,9 +41,6 @@ int _nrrdGzRead(gzFile file, void* buf, unsigned int len, unsigned int* didread)
 namespace facet {
 namespace {
 
-// teem grows its line buffer to fit any line, and a header has no length
-// field: it is looked at first and refused past this (real ones are < 4 kB).
-constexpr std::size_t kMaxHeaderBytes = std::size_t{1} << 20;
 // How much of teem's message an error line keeps.
 constexpr std::size_t kMaxTeemMessage = 240;
 
@@ -137,7 +135,7 @@ std::string_view trimmed(std::string_view text) {
 void checkHeaderText(const std::string& path, const std::string& shown) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(shown + ": cannot open (" + describeErrno(errno) + ")");
-  std::string head(kMaxHeaderBytes + 1, '\0');
+  std::string head(kMaxNrrdHeaderBytes + 1, '\0');
   in.read(head.data(), static_cast<std::streamsize>(head.size()));
   head.resize(static_cast<std::size_t>(in.gcount()));
   if (head.rfind("NRRD000", 0) != 0) {
@@ -166,7 +164,7 @@ void checkHeaderText(const std::string& path, const std::string& shown) {
     if (value.rfind("LIST", 0) == 0 || value.find_first_of(" \t") != std::string_view::npos)
       throw Error(shown + ": samples split over several data files are not supported (one data file)");
   }
-  if (!ended && head.size() > kMaxHeaderBytes) throw Error(shown + ": header longer than " + byteCount(kMaxHeaderBytes));
+  if (!ended && head.size() > kMaxNrrdHeaderBytes) throw Error(shown + ": header longer than " + byteCount(kMaxNrrdHeaderBytes));
 }
 
 SampleType sampleType(int type) {

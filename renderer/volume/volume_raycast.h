@@ -11,8 +11,8 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "volume/transfer_function.h"
-#include "volume/volume.h"
+#include "scene/transfer_function.h"
+#include "scene/volume.h"
 
 namespace facet {
 

@@ -61,11 +61,11 @@ TEST_CASE("the alpha mask keeps a fragment when (factor.a * COLOR_0.a) * texel.a
   m.baseAlpha = 0.8f;
   const float vertex = 0.625f;  // 0.8 * 0.625 = 0.5 exactly
   const glm::vec4 opaque{1.0f}, half{1.0f, 1.0f, 1.0f, 0.5f};
-  CHECK(cpu::fragmentAlpha(m, &vertex, &opaque) == 0.5f);
-  CHECK(cpu::alphaKept(m, cpu::fragmentAlpha(m, &vertex, &opaque)));       // equal to the cutoff: kept
-  CHECK_FALSE(cpu::alphaKept(m, cpu::fragmentAlpha(m, &vertex, &half)));   // 0.25
-  CHECK(cpu::alphaKept(m, cpu::fragmentAlpha(m, nullptr, nullptr)));      // 0.8: no vertex colour, no texture
-  CHECK_FALSE(cpu::alphaKept(m, std::numeric_limits<float>::quiet_NaN()));
+  CHECK(fragmentAlpha(m, &vertex, &opaque) == 0.5f);
+  CHECK(alphaKept(m, fragmentAlpha(m, &vertex, &opaque)));       // equal to the cutoff: kept
+  CHECK_FALSE(alphaKept(m, fragmentAlpha(m, &vertex, &half)));   // 0.25
+  CHECK(alphaKept(m, fragmentAlpha(m, nullptr, nullptr)));      // 0.8: no vertex colour, no texture
+  CHECK_FALSE(alphaKept(m, std::numeric_limits<float>::quiet_NaN()));
 }
 
 TEST_CASE("a masked-away fragment shows what is behind it and casts no shadow, and the kept part draws and shadows as opaque") {

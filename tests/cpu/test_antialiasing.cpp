@@ -196,7 +196,7 @@ TEST_CASE("anti-aliasing, area: a pixel's cells are the exact parts each surface
   }
   SUBCASE("a pixel cut into more cells than the limit is refused, naming it") {
     std::vector<cpu::AreaSurface> fan;  // kMaxAreaCells + 1 wedges around the centre of pixel (3, 5)
-    const int n = static_cast<int>(cpu::kMaxAreaCells) + 1;
+    const int n = static_cast<int>(kMaxAreaCells) + 1;
     for (int k = 0; k < n; ++k) {
       const double a = 2 * 3.141592653589793 * k / n, b = 2 * 3.141592653589793 * (k + 1) / n;
       fan.push_back(surface({3.5, 5.5}, {3.5 + 0.4 * std::cos(a), 5.5 + 0.4 * std::sin(a)}, {3.5 + 0.4 * std::cos(b), 5.5 + 0.4 * std::sin(b)}, 0.5));

@@ -4,8 +4,8 @@
 #include <doctest/doctest.h>
 #include <glm/geometric.hpp>
 
-#include "cpu/environment_mapping.h"
-#include "cpu/lighting.h"
+#include "shading/environment.h"
+#include "shading/lighting.h"
 #include "image/srgb.h"
 #include "pipeline/frame_inputs.h"
 #include "scene/default_scene.h"
@@ -48,15 +48,15 @@ TEST_CASE("env(D) reads the face of D's largest component at OpenGL's cube-map c
         CAPTURE(face);
         CAPTURE(column);
         CAPTURE(row);
-        const glm::vec3 c = cpu::environmentAt(map, towards(face, column, row), 0);
+        const glm::vec3 c = environmentAt(map, towards(face, column, row), 0);
         CHECK(c.r == decoded[face * 40 + column * 8]);
         CHECK(c.g == decoded[row * 60]);
       }
   // Ties go to x, then y: (1, 1, 0) reads +x, (0, 1, 1) reads +y.
-  CHECK(cpu::environmentAt(map, {1, 1, 0}, 0).r >= decoded[0]);
-  CHECK(cpu::environmentAt(map, {1, 1, 0}, 0).r < decoded[40]);
-  CHECK(cpu::environmentAt(map, {0, 1, 1}, 0).r >= decoded[80]);
-  CHECK(cpu::environmentAt(map, {0, 1, 1}, 0).r < decoded[120]);
+  CHECK(environmentAt(map, {1, 1, 0}, 0).r >= decoded[0]);
+  CHECK(environmentAt(map, {1, 1, 0}, 0).r < decoded[40]);
+  CHECK(environmentAt(map, {0, 1, 1}, 0).r >= decoded[80]);
+  CHECK(environmentAt(map, {0, 1, 1}, 0).r < decoded[120]);
 }
 
 TEST_CASE("the reflection adds k_r env(R) to the highlights, and the background is env(F) at the image centre") {
@@ -69,25 +69,25 @@ TEST_CASE("the reflection adds k_r env(R) to the highlights, and the background 
   s.lightSource = Source::Manual;  // no lights: the illumination is ambient plus the reflection
   const FrameInputs frame = buildFrameInputs(scene, s);
   REQUIRE(frame.environment.map != nullptr);
-  CHECK(cpu::backgroundAt(frame, 32, 24) == cpu::environmentAt(scene.environment, frame.environment.forward, 0));
+  CHECK(backgroundAt(frame, 32, 24) == environmentAt(scene.environment, frame.environment.forward, 0));
   CHECK(glm::length(frame.environment.forward) == doctest::Approx(1.0f));
-  const cpu::ShadowMaps maps;
-  cpu::LaneMaterial<float> dielectric{};
+  const ShadowMaps maps;
+  LaneMaterial<float> dielectric{};
   const glm::vec3 N{0, 1, 0}, V = glm::normalize(glm::vec3(1, 1, 0));  // R = (-1, 1, 0)/√2 ... reflected about N
   const glm::vec3 R = (2.0f * glm::dot(N, V)) * N - V;
-  const cpu::Illumination I = cpu::illuminate(frame, maps, dielectric, glm::vec3(0.0f), N, V);
-  const glm::vec3 expected = 0.5f * cpu::environmentAt(scene.environment, R, 0);
+  const Illumination I = illuminate(frame, maps, dielectric, glm::vec3(0.0f), N, V);
+  const glm::vec3 expected = 0.5f * environmentAt(scene.environment, R, 0);
   CHECK(I.specular.r == doctest::Approx(expected.r));
   CHECK(I.specular.g == doctest::Approx(expected.g));
-  cpu::LaneMaterial<float> metal{};
+  LaneMaterial<float> metal{};
   metal.metallic = 1.0f;
-  const cpu::Illumination M = cpu::illuminate(frame, maps, metal, glm::vec3(0.0f), N, V);
+  const Illumination M = illuminate(frame, maps, metal, glm::vec3(0.0f), N, V);
   CHECK(M.specular.r == 0.0f);                                  // a metal's reflection is tinted by O_d: it moves to the diffuse part
   CHECK(M.diffuse.r == doctest::Approx(expected.r));
   // Without a map the frame has no reflection and the background is the colour.
   Scene plain = makeDefaultScene();
   s.environment.map.clear();
   const FrameInputs without = buildFrameInputs(plain, s);
-  CHECK(cpu::backgroundAt(without, 32, 24) == without.background);
-  CHECK(cpu::illuminate(without, maps, dielectric, glm::vec3(0.0f), N, V).specular == glm::vec3(0.0f));
+  CHECK(backgroundAt(without, 32, 24) == without.background);
+  CHECK(illuminate(without, maps, dielectric, glm::vec3(0.0f), N, V).specular == glm::vec3(0.0f));
 }

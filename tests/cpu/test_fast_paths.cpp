@@ -19,15 +19,15 @@
 #include <doctest/doctest.h>
 
 #include "common/error.h"
-#include "cpu/blending.h"
+#include "shading/blending.h"
 #include "cpu/cpu_renderer.h"
 #include "cpu/depth_rows.h"
-#include "cpu/lane_width.h"
-#include "cpu/lighting.h"
+#include "common/lane_width.h"
+#include "shading/lighting.h"
 #include "cpu/phong_batch.h"
-#include "cpu/resolve.h"
-#include "cpu/thread_pool.h"
-#include "cpu/srgb_table.h"
+#include "shading/resolve.h"
+#include "common/thread_pool.h"
+#include "shading/srgb_table.h"
 #include "image/color_buffer.h"
 #include "image/srgb.h"
 #include "pipeline/frame_inputs.h"
@@ -91,7 +91,7 @@ TEST_CASE("sRGB buckets: encodeLevel equals the thresholds' binary search for ev
   for (std::uint64_t bits = 0; bits <= 0xffffffffu; bits += 4 * 4099) {
     float four[4];
     for (int k = 0; k < 4; ++k) four[k] = std::bit_cast<float>(static_cast<std::uint32_t>(bits + static_cast<std::uint64_t>(k) * 4099));
-    const Rgba8 got = cpu::encodePixel4(tables, four), want = encodePixel(glm::vec4(four[0], four[1], four[2], four[3]));
+    const Rgba8 got = encodePixel4(tables, four), want = encodePixel(glm::vec4(four[0], four[1], four[2], four[3]));
     mismatches4 += got.r != want.r || got.g != want.g || got.b != want.b || got.a != want.a;
   }
   CHECK(mismatches4 == 0);
@@ -108,9 +108,9 @@ TEST_CASE("Resolve: the CPU's four-channel resolve gives encodePixel's bytes for
     c = {value(random), value(random), value(random), value(random)};
     if (i % 7 == 0) c[i % 4] = specials[static_cast<std::size_t>(i / 7) % std::size(specials)];
   }
-  cpu::ThreadPool pool(3);
+  ThreadPool pool(3);
   Image image;
-  cpu::resolve(pool, buffer, Blending::Straight, 1, 1, image);
+  resolve(pool, buffer, Blending::Straight, 1, 1, image);
   REQUIRE(image.width() == kWidth);
   REQUIRE(image.height() == kHeight);
   int differing = 0;
@@ -139,14 +139,14 @@ namespace {
 // one-pixel rule's.
 long resolveMismatches(const std::vector<glm::vec4>& in, Blending holding, int samples, int lanes) {
   std::vector<Rgba8> plain(in.size()), wide(in.size());
-  cpu::resolveRow(in.data(), plain.data(), in.size(), holding, samples, 1);
-  cpu::resolveRow(in.data(), wide.data(), in.size(), holding, samples, lanes);
+  resolveRow(in.data(), plain.data(), in.size(), holding, samples, 1);
+  resolveRow(in.data(), wide.data(), in.size(), holding, samples, lanes);
   long differing = 0;
   for (std::size_t i = 0; i < in.size(); ++i) differing += plain[i] == wide[i] ? 0 : 1;
   for (std::size_t n = 0; n <= 9; ++n)
     for (std::size_t at = 0; at + n + 1 <= std::min<std::size_t>(in.size(), 40); ++at) {
       std::vector<Rgba8> run(n + 1, Rgba8{1, 2, 3, 4});
-      cpu::resolveRow(&in[at], run.data(), n, holding, samples, lanes);
+      resolveRow(&in[at], run.data(), n, holding, samples, lanes);
       for (std::size_t i = 0; i < n; ++i) differing += run[i] == plain[at + i] ? 0 : 1;
       differing += run[n] == Rgba8{1, 2, 3, 4} ? 0 : 1;
     }
@@ -156,8 +156,8 @@ long resolveMismatches(const std::vector<glm::vec4>& in, Blending holding, int s
 }  // namespace
 
 TEST_CASE("Resolve: sixteen lanes give the one-pixel rule's bytes near every threshold, across [0, 1], out of range, both holdings, 1 to 4096 samples") {
-  if (cpu::widestLanes() < 16) {
-    MESSAGE("this CPU runs " << cpu::widestLanes() << " lanes: the sixteen-lane resolve is not built or not run here");
+  if (widestLanes() < 16) {
+    MESSAGE("this CPU runs " << widestLanes() << " lanes: the sixteen-lane resolve is not built or not run here");
     return;
   }
   const SrgbTables& t = srgbTables();
@@ -188,7 +188,7 @@ TEST_CASE("Resolve: sixteen lanes give the one-pixel rule's bytes near every thr
   std::vector<glm::vec4> edges;
   for (int k = 1; k < 256; ++k) edges.push_back(glm::vec4(t.thresholds[static_cast<std::size_t>(k)], std::bit_cast<float>(std::bit_cast<std::uint32_t>(t.thresholds[static_cast<std::size_t>(k)]) - 1u), 0.0f, 1.0f));
   std::vector<Rgba8> levels(edges.size());
-  cpu::resolveRow(edges.data(), levels.data(), edges.size(), Blending::Straight, 1, 16);
+  resolveRow(edges.data(), levels.data(), edges.size(), Blending::Straight, 1, 16);
   int wrong = 0;
   for (int k = 1; k < 256; ++k) wrong += levels[static_cast<std::size_t>(k - 1)].r == k && levels[static_cast<std::size_t>(k - 1)].g == k - 1 ? 0 : 1;
   CHECK(wrong == 0);
@@ -196,7 +196,7 @@ TEST_CASE("Resolve: sixteen lanes give the one-pixel rule's bytes near every thr
 
 #if !defined(__SANITIZE_ADDRESS__)
 TEST_CASE("Resolve: sixteen lanes give every float of [0, 1] the level its thresholds give") {
-  if (cpu::widestLanes() < 16) return;
+  if (widestLanes() < 16) return;
   const SrgbTables& t = srgbTables();
   constexpr std::size_t kChunk = 1 << 14;
   std::vector<glm::vec4> in(kChunk);
@@ -209,7 +209,7 @@ TEST_CASE("Resolve: sixteen lanes give every float of [0, 1] the level its thres
       const float c = std::bit_cast<float>(first + static_cast<std::uint32_t>(i));
       in[i] = glm::vec4(c, c, c, 1.0f);
     }
-    cpu::resolveRow(in.data(), out.data(), n, Blending::Straight, 1, 16);
+    resolveRow(in.data(), out.data(), n, Blending::Straight, 1, 16);
     for (std::size_t i = 0; i < n; ++i) {
       const float c = in[i].r;
       const unsigned level = out[i].r;
@@ -251,10 +251,10 @@ TEST_CASE("CPU renderer: the image does not depend on the thread count, nor on t
 }
 
 TEST_CASE("Phong batch: four, eight and sixteen lanes at a time, and twice eight or sixteen, give the bits of illuminate<float>, shade and the sRGB encode, per pixel") {
-  INFO("this CPU runs " << cpu::widestLanes() << " lanes");
+  INFO("this CPU runs " << widestLanes() << " lanes");
   std::vector<int> widths{1, 4};
   for (int wide : {8, 16})
-    if (cpu::widestLanes() >= wide) widths.push_back(wide);
+    if (widestLanes() >= wide) widths.push_back(wide);
   for (int lanes : widths) {
     const Scene scene = makeDefaultScene();
     std::mt19937 random(12345);
@@ -283,7 +283,7 @@ TEST_CASE("Phong batch: four, eight and sixteen lanes at a time, and twice eight
         }
         const FrameInputs frame = buildFrameInputs(scene, s);
         REQUIRE(frame.shadowLayerCount > 0);
-        cpu::ShadowMaps maps;
+        ShadowMaps maps;
         maps.reset(frame.shadows.mapSize, frame.shadowLayerCount);
         for (float& d : maps.depth) d = unit(random);  // some texels nearer than the points, some farther
 
@@ -315,9 +315,9 @@ TEST_CASE("Phong batch: four, eight and sixteen lanes at a time, and twice eight
             const glm::vec3 interpolated = N * (0.5f + unit(random));  // not unit length, as interpolated normals are
             materials.push_back(material);
             batch.add(static_cast<std::size_t>(i), P, interpolated, back, baseColor, materials.back(), materials.back().emissive, 0.0f);
-            const glm::vec3 lit = back ? -cpu::normalize3(interpolated) : cpu::normalize3(interpolated);
+            const glm::vec3 lit = back ? -normalize3(interpolated) : normalize3(interpolated);
             scalar.at(i, 0) =
-                glm::vec4(cpu::shade(cpu::illuminate(frame, maps, cpu::laneMaterial(material), P, lit, cpu::viewVector<float>(frame, P)), baseColor), 1.0f);
+                glm::vec4(shade(illuminate(frame, maps, laneMaterial(material), P, lit, viewVector<float>(frame, P)), baseColor), 1.0f);
           }
           batch.flush();
         }
@@ -339,12 +339,12 @@ TEST_CASE("Phong batch: four, eight and sixteen lanes at a time, and twice eight
 TEST_CASE("Phong batch: blended at every width, pixels scattered, gives blend's bits over what each pixel holds, both equations, additive or not") {
   const Scene scene = makeDefaultScene();
   const FrameInputs frame = buildFrameInputs(scene, RenderSettings{});
-  cpu::ShadowMaps maps;
+  ShadowMaps maps;
   maps.reset(frame.shadows.mapSize, frame.shadowLayerCount);
   std::fill(maps.depth.begin(), maps.depth.end(), 1.0f);
   std::vector<int> widths{1, 4};
   for (int wide : {8, 16})
-    if (cpu::widestLanes() >= wide) widths.push_back(wide);
+    if (widestLanes() >= wide) widths.push_back(wide);
   std::mt19937 random(4242);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f), coordinate(-3.0f, 3.0f), outOfRange(-0.5f, 1.5f);
   // Runs flushed at 37, 50 and 13 pixels, so that each width meets full and short batches; the pixels
@@ -364,7 +364,7 @@ TEST_CASE("Phong batch: blended at every width, pixels scattered, gives blend's 
         std::vector<std::size_t> offsets(kPixels);
         for (int i = 0; i < kPixels; ++i) offsets[static_cast<std::size_t>(i)] = static_cast<std::size_t>(i);
         std::shuffle(offsets.begin(), offsets.end(), random);
-        const cpu::BlendOver over{blending, additive};
+        const BlendOver over{blending, additive};
         cpu::PhongBatch batch(frame, maps, batched.data(), lanes, &over);
         std::deque<CourseMaterial> materials;
         for (int run = 0, i = 0; run < 3; ++run) {
@@ -380,9 +380,9 @@ TEST_CASE("Phong batch: blended at every width, pixels scattered, gives blend's 
             const std::size_t at = offsets[static_cast<std::size_t>(i)];
             const bool back = i % 4 == 0;
             batch.add(at, P, N, back, baseColor, materials.back(), material.emissive, 0.0f, alpha);
-            const glm::vec3 lit = back ? -cpu::normalize3(N) : cpu::normalize3(N);
-            const glm::vec3 C = cpu::shade(cpu::illuminate(frame, maps, cpu::laneMaterial(material), P, lit, cpu::viewVector<float>(frame, P)), baseColor);
-            plain.at(static_cast<int>(at), 0) = cpu::blend(plain.at(static_cast<int>(at), 0), C, alpha, blending, additive);
+            const glm::vec3 lit = back ? -normalize3(N) : normalize3(N);
+            const glm::vec3 C = shade(illuminate(frame, maps, laneMaterial(material), P, lit, viewVector<float>(frame, P)), baseColor);
+            plain.at(static_cast<int>(at), 0) = blend(plain.at(static_cast<int>(at), 0), C, alpha, blending, additive);
           }
           batch.flush();
         }
@@ -399,7 +399,7 @@ TEST_CASE("Phong batch: a run of a triangle's pixels queued at once gives the bi
   const Scene scene = makeDefaultScene();
   RenderSettings s;
   const FrameInputs frame = buildFrameInputs(scene, s);
-  cpu::ShadowMaps maps;
+  ShadowMaps maps;
   maps.reset(frame.shadows.mapSize, frame.shadowLayerCount);
   std::fill(maps.depth.begin(), maps.depth.end(), 1.0f);
   std::mt19937 random(777);
@@ -416,11 +416,11 @@ TEST_CASE("Phong batch: a run of a triangle's pixels queued at once gives the bi
   const glm::vec3 baseColor{0.8f, 0.4f, 0.2f};
   constexpr int kWidth = 160, kRows = 8;  // a row holds runs of 1 to 16 (136 pixels)
   for (const int lanes : {1, 4, 8, 16}) {
-    if (lanes > cpu::widestLanes()) continue;
+    if (lanes > widestLanes()) continue;
     for (const bool blended : {false, true}) {
       CAPTURE(lanes);
       CAPTURE(blended);
-      const cpu::BlendOver over{Blending::Straight, false};
+      const BlendOver over{Blending::Straight, false};
       // α for every pixel, and room for a run's read of sixteen past the last (as the tile's arrays have).
       std::vector<float> alpha(kWidth * kRows + 16);
       for (float& x : alpha) x = unit(random);
@@ -481,9 +481,9 @@ TEST_CASE("Cube faces: cubeFaceLanes picks cubeFace's face in each lane, ties, s
     alignas(16) float c[3][4];
     for (int k = 0; k < 4; ++k)
       for (int a = 0; a < 3; ++a) c[a][k] = vectors[i + static_cast<std::size_t>(k)][a];
-    const cpu::Vec3x4 d(cpu::Float4(_mm_load_ps(c[0])), cpu::Float4(_mm_load_ps(c[1])), cpu::Float4(_mm_load_ps(c[2])));
+    const Vec3x4 d(Float4(_mm_load_ps(c[0])), Float4(_mm_load_ps(c[1])), Float4(_mm_load_ps(c[2])));
     alignas(16) std::int32_t lanes[4];
-    _mm_store_si128(reinterpret_cast<__m128i*>(lanes), cpu::cubeFaceLanes<cpu::Float4>(d).v);
+    _mm_store_si128(reinterpret_cast<__m128i*>(lanes), cubeFaceLanes<Float4>(d).v);
     for (int k = 0; k < 4; ++k) {
       const int face = cubeFace(vectors[i + static_cast<std::size_t>(k)]);
       faces.insert(face);
@@ -498,17 +498,17 @@ TEST_CASE("Cube faces: cubeFaceLanes picks cubeFace's face in each lane, ties, s
 TEST_CASE("Phong batch: a width this CPU or build does not run is refused") {
   const Scene scene = makeDefaultScene();
   const FrameInputs frame = buildFrameInputs(scene, RenderSettings{});
-  cpu::ShadowMaps maps;
+  ShadowMaps maps;
   ColorBuffer pixels(4, 1, glm::vec4(0.0f));
   CHECK_THROWS_AS(cpu::PhongBatch(frame, maps, pixels.data(), 2), Error);
   CHECK_THROWS_AS(cpu::PhongBatch(frame, maps, pixels.data(), 32), Error);
-  if (cpu::widestLanes() < 8) CHECK_THROWS_AS(cpu::PhongBatch(frame, maps, pixels.data(), 8), Error);
-  if (cpu::widestLanes() < 16) CHECK_THROWS_AS(cpu::PhongBatch(frame, maps, pixels.data(), 16), Error);
+  if (widestLanes() < 8) CHECK_THROWS_AS(cpu::PhongBatch(frame, maps, pixels.data(), 8), Error);
+  if (widestLanes() < 16) CHECK_THROWS_AS(cpu::PhongBatch(frame, maps, pixels.data(), 16), Error);
 }
 
 TEST_CASE("Depth rows: lessRow's four- and sixteen-lane tests write the depths and ids the one-pixel test writes") {
   for (const int lanes : {4, 16}) {
-    if (lanes > cpu::widestLanes()) continue;
+    if (lanes > widestLanes()) continue;
     CAPTURE(lanes);
     std::mt19937 random(31);
     std::uniform_real_distribution<float> unit(-0.2f, 1.2f), slope(-0.01f, 0.01f);
@@ -558,7 +558,7 @@ TEST_CASE("Depth rows: lessCovered writes the depths and ids the one-pixel test 
 
 TEST_CASE("Depth rows: frontRow's four- and sixteen-lane tests take the pixels the one-pixel test takes, and report the first and last") {
   for (const int lanes : {4, 16}) {
-    if (lanes > cpu::widestLanes()) continue;
+    if (lanes > widestLanes()) continue;
     CAPTURE(lanes);
     std::mt19937 random(37);
     std::uniform_real_distribution<float> unit(-0.2f, 1.2f), slope(-0.01f, 0.01f);
@@ -609,12 +609,12 @@ TEST_CASE("Blending: blendPixels' four lanes give blend's bits per pixel at thei
         std::memcpy(plain, held, sizeof plain);
         for (int k = 0; k < count; ++k) {
           const float* behind = held + 4 * offsets[k];
-          const glm::vec4 out = cpu::blend({behind[0], behind[1], behind[2], behind[3]}, {fragments[k], fragments[4 + k], fragments[8 + k]}, alpha[k],
+          const glm::vec4 out = blend({behind[0], behind[1], behind[2], behind[3]}, {fragments[k], fragments[4 + k], fragments[8 + k]}, alpha[k],
                                            blending, additive);
           std::memcpy(plain + 4 * offsets[k], &out, sizeof out);
         }
-        const cpu::Vec3x4 color(cpu::Float4(_mm_loadu_ps(fragments)), cpu::Float4(_mm_loadu_ps(fragments + 4)), cpu::Float4(_mm_loadu_ps(fragments + 8)));
-        cpu::blendPixels(held, offsets, count, color, cpu::Float4(_mm_loadu_ps(alpha)), cpu::BlendOver{blending, additive});
+        const Vec3x4 color(Float4(_mm_loadu_ps(fragments)), Float4(_mm_loadu_ps(fragments + 4)), Float4(_mm_loadu_ps(fragments + 8)));
+        blendPixels(held, offsets, count, color, Float4(_mm_loadu_ps(alpha)), BlendOver{blending, additive});
         CAPTURE(count);
         CHECK(std::memcmp(held, plain, sizeof plain) == 0);
       }

@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/error.h"
-#include "cpu/fog.h"
+#include "shading/fog.h"
 #include "cpu_test_scenes.h"
 #include "pipeline/frame_inputs.h"
 #include "scene/default_scene.h"
@@ -20,28 +20,28 @@ TEST_CASE("fog: linear is 1 at fog.start and 0 at fog.end, the exponentials are 
   FrameInputs::Fog fog;
   fog.mode = FogMode::Linear;
   fog.start = 2.0f, fog.end = 10.0f;
-  CHECK(cpu::fogFactor(fog, 2.0f) == 1.0f);
-  CHECK(cpu::fogFactor(fog, 10.0f) == 0.0f);
-  CHECK(cpu::fogFactor(fog, 6.0f) == 0.5f);
-  CHECK(cpu::fogFactor(fog, 1.0f) == 1.0f);   // nearer than the start: clamped
-  CHECK(cpu::fogFactor(fog, 50.0f) == 0.0f);  // beyond the end
-  CHECK(cpu::fogFactor(fog, std::numeric_limits<float>::quiet_NaN()) == 0.0f);
+  CHECK(fogFactor(fog, 2.0f) == 1.0f);
+  CHECK(fogFactor(fog, 10.0f) == 0.0f);
+  CHECK(fogFactor(fog, 6.0f) == 0.5f);
+  CHECK(fogFactor(fog, 1.0f) == 1.0f);   // nearer than the start: clamped
+  CHECK(fogFactor(fog, 50.0f) == 0.0f);  // beyond the end
+  CHECK(fogFactor(fog, std::numeric_limits<float>::quiet_NaN()) == 0.0f);
   fog.density = 0.25f;
   for (const float d : {0.5f, 4.0f, 9.0f, 20.0f}) {
     CAPTURE(d);
     fog.mode = FogMode::Exponential;
-    CHECK(cpu::fogFactor(fog, d) == doctest::Approx(std::exp(-0.25 * d)).epsilon(2e-6));
+    CHECK(fogFactor(fog, d) == doctest::Approx(std::exp(-0.25 * d)).epsilon(2e-6));
     fog.mode = FogMode::Exponential2;
-    CHECK(cpu::fogFactor(fog, d) == doctest::Approx(std::exp(-(0.25 * d) * (0.25 * d))).epsilon(2e-6));
+    CHECK(fogFactor(fog, d) == doctest::Approx(std::exp(-(0.25 * d) * (0.25 * d))).epsilon(2e-6));
   }
   fog.mode = FogMode::Exponential;
-  CHECK(cpu::fogFactor(fog, 0.0f) == 1.0f);
+  CHECK(fogFactor(fog, 0.0f) == 1.0f);
   // C = C_fog + f (C - C_fog): f = 1 keeps the surface, f = 0 gives the fog colour.
   fog.color = {0.2f, 0.4f, 0.6f};
-  CHECK(cpu::fogged(fog, glm::vec3(1.0f, 0.0f, 0.5f), 0.0f) == glm::vec3(1.0f, 0.0f, 0.5f));
-  CHECK(cpu::fogged(fog, glm::vec3(1.0f, 0.0f, 0.5f), 1e6f) == fog.color);
+  CHECK(fogged(fog, glm::vec3(1.0f, 0.0f, 0.5f), 0.0f) == glm::vec3(1.0f, 0.0f, 0.5f));
+  CHECK(fogged(fog, glm::vec3(1.0f, 0.0f, 0.5f), 1e6f) == fog.color);
   fog.mode = FogMode::None;
-  CHECK(cpu::fogged(fog, glm::vec3(1.0f, 0.0f, 0.5f), 1e6f) == glm::vec3(1.0f, 0.0f, 0.5f));
+  CHECK(fogged(fog, glm::vec3(1.0f, 0.0f, 0.5f), 1e6f) == glm::vec3(1.0f, 0.0f, 0.5f));
 }
 
 #if defined(__SSE2__)
@@ -52,8 +52,8 @@ TEST_CASE("fog: four lanes give each lane's scalar factor, bit for bit") {
     fog.start = 1.5f, fog.end = 33.0f, fog.density = 0.07f;
     for (float d0 = 0.0f; d0 < 60.0f; d0 += 0.37f) {
       alignas(16) float d[4] = {d0, d0 * 1.01f, d0 + 7.0f, d0 * 0.5f}, out[4];
-      _mm_store_ps(out, cpu::fogFactor(fog, cpu::Float4(_mm_load_ps(d))).v);
-      for (int k = 0; k < 4; ++k) CHECK(out[k] == cpu::fogFactor(fog, d[k]));
+      _mm_store_ps(out, fogFactor(fog, Float4(_mm_load_ps(d))).v);
+      for (int k = 0; k < 4; ++k) CHECK(out[k] == fogFactor(fog, d[k]));
     }
   }
 }
@@ -68,7 +68,7 @@ TEST_CASE("fog: the eye depth is w·cot(theta) under perspective and N + z (F - 
   for (const float z : {0.5f, 3.0f, 17.0f, 80.0f}) {
     const glm::vec4 clip = frame.clipFromEye * glm::vec4(0.3f, -0.2f, z, 1.0f);
     CAPTURE(z);
-    CHECK(cpu::eyeDepth(frame, 1.0f / clip.w, 0.0f) == doctest::Approx(z).epsilon(1e-6));
+    CHECK(eyeDepth(frame, 1.0f / clip.w, 0.0f) == doctest::Approx(z).epsilon(1e-6));
   }
   s.camera.projection = ProjectionKind::Parallel;
   frame = buildFrameInputs(scene, s);
@@ -76,7 +76,7 @@ TEST_CASE("fog: the eye depth is w·cot(theta) under perspective and N + z (F - 
   for (const float z : {0.5f, 3.0f, 17.0f, 80.0f}) {
     const glm::vec4 clip = frame.clipFromEye * glm::vec4(0.3f, -0.2f, z, 1.0f);
     CAPTURE(z);
-    CHECK(cpu::eyeDepth(frame, 1.0f, clip.z / clip.w) == doctest::Approx(z).epsilon(1e-5));
+    CHECK(eyeDepth(frame, 1.0f, clip.z / clip.w) == doctest::Approx(z).epsilon(1e-5));
   }
 }
 

@@ -4,8 +4,8 @@
 #include <doctest/doctest.h>
 #include <glm/geometric.hpp>
 
-#include "cpu/bump_mapping.h"
-#include "cpu/normal_mapping.h"
+#include "shading/bump_mapping.h"
+#include "shading/normal_mapping.h"
 
 using namespace facet;
 
@@ -23,7 +23,7 @@ Texture normalTexel(glm::vec3 n) {
 glm::vec3 bent(const Texture& map, float scale, glm::vec4 tangent) {
   CourseMaterial m;
   m.normalScale = scale;
-  return glm::normalize(cpu::normalMapped(map, m, {0, 0, 1}, tangent, {0.5f, 0.5f}, glm::vec4(0.0f)));
+  return glm::normalize(normalMapped(map, m, {0, 0, 1}, tangent, {0.5f, 0.5f}, glm::vec4(0.0f)));
 }
 
 }  // namespace
@@ -55,11 +55,11 @@ TEST_CASE("bump mapping: a level height map keeps N, a ramp tilts N away from up
   level.encoding = ramp.encoding = TexelEncoding::Linear;
   const glm::vec3 N(0, 0, 1);
   const glm::vec4 T(1, 0, 0, 1);
-  CHECK(glm::length(cpu::bumped(level, 0.5f, N, T, {0.5f, 0.5f}) - N) < 1e-6f);
+  CHECK(glm::length(bumped(level, 0.5f, N, T, {0.5f, 0.5f}) - N) < 1e-6f);
   // h rises along s by 16/255 per texel, 8 texels per unit: dh/ds = 128/255; N' = N - k·(dh/ds)·T.
-  const glm::vec3 tilted = cpu::bumped(ramp, 0.5f, N, T, {0.5f, 0.5f});
+  const glm::vec3 tilted = bumped(ramp, 0.5f, N, T, {0.5f, 0.5f});
   CHECK(tilted.x == doctest::Approx(-0.5 * 128.0 / 255.0).epsilon(1e-4));
   CHECK(std::fabs(tilted.y) < 1e-6f);
   CHECK(tilted.z == 1.0f);
-  CHECK(cpu::bumped(ramp, 1.0f, N, T, {0.5f, 0.5f}).x == doctest::Approx(2.0 * tilted.x).epsilon(1e-4));
+  CHECK(bumped(ramp, 1.0f, N, T, {0.5f, 0.5f}).x == doctest::Approx(2.0 * tilted.x).epsilon(1e-4));
 }

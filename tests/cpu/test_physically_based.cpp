@@ -8,7 +8,7 @@
 #include <doctest/doctest.h>
 #include <glm/geometric.hpp>
 
-#include "cpu/physically_based.h"
+#include "shading/physically_based.h"
 #include "image/srgb.h"
 #include "pipeline/frame_inputs.h"
 #include "pipeline/microfacet.h"
@@ -84,7 +84,7 @@ TEST_CASE("pbr: GGX's D is a distribution of normals: D times N.H integrates to 
 
 TEST_CASE("pbr: the split-sum table holds the BRDF's own directional albedo, 1 - ln 2 for a rough metal seen head-on") {
   // F = 1, r = 1 (α = 1): D = 1/π and Vis = 0.5/(N.L + N.V), so at N.V = 1 the albedo is ∫ μ/(1 + μ) dμ = 1 - ln 2.
-  const glm::vec2 rough = cpu::environmentBrdf(1.0f, 1.0f);
+  const glm::vec2 rough = environmentBrdf(1.0f, 1.0f);
   CHECK(rough.x + rough.y == doctest::Approx(1.0 - std::log(2.0)).epsilon(0.01));
   // Both factors against the hemisphere integral of D·Vis·(N·L), split by x⁵, at table points.
   for (const double r : {9.0 / 31, 18.0 / 31, 25.0 / 31, 1.0})
@@ -98,7 +98,7 @@ TEST_CASE("pbr: the split-sum table holds the BRDF's own directional albedo, 1 -
           return (fresnel ? x5 : 1.0 - x5) * ggxDistribution(h.z, a2) * smithVisibility(l.z, nv, a2) * l.z;
         });
       };
-      const glm::vec2 ab = cpu::environmentBrdf(static_cast<float>(r), static_cast<float>(nv));
+      const glm::vec2 ab = environmentBrdf(static_cast<float>(r), static_cast<float>(nv));
       CAPTURE(r);
       CAPTURE(nv);
       CHECK(std::fabs(ab.x - part(false)) < 0.01);
@@ -110,7 +110,7 @@ TEST_CASE("pbr: a map's irradiance is its cosine-weighted integral: a constant s
   const EnvironmentMap grey = mapOf(8, [](const glm::dvec3&) { return 0.5; });
   const float half = srgbTables().decoded[encodeLevel(0.5f)];
   for (const glm::vec3 N : {glm::vec3(0, 1, 0), glm::vec3(0.6f, 0, 0.8f), glm::vec3(0, 0, -1)})
-    CHECK(cpu::irradianceAt(grey, N).r == doctest::Approx(half).epsilon(1e-4));
+    CHECK(irradianceAt(grey, N).r == doctest::Approx(half).epsilon(1e-4));
   // Quadratic skies are within the nine harmonics: E/π is theirs up to the texels' 8 bits.
   const EnvironmentMap linear = mapOf(32, [](const glm::dvec3& d) { return 0.4 + 0.3 * d.y + 0.1 * d.x * d.z; });
   // A sun 25° across: far from quadratic, so the nine harmonics approximate it (Ramamoorthi and Hanrahan bound
@@ -120,8 +120,8 @@ TEST_CASE("pbr: a map's irradiance is its cosine-weighted integral: a constant s
   double worstLinear = 0.0, worstLit = 0.0;
   for (const glm::dvec3 N : {glm::dvec3(0, 1, 0), glm::dvec3(0, -1, 0), glm::dvec3(1, 0, 0), glm::normalize(glm::dvec3(1, 1, 1)),
                              glm::normalize(glm::dvec3(-1, 0.3, 2))}) {
-    worstLinear = std::max(worstLinear, std::fabs(cpu::irradianceAt(linear, glm::vec3(N)).r - irradianceByTexels(linear, N)));
-    worstLit = std::max(worstLit, std::fabs(cpu::irradianceAt(lit, glm::vec3(N)).r - irradianceByTexels(lit, N)));
+    worstLinear = std::max(worstLinear, std::fabs(irradianceAt(linear, glm::vec3(N)).r - irradianceByTexels(linear, N)));
+    worstLit = std::max(worstLit, std::fabs(irradianceAt(lit, glm::vec3(N)).r - irradianceByTexels(lit, N)));
   }
   MESSAGE("irradiance: worst |SH - texels| ", worstLinear, " (quadratic sky), ", worstLit, " (a sun)");
   CHECK(worstLinear < 2e-3);
@@ -140,13 +140,13 @@ TEST_CASE("pbr: a metal's light takes its base colour, a dielectric's highlight 
   frame.lights[0].light.direction = {0, 0, -1};
   frame.lights[0].intensity = glm::vec3(1.0f);
   frame.lights[0].hasShadowMap = false;
-  const cpu::ShadowMaps none;
+  const ShadowMaps none;
   const glm::vec3 P(0.0f), N(0, 0, 1), V(0, 0, 1), gold(1.0f, 0.6f, 0.2f);
-  const glm::vec3 metal = cpu::shadePhysicallyBased(frame, none, {gold, 1.0f, 0.4f, {}}, P, N, V);
+  const glm::vec3 metal = shadePhysicallyBased(frame, none, {gold, 1.0f, 0.4f, {}}, P, N, V);
   CHECK(metal.g / metal.r == doctest::Approx(0.6).epsilon(1e-5));
   CHECK(metal.b / metal.r == doctest::Approx(0.2).epsilon(1e-5));
   // A dielectric: Lambert's colour (1 - F)·c_diff/π plus a grey lobe, the same in every channel.
-  const glm::vec3 plastic = cpu::shadePhysicallyBased(frame, none, {gold, 0.0f, 0.4f, {}}, P, N, V);
+  const glm::vec3 plastic = shadePhysicallyBased(frame, none, {gold, 0.0f, 0.4f, {}}, P, N, V);
   const glm::vec3 lambert = gold * (0.96f / kPi);
   const float lobe = plastic.r - lambert.r;
   CHECK(lobe > 0.0f);
@@ -154,10 +154,10 @@ TEST_CASE("pbr: a metal's light takes its base colour, a dielectric's highlight 
   CHECK(plastic.b - lambert.b == doctest::Approx(lobe).epsilon(1e-4));
   // Roughness spreads the lobe: at 30° off the mirror a rough metal is brighter than a smooth one, at the mirror darker.
   const glm::vec3 tilted = glm::normalize(glm::vec3(0.5f, 0.0f, 0.866f));
-  const float smoothAt = cpu::shadePhysicallyBased(frame, none, {gold, 1.0f, 0.2f, {}}, P, N, N).r;
-  const float roughAt = cpu::shadePhysicallyBased(frame, none, {gold, 1.0f, 0.8f, {}}, P, N, N).r;
-  const float smoothOff = cpu::shadePhysicallyBased(frame, none, {gold, 1.0f, 0.2f, {}}, P, N, tilted).r;
-  const float roughOff = cpu::shadePhysicallyBased(frame, none, {gold, 1.0f, 0.8f, {}}, P, N, tilted).r;
+  const float smoothAt = shadePhysicallyBased(frame, none, {gold, 1.0f, 0.2f, {}}, P, N, N).r;
+  const float roughAt = shadePhysicallyBased(frame, none, {gold, 1.0f, 0.8f, {}}, P, N, N).r;
+  const float smoothOff = shadePhysicallyBased(frame, none, {gold, 1.0f, 0.2f, {}}, P, N, tilted).r;
+  const float roughOff = shadePhysicallyBased(frame, none, {gold, 1.0f, 0.8f, {}}, P, N, tilted).r;
   CHECK(smoothAt > roughAt);
   CHECK(roughOff > smoothOff);
 }
@@ -178,7 +178,7 @@ TEST_CASE("pbr: the maps scale roughness by G and metallic by B as data, occlusi
   m.emissiveMap.texture = texture({255, 128, 0, 255}, TexelEncoding::Srgb);
   Mesh mesh;
   mesh.texcoords = {{0.5f, 0.5f}};
-  const cpu::PbrSurface s = cpu::pbrSurfaceAt(scene, m, mesh, glm::vec3(1.0f), {glm::vec2(0.5f), glm::vec2(0.5f)}, {glm::vec4(0.0f), glm::vec4(0.0f)});
+  const PbrSurface s = pbrSurfaceAt(scene, m, mesh, glm::vec3(1.0f), {glm::vec2(0.5f), glm::vec2(0.5f)}, {glm::vec4(0.0f), glm::vec4(0.0f)});
   CHECK(s.roughness == doctest::Approx(0.8 * 128.0 / 255.0));
   CHECK(s.metallic == doctest::Approx(0.5));
   CHECK(s.occlusion == doctest::Approx(1.0 + 0.5 * (64.0 / 255.0 - 1.0)));
@@ -186,7 +186,7 @@ TEST_CASE("pbr: the maps scale roughness by G and metallic by B as data, occlusi
   CHECK(s.emissive.g == doctest::Approx(2.0 * srgbTables().decoded[128]));  // colour: decoded, not 128/255
   CHECK(s.emissive.b == 0.0f);
   // Without texture coordinates the maps are not read: the factors alone.
-  const cpu::PbrSurface bare = cpu::pbrSurfaceAt(scene, m, Mesh{}, glm::vec3(1.0f), {glm::vec2(0.5f), glm::vec2(0.5f)}, {glm::vec4(0.0f), glm::vec4(0.0f)});
+  const PbrSurface bare = pbrSurfaceAt(scene, m, Mesh{}, glm::vec3(1.0f), {glm::vec2(0.5f), glm::vec2(0.5f)}, {glm::vec4(0.0f), glm::vec4(0.0f)});
   CHECK(bare.roughness == 0.8f);
   CHECK(bare.occlusion == 1.0f);
 }

@@ -87,7 +87,7 @@ TEST_CASE("a probed pixel of the ground: P, N, V, L, H and every term of the ill
       CHECK(l.fAtt == doctest::Approx(fAtt).epsilon(1e-5));
       CHECK(near(l.RorH, model == SpecularModel::Phong ? R : H, 1e-5f));
       CHECK(l.specularBase == doctest::Approx(base).epsilon(1e-5));
-      // spec: the backends' own power (cpu/shading_math.h, a series shared with the GLSL), not std::pow.
+      // spec: the backends' own power (shading/shading_math.h, a series shared with the GLSL), not std::pow.
       CHECK(l.spec == doctest::Approx(spec).epsilon(1e-4));
       CHECK(l.lit);
       CHECK(!l.shadowMapped);

@@ -4,10 +4,9 @@
 
 #include <doctest/doctest.h>
 
-#include "cpu/procedural.h"
+#include "shading/procedural.h"
 
 using namespace facet;
-using cpu::proceduralGrey;
 
 TEST_CASE("the checker is 1 on cells whose floor sum is even and 0.05 on odd ones, in model units times the scale") {
   CHECK(proceduralGrey(Procedural::Checker, {0.5f, 0.5f, 0.5f}, 1.0f) == 1.0f);
@@ -20,12 +19,12 @@ TEST_CASE("the checker is 1 on cells whose floor sum is even and 0.05 on odd one
 }
 
 TEST_CASE("value noise takes its lattice values at integer points, stays from 0 up to 1 and varies continuously") {
-  for (int x = -3; x <= 3; ++x) CHECK(cpu::valueNoise({static_cast<float>(x), 2.0f, -1.0f}) == cpu::latticeValue(x, 2, -1));
+  for (int x = -3; x <= 3; ++x) CHECK(valueNoise({static_cast<float>(x), 2.0f, -1.0f}) == latticeValue(x, 2, -1));
   // The hash spreads neighbouring corners apart: 64 corners take many values.
   int distinct = 0;
   float previous = -1.0f;
   for (int x = 0; x < 64; ++x) {
-    const float v = cpu::latticeValue(x, 0, 0);
+    const float v = latticeValue(x, 0, 0);
     CHECK(v >= 0.0f);
     CHECK(v < 1.0f);
     distinct += std::fabs(v - previous) > 1e-3f;

@@ -9,8 +9,8 @@
 
 #include "../kept_shadow_maps.h"
 #include "cpu/cpu_renderer.h"
-#include "cpu/lighting.h"
-#include "cpu/shadow_maps.h"
+#include "shading/lighting.h"
+#include "shading/shadow_maps.h"
 #include "cpu_test_scenes.h"
 #include "math/transforms.h"
 #include "scene/primitives.h"
@@ -43,8 +43,8 @@ std::array<int, 2> pixelOf(float x, float z) {
 
 // 16x16 maps (`layers` of them) at depth 0.5 everywhere, and a shadow-casting light of `kind` whose
 // shadow-map coordinates are the world's own: a point at z = 0.5 + d lies d behind the stored depth.
-cpu::ShadowMaps constantMaps(int layers) {
-  cpu::ShadowMaps maps;
+ShadowMaps constantMaps(int layers) {
+  ShadowMaps maps;
   maps.reset(16, layers);
   std::fill(maps.depth.begin(), maps.depth.end(), 0.5f);
   return maps;
@@ -129,14 +129,14 @@ TEST_CASE("the shadow bias is max(b_slope·(1 - N·L), b_min): a point just beyo
   // One directional light whose shadow-map coordinates are the world's own (u, v, z) = (x, y, z), and a
   // 16x16 map holding depth 0.5 everywhere: a point at z = 0.5 + d is in shadow exactly when d > bias.
   const FrameLight light = identityLight(LightKind::Directional);
-  const cpu::ShadowMaps maps = constantMaps(1);
+  const ShadowMaps maps = constantMaps(1);
   ShadowSettings shadows;
   shadows.pcfRadius = 0;
   shadows.biasMin = 0.01f;
   const glm::vec3 L{0.0f, 0.0f, 1.0f};
   const auto S = [&](float d, glm::vec3 N, float slope) {
     shadows.biasSlope = slope;
-    return cpu::shadowFactor(maps, light, shadows, {0.5f, 0.5f, 0.5f + d}, N, L);
+    return shadowFactor(maps, light, shadows, {0.5f, 0.5f, 0.5f + d}, N, L);
   };
   const glm::vec3 facing{0.0f, 0.0f, 1.0f};  // N·L = 1: the slope term is 0, b_min decides
   CHECK(S(0.0099f, facing, 0.04f) == 1.0f);
@@ -151,7 +151,7 @@ TEST_CASE("the shadow bias is max(b_slope·(1 - N·L), b_min): a point just beyo
 TEST_CASE("PCF taps beyond a map's edge: lit for a spot or directional map, the edge texel for a point light's cube face") {
   // Shadow-map coordinates are the world's own, a 16x16 map at depth 0.5 and a point at z = 0.6 behind
   // it at u = 0.99, in the last column: a 3x3 kernel has three taps in column 16, beyond the edge.
-  const cpu::ShadowMaps maps = constantMaps(6);
+  const ShadowMaps maps = constantMaps(6);
   ShadowSettings shadows;
   shadows.pcfRadius = 1;
   shadows.biasMin = 0.01f;
@@ -160,7 +160,7 @@ TEST_CASE("PCF taps beyond a map's edge: lit for a spot or directional map, the 
   const auto S = [&](LightKind kind) {
     FrameLight light = identityLight(kind);
     light.light.position = {-10.0f, 0.5f, 0.5f};  // P - position lies along +x: cube face 0
-    return cpu::shadowFactor(maps, light, shadows, P, N, L);
+    return shadowFactor(maps, light, shadows, P, N, L);
   };
   CHECK(S(LightKind::Directional) == doctest::Approx(3.0f / 9.0f));
   CHECK(S(LightKind::Spot) == doctest::Approx(3.0f / 9.0f));

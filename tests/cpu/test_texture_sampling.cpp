@@ -5,7 +5,7 @@
 
 #include <doctest/doctest.h>
 
-#include "cpu/texture_sampling.h"
+#include "shading/texture.h"
 #include "image/mipmap.h"
 #include "image/srgb.h"
 #include "pipeline/material_coefficients.h"
@@ -63,22 +63,22 @@ TEST_CASE("mipmaps: each level halves the one above, box-averaged in linear ligh
 }
 
 TEST_CASE("wraps: REPEAT, CLAMP_TO_EDGE and MIRRORED_REPEAT map every index into the axis") {
-  CHECK(cpu::wrapIndex(-1, 4, Wrap::Repeat) == 3);
-  CHECK(cpu::wrapIndex(9, 4, Wrap::Repeat) == 1);
-  CHECK(cpu::wrapIndex(-1, 4, Wrap::ClampToEdge) == 0);
-  CHECK(cpu::wrapIndex(9, 4, Wrap::ClampToEdge) == 3);
+  CHECK(wrapIndex(-1, 4, Wrap::Repeat) == 3);
+  CHECK(wrapIndex(9, 4, Wrap::Repeat) == 1);
+  CHECK(wrapIndex(-1, 4, Wrap::ClampToEdge) == 0);
+  CHECK(wrapIndex(9, 4, Wrap::ClampToEdge) == 3);
   // Mirrored: 0 1 2 3 | 3 2 1 0 | 0 1 2 3, and to the left 0 | 0 1 2 3.
   const int mirrored[] = {0, 1, 2, 3, 3, 2, 1, 0, 0, 1};
-  for (int i = 0; i < 10; ++i) CHECK(cpu::wrapIndex(i, 4, Wrap::MirroredRepeat) == mirrored[i]);
-  CHECK(cpu::wrapIndex(-1, 4, Wrap::MirroredRepeat) == 0);
-  CHECK(cpu::wrapIndex(-5, 4, Wrap::MirroredRepeat) == 3);
-  CHECK(cpu::wrapIndex(-2147483647, 5, Wrap::MirroredRepeat) >= 0);
+  for (int i = 0; i < 10; ++i) CHECK(wrapIndex(i, 4, Wrap::MirroredRepeat) == mirrored[i]);
+  CHECK(wrapIndex(-1, 4, Wrap::MirroredRepeat) == 0);
+  CHECK(wrapIndex(-5, 4, Wrap::MirroredRepeat) == 3);
+  CHECK(wrapIndex(-2147483647, 5, Wrap::MirroredRepeat) >= 0);
 }
 
 TEST_CASE("level of detail: magnification reads level 0, minification the level log2(rho) names, by each min filter") {
   const Texture t = levelledTexture();
   const glm::vec2 st{0.3f, 0.6f};
-  const auto read = [&](MinFilter min, float rho) { return cpu::sampleTexture(t, withMin(min), st, footprint(rho)).r; };
+  const auto read = [&](MinFilter min, float rho) { return sampleTexture(t, withMin(min), st, footprint(rho)).r; };
   // rho <= 1 magnifies, whatever the min filter.
   CHECK(read(MinFilter::LinearMipmapLinear, 1.0f) == linear(200));
   CHECK(read(MinFilter::NearestMipmapNearest, 0.25f) == linear(200));
@@ -99,27 +99,27 @@ TEST_CASE("level of detail: magnification reads level 0, minification the level 
   CHECK(read(MinFilter::LinearMipmapLinear, 1e6f) == linear(40));
   CHECK(read(MinFilter::NearestMipmapNearest, std::numeric_limits<float>::infinity()) == linear(40));
   // The footprint is the longer of the two screen axes, in texels of each texture axis.
-  CHECK(cpu::footprintSquared({0.0f, 0.0f, 0.0f, 4.0f / 16.0f}, 16, 16) == 16.0f);
-  CHECK(cpu::footprintSquared({3.0f / 16.0f, 4.0f / 16.0f, 0.0f, 0.0f}, 16, 16) == 25.0f);
-  CHECK(cpu::footprintSquared({1.0f / 16.0f, 0.0f, 0.0f, 0.0f}, 64, 16) == 16.0f);
+  CHECK(footprintSquared({0.0f, 0.0f, 0.0f, 4.0f / 16.0f}, 16, 16) == 16.0f);
+  CHECK(footprintSquared({3.0f / 16.0f, 4.0f / 16.0f, 0.0f, 0.0f}, 16, 16) == 25.0f);
+  CHECK(footprintSquared({1.0f / 16.0f, 0.0f, 0.0f, 0.0f}, 64, 16) == 16.0f);
   // NaN derivatives magnify (level 0), as in GLSL, where the comparison is false too.
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  CHECK(cpu::sampleTexture(t, withMin(MinFilter::LinearMipmapLinear), st, {nan, 0.0f, 0.0f, 0.0f}).r == linear(200));
+  CHECK(sampleTexture(t, withMin(MinFilter::LinearMipmapLinear), st, {nan, 0.0f, 0.0f, 0.0f}).r == linear(200));
 }
 
 TEST_CASE("within a level: NEAREST reads the texel under the point, LINEAR mixes the four around it") {
   Image image(2, 1);
   image.at(0, 0) = {0, 0, 0, 255}, image.at(1, 0) = {255, 255, 255, 255};
   // s = 0.5 is the boundary between the two texels: NEAREST takes the right one, LINEAR half of each.
-  CHECK(cpu::sampleLevel(image, TexelEncoding::Srgb, false, Wrap::ClampToEdge, Wrap::ClampToEdge, {0.5f, 0.5f}).r == 1.0f);
-  CHECK(cpu::sampleLevel(image, TexelEncoding::Srgb, false, Wrap::ClampToEdge, Wrap::ClampToEdge, {0.49f, 0.5f}).r == 0.0f);
-  CHECK(cpu::sampleLevel(image, TexelEncoding::Srgb, true, Wrap::ClampToEdge, Wrap::ClampToEdge, {0.5f, 0.5f}).r == 0.5f);
+  CHECK(sampleLevel(image, TexelEncoding::Srgb, false, Wrap::ClampToEdge, Wrap::ClampToEdge, {0.5f, 0.5f}).r == 1.0f);
+  CHECK(sampleLevel(image, TexelEncoding::Srgb, false, Wrap::ClampToEdge, Wrap::ClampToEdge, {0.49f, 0.5f}).r == 0.0f);
+  CHECK(sampleLevel(image, TexelEncoding::Srgb, true, Wrap::ClampToEdge, Wrap::ClampToEdge, {0.5f, 0.5f}).r == 0.5f);
   // Beyond the right edge: CLAMP keeps white, REPEAT wraps to black, MIRRORED reflects back to white.
-  CHECK(cpu::sampleLevel(image, TexelEncoding::Srgb, true, Wrap::ClampToEdge, Wrap::ClampToEdge, {1.0f, 0.5f}).r == 1.0f);
-  CHECK(cpu::sampleLevel(image, TexelEncoding::Srgb, true, Wrap::Repeat, Wrap::ClampToEdge, {1.0f, 0.5f}).r == 0.5f);
-  CHECK(cpu::sampleLevel(image, TexelEncoding::Srgb, true, Wrap::MirroredRepeat, Wrap::ClampToEdge, {1.0f, 0.5f}).r == 1.0f);
-  CHECK(cpu::sampleLevel(image, TexelEncoding::Srgb, false, Wrap::Repeat, Wrap::Repeat, {1.2f, 0.5f}).r == 0.0f);
-  CHECK(cpu::sampleLevel(image, TexelEncoding::Srgb, false, Wrap::MirroredRepeat, Wrap::Repeat, {1.2f, 0.5f}).r == 1.0f);
+  CHECK(sampleLevel(image, TexelEncoding::Srgb, true, Wrap::ClampToEdge, Wrap::ClampToEdge, {1.0f, 0.5f}).r == 1.0f);
+  CHECK(sampleLevel(image, TexelEncoding::Srgb, true, Wrap::Repeat, Wrap::ClampToEdge, {1.0f, 0.5f}).r == 0.5f);
+  CHECK(sampleLevel(image, TexelEncoding::Srgb, true, Wrap::MirroredRepeat, Wrap::ClampToEdge, {1.0f, 0.5f}).r == 1.0f);
+  CHECK(sampleLevel(image, TexelEncoding::Srgb, false, Wrap::Repeat, Wrap::Repeat, {1.2f, 0.5f}).r == 0.0f);
+  CHECK(sampleLevel(image, TexelEncoding::Srgb, false, Wrap::MirroredRepeat, Wrap::Repeat, {1.2f, 0.5f}).r == 1.0f);
 }
 
 TEST_CASE("KHR_texture_transform: the coordinates by T*R*S as Khronos' TextureTransformTest shows it, the derivatives by its linear part") {
@@ -128,7 +128,7 @@ TEST_CASE("KHR_texture_transform: the coordinates by T*R*S as Khronos' TextureTr
   m.baseColorTransform.rotation = 1.5707963267948966f;  // pi/2: s' = t * k_y + o_x, t' = -s * k_x + o_y
   m.baseColorTransform.scale = {2.0f, 4.0f};
   const CourseMaterial course = courseMaterial(m, MaterialOverrides{});
-  const cpu::TransformedTexcoords t = cpu::transformTexcoords(course, {0.1f, 0.2f}, {1.0f, 0.0f, 0.0f, 1.0f});
+  const TransformedTexcoords t = transformTexcoords(course, {0.1f, 0.2f}, {1.0f, 0.0f, 0.0f, 1.0f});
   CHECK(t.st.x == doctest::Approx(0.2f * 4.0f + 0.25f));
   CHECK(t.st.y == doctest::Approx(-0.1f * 2.0f + 0.5f));
   CHECK(t.derivatives.x == doctest::Approx(0.0f).epsilon(1e-6));  // ds'/dx = a*ds/dx + b*dt/dx, no offset
@@ -137,7 +137,7 @@ TEST_CASE("KHR_texture_transform: the coordinates by T*R*S as Khronos' TextureTr
   CHECK(t.derivatives.w == doctest::Approx(0.0f).epsilon(1e-6));
   // No transform: the identity, and every finite coordinate unchanged to the bit.
   const CourseMaterial plain = courseMaterial(Material{}, MaterialOverrides{});
-  const cpu::TransformedTexcoords same = cpu::transformTexcoords(plain, {0.3f, -7.25f}, {0.5f, 0.25f, -1.0f, 2.0f});
+  const TransformedTexcoords same = transformTexcoords(plain, {0.3f, -7.25f}, {0.5f, 0.25f, -1.0f, 2.0f});
   CHECK(same.st == glm::vec2(0.3f, -7.25f));
   CHECK(same.derivatives == glm::vec4(0.5f, 0.25f, -1.0f, 2.0f));
 }

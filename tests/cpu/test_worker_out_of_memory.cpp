@@ -10,7 +10,7 @@
 #include <thread>
 
 #include "cpu/cpu_renderer.h"
-#include "cpu/thread_pool.h"
+#include "common/thread_pool.h"
 #include "pipeline/frame_inputs.h"
 #include "scene/default_scene.h"
 
@@ -43,7 +43,7 @@ int main() {
   // The pool itself: an exception on worker 1 reaches run()'s caller once
   // every worker has finished, and the pool runs the next job normally.
   {
-    cpu::ThreadPool pool(2);
+    ThreadPool pool(2);
     std::atomic<int> finished{0};
     bool caught = false;
     try {

@@ -1,4 +1,4 @@
-# The wide objects (renderer/cpu/*_avx2.cpp, *_avx512.cpp) may define no
+# The wide objects (renderer/cpu/*_avx2.cpp, *_avx512.cpp, renderer/shading/resolve_avx512.cpp) may define no
 # function another object could also define: the linker keeps one copy of
 # an inline function or template instance for the whole program, and an
 # AVX2 or AVX-512 copy of a shared one would run on CPUs without it.
@@ -19,8 +19,8 @@ foreach(object IN LISTS OBJECTS)
     if(NOT line MATCHES "[|] *FUNC *[|]")  # sysv format: name|value|class|type|size|line|section
       continue()
     endif()
-    if(line MATCHES "^facet::cpu::([A-Za-z]+)[(]" AND CMAKE_MATCH_1 IN_LIST ENTRIES)
-      list(APPEND found ${CMAKE_MATCH_1})
+    if(line MATCHES "^facet::(cpu::)?([A-Za-z]+)[(]" AND CMAKE_MATCH_2 IN_LIST ENTRIES)
+      list(APPEND found ${CMAKE_MATCH_2})
     elseif(NOT line MATCHES "${TYPES}")
       message(FATAL_ERROR "${object} defines a function other objects may define too, and the linker may keep its wide copy:\n  ${line}")
     endif()

@@ -1,5 +1,5 @@
 // The shaders' arithmetic (shaders/shading_math.glsl, lighting.glsl,
-// srgb.glsl, blending.glsl) against its C++ mirror (renderer/cpu/shading_math.h,
+// srgb.glsl, blending.glsl) against its C++ mirror (renderer/shading/shading_math.h,
 // lighting.h, blending.h, image/srgb.h) on llvmpipe, bit for bit, over random inputs and
 // the edge cases each function decides: a fragment shader evaluates one
 // GLSL expression per pixel from two input textures and writes the floats.
@@ -13,10 +13,10 @@
 
 #include <doctest/doctest.h>
 
-#include "cpu/blending.h"
-#include "cpu/lighting.h"
-#include "cpu/physically_based.h"
-#include "cpu/shading_math.h"
+#include "shading/blending.h"
+#include "shading/lighting.h"
+#include "shading/physically_based.h"
+#include "shading/shading_math.h"
 #include "gl/frame_block.h"
 #include "gl/gl_object.h"
 #include "gl/shader_program.h"
@@ -104,13 +104,13 @@ TEST_CASE("shader arithmetic: dot3, cross3, length3 and normalize3 give the CPU'
   std::mt19937 rng(1);
   const auto a = random(rng, -10.0f, 10.0f), b = random(rng, -10.0f, 10.0f);
   CHECK(mismatches("vec4(dot3(a.xyz, b.xyz), length3(a.xyz), 0.0, 0.0)", a, b, [](const glm::vec4& x, const glm::vec4& y) {
-          return glm::vec4(cpu::dot3(glm::vec3(x), glm::vec3(y)), cpu::length3(glm::vec3(x)), 0.0f, 0.0f);
+          return glm::vec4(dot3(glm::vec3(x), glm::vec3(y)), length3(glm::vec3(x)), 0.0f, 0.0f);
         }) == 0);
   CHECK(mismatches("vec4(normalize3(a.xyz), 0.0)", a, b, [](const glm::vec4& x, const glm::vec4&) {
-          return glm::vec4(cpu::normalize3(glm::vec3(x)), 0.0f);
+          return glm::vec4(normalize3(glm::vec3(x)), 0.0f);
         }) == 0);
   CHECK(mismatches("vec4(cross3(a.xyz, b.xyz), 0.0)", a, b, [](const glm::vec4& x, const glm::vec4& y) {
-          return glm::vec4(cpu::cross3(glm::vec3(x), glm::vec3(y)), 0.0f);
+          return glm::vec4(cross3(glm::vec3(x), glm::vec3(y)), 0.0f);
         }) == 0);
 }
 
@@ -122,7 +122,7 @@ TEST_CASE("shader arithmetic: power, the specular exponent, gives the CPU's bits
   for (std::size_t i = 64; i < 128; ++i) exponent[i].x = 1.0f / 2.4f;
   CHECK(mismatches("vec4(power(a.x, b.x), power(a.y, b.y), power(a.z, 2.4), power(a.w, 1.0))", base, exponent,
                    [](const glm::vec4& x, const glm::vec4& y) {
-                     return glm::vec4(cpu::power(x.x, y.x), cpu::power(x.y, y.y), cpu::power(x.z, 2.4f), cpu::power(x.w, 1.0f));
+                     return glm::vec4(power(x.x, y.x), power(x.y, y.y), power(x.z, 2.4f), power(x.w, 1.0f));
                    }) == 0);
 }
 
@@ -172,7 +172,7 @@ TEST_CASE("shader arithmetic: attenuation and the selects of max, min and their 
   x[0] = {std::nanf(""), -0.0f, 0.0f, 1.0f};
   CHECK(mismatches("vec4(maxZero(a.x), minOne(a.y), attenuation(b.xyz, abs(a.z) * 10.0), maxZero(a.w))", x, c,
                    [](const glm::vec4& v, const glm::vec4& k) {
-                     return glm::vec4(cpu::maxZero(v.x), cpu::minOne(v.y), cpu::attenuation(glm::vec3(k), std::fabs(v.z) * 10.0f), cpu::maxZero(v.w));
+                     return glm::vec4(maxZero(v.x), minOne(v.y), attenuation(glm::vec3(k), std::fabs(v.z) * 10.0f), maxZero(v.w));
                    }) == 0);
 }
 
@@ -183,12 +183,12 @@ TEST_CASE("shader arithmetic: exp2Of and shading=pbr's Fresnel, GGX, Smith visib
   const glm::vec4 ends[] = {{0, 0, 0, 0}, {1, 1, 1, 1}, {1, 0, 1e-6f, 0}, {0, 1, 1e-6f, 1}, {0.5f, 0.5f, 1.0f, 0.5f}};
   for (std::size_t i = 0; i < 5; ++i) x[i] = ends[i], y[i] = ends[4 - i];
   CHECK(mismatches("vec4(schlickFresnel(a.xyz, b.x), ggxDistribution(a.w, b.y))", x, y, [](const glm::vec4& a, const glm::vec4& b) {
-          return glm::vec4(cpu::schlickFresnel(glm::vec3(a), b.x), ggxDistribution(a.w, b.y));
+          return glm::vec4(schlickFresnel(glm::vec3(a), b.x), ggxDistribution(a.w, b.y));
         }) == 0);
   CHECK(mismatches("vec4(smithVisibility(a.x, a.y, b.z), environmentBrdf(a.z, b.w), exp2Of(-200.0 * a.w + 60.0))", x, y,
                    [](const glm::vec4& a, const glm::vec4& b) {
-                     const glm::vec2 ab = cpu::environmentBrdf(a.z, b.w);
-                     return glm::vec4(smithVisibility(a.x, a.y, b.z), ab.x, ab.y, cpu::exp2Of(-200.0f * a.w + 60.0f));
+                     const glm::vec2 ab = environmentBrdf(a.z, b.w);
+                     return glm::vec4(smithVisibility(a.x, a.y, b.z), ab.x, ab.y, exp2Of(-200.0f * a.w + 60.0f));
                    }) == 0);
 }
 
@@ -207,14 +207,14 @@ TEST_CASE("shader arithmetic: both blending equations (over and additive), the p
       const std::string add = additive ? "true" : "false";
       CAPTURE(add);
       CHECK(mismatches("blend(a, b.xyz, b.w, " + p + ", " + add + ")", held, fragment, [&](const glm::vec4& a, const glm::vec4& b) {
-              return cpu::blend(a, glm::vec3(b), b.w, blending, additive);
+              return blend(a, glm::vec3(b), b.w, blending, additive);
             }) == 0);
     }
     CHECK(mismatches("vec4(stored(a.xyz, a.w, " + p + ").xyz, unstored(b, " + p + ").x)", held, fragment, [&](const glm::vec4& a, const glm::vec4& b) {
-            return glm::vec4(glm::vec3(cpu::stored(glm::vec3(a), a.w, blending)), cpu::unstored(b, blending).x);
+            return glm::vec4(glm::vec3(stored(glm::vec3(a), a.w, blending)), unstored(b, blending).x);
           }) == 0);
     CHECK(mismatches("premultipliedOf(b, " + p + ") + a", held, fragment, [&](const glm::vec4& a, const glm::vec4& b) {
-            return a + cpu::premultipliedOf(b, blending);  // anti-aliasing's sum (shaders/accumulate.frag)
+            return a + premultipliedOf(b, blending);  // anti-aliasing's sum (shaders/accumulate.frag)
           }) == 0);
   }
 }

@@ -56,7 +56,7 @@ TEST_CASE("a base colour texel reaches the shader as its byte and decodes to the
   gl.ReadPixels(0, 0, kWidth, 1, GL_RGBA, GL_FLOAT, values.data());
   REQUIRE(gl.GetError() == GL_NO_ERROR);
 
-  // renderer/cpu/texture_sampling.cpp reads the same table: compared bit for bit.
+  // renderer/shading/texture.cpp reads the same table: compared bit for bit.
   const SrgbTables& expected = srgbTables();
   int mismatches = 0, firstMismatch = -1;
   for (int c = 0; c < kWidth; ++c) {

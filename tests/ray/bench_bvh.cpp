@@ -11,7 +11,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "cpu/thread_pool.h"
+#include "common/thread_pool.h"
 #include "ray/bvh.h"
 #include "ray_test_scenes.h"
 
@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
   std::printf("%zu triangles, %zu spheres\n", primitives.triangleCount(), primitives.sphereCount());
   Bvh bvh;
   for (const int workers : {1, 2}) {
-    cpu::ThreadPool pool(workers);
+    ThreadPool pool(workers);
     bvh = Bvh(primitives, pool);
     std::printf("build, %d worker%s: %.1f ms\n", workers, workers > 1 ? "s" : "", bvh.stats().buildMilliseconds);
   }

@@ -12,7 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include "common/error.h"
-#include "cpu/thread_pool.h"
+#include "common/thread_pool.h"
 #include "ray/brute_force.h"
 #include "ray/bvh.h"
 #include "ray_test_scenes.h"
@@ -92,7 +92,7 @@ const BvhNode* leafOf(const Bvh& bvh, std::uint32_t slot) {
 }  // namespace
 
 TEST_CASE("bvh: the nearest hit is brute force's, bit for bit, and occlusion agrees, on random scenes") {
-  cpu::ThreadPool pool(2);
+  ThreadPool pool(2);
   const test::SceneKind kinds[] = {test::SceneKind::Scattered, test::SceneKind::Clustered, test::SceneKind::Coincident,
                                    test::SceneKind::Slivers, test::SceneKind::Broken};
   for (const test::SceneKind kind : kinds)
@@ -128,7 +128,7 @@ TEST_CASE("bvh: at exactly the same t the smaller primitive index wins, whicheve
   }
   const auto triangles = static_cast<std::uint32_t>(primitives.triangleCount());
   for (int i = 0; i < 20; ++i) primitives.spheres.emplace_back(-5.0f, 0.25f, 0.5f, 0.75f);
-  cpu::ThreadPool pool(1);
+  ThreadPool pool(1);
   const Bvh bvh(primitives, pool);
   for (const float dx : {1.0f, -1.0f}) {
     const Ray ray{{-4.0f * dx + 0.1f, 0.2f, 0.1f}, {dx, 0.0f, 0.0f}};
@@ -152,7 +152,7 @@ TEST_CASE("bvh: the same nodes and the same primitive order with 1, 2 and 3 work
   primitives.spheres.insert(primitives.spheres.end(), more.spheres.begin(), more.spheres.end());
   std::vector<Bvh> trees;
   for (const int workers : {1, 2, 3}) {
-    cpu::ThreadPool pool(workers);
+    ThreadPool pool(workers);
     trees.emplace_back(primitives, pool);
   }
   for (std::size_t k = 1; k < trees.size(); ++k) {
@@ -169,7 +169,7 @@ TEST_CASE("bvh: the same nodes and the same primitive order with 1, 2 and 3 work
 
 TEST_CASE("bvh: the nodes are 32 bytes in depth-first order, each box holds its children and its primitives, each finite primitive is in one leaf") {
   static_assert(sizeof(BvhNode) == 32);
-  cpu::ThreadPool pool(2);
+  ThreadPool pool(2);
   for (const test::SceneKind kind : {test::SceneKind::Scattered, test::SceneKind::Coincident, test::SceneKind::Broken}) {
     CAPTURE(name(kind));
     const Primitives primitives = test::randomScene(kind, 5, 3000);
@@ -219,7 +219,7 @@ TEST_CASE("bvh: a scene that makes the SAH peel off a few primitives per level g
   Primitives primitives;
   float x = 1.0f;
   for (int k = 0; k < 300; ++k, x *= 1.25f) primitives.spheres.emplace_back(x, 0.0f, 0.0f, 0.25f * x);
-  cpu::ThreadPool pool(2);
+  ThreadPool pool(2);
   const Bvh bvh(primitives, pool);
   CHECK(bvh.stats().maxDepth <= kMaxBvhDepth);
   CHECK(bvh.stats().maxDepth > 32);  // the case is the one it claims: the SAH went deep
@@ -237,7 +237,7 @@ TEST_CASE("bvh: a scene that makes the SAH peel off a few primitives per level g
 }
 
 TEST_CASE("bvh: no primitives, or only broken ones, hit nothing") {
-  cpu::ThreadPool pool(2);
+  ThreadPool pool(2);
   const Ray ray{{0, 0, 0}, {0, 0, -1}};
   Hit hit;
   const Bvh none;
@@ -268,14 +268,14 @@ TEST_CASE("bvh: counts beyond the node format, and corners that are not whole tr
   CHECK_THROWS_AS(checkPrimitiveCounts(3 * most, std::numeric_limits<std::size_t>::max()), Error);
   Primitives partial;
   partial.triangleCorners = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-  cpu::ThreadPool pool(1);
+  ThreadPool pool(1);
   CHECK_THROWS_AS(Bvh(partial, pool), Error);
   Hit hit;
   CHECK_THROWS_AS(intersectBruteForce(partial, Ray{{0, 0, 0}, {0, 0, 1}}, hit), Error);
 }
 
 TEST_CASE("bvh: rays from inside a closed mesh never leak through the tree") {
-  cpu::ThreadPool pool(2);
+  ThreadPool pool(2);
   for (std::uint32_t seed = 4; seed <= 5; ++seed) {
     const test::ClosedMesh mesh = test::icosphere(4, seed);
     const Bvh bvh(mesh.primitives, pool);

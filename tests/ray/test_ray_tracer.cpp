@@ -14,7 +14,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "common/error.h"
-#include "cpu/thread_pool.h"
+#include "common/thread_pool.h"
 #include "cpu/cpu_renderer.h"
 #include "math/transforms.h"
 #include "pipeline/frame_inputs.h"
@@ -347,7 +347,7 @@ TEST_CASE("stochastic ray tracing: an area light's penumbra spans what similar t
   light.radius = r;
   s.lights = {light};
   const FrameInputs frame = buildFrameInputs(scene, s);
-  cpu::ThreadPool pool(1);
+  ThreadPool pool(1);
   const ray::TracedScene traced(scene, frame, true, pool);
   const ray::RayTracer tracer(traced, frame);
   // The fraction of the light's disk a floor point at x sees, over 4096 paths.

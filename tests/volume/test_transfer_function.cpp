@@ -11,7 +11,7 @@
 #include <doctest/doctest.h>
 
 #include "common/error.h"
-#include "volume/transfer_function.h"
+#include "scene/transfer_function.h"
 
 using namespace facet;
 

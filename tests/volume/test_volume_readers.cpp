@@ -21,7 +21,7 @@
 #include "common/error.h"
 #include "scratch_folder.h"
 #include "volume/load_volume.h"
-#include "volume/volume.h"
+#include "scene/volume.h"
 
 using namespace facet;
 namespace fs = std::filesystem;

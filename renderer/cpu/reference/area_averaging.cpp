@@ -5,8 +5,8 @@
 #include <cstdio>
 
 #include "common/error.h"
-#include "cpu/blending.h"
-#include "cpu/environment_mapping.h"
+#include "shading/blending.h"
+#include "shading/environment.h"
 #include "scene/memory_budget.h"
 #include "settings/render_settings.h"
 

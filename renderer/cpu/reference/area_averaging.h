@@ -14,7 +14,7 @@
 #include <glm/vec4.hpp>
 
 #include "cpu/area_coverage.h"
-#include "cpu/function_ref.h"
+#include "common/function_ref.h"
 #include "cpu/interpolation.h"
 #include "cpu/triangle_setup.h"
 #include "image/color_buffer.h"

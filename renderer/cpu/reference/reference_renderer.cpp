@@ -15,7 +15,7 @@
 // (cpu_renderer.cpp) gets the same pixels by the same rules. Area-weighted
 // averaging (antialiasing.pattern=area) draws pass 2 twice, in place of
 // coverage: once to cut the pixels into cells, once to shade them (area_averaging.h).
-#include "cpu/fog.h"
+#include "shading/fog.h"
 #include "cpu/reference/reference_renderer.h"
 #include "cpu/reference/area_averaging.h"
 
@@ -29,23 +29,23 @@
 #include "common/quote.h"
 #include "common/stopwatch.h"
 #include "cpu/alpha_mask.h"
-#include "cpu/bump_mapping.h"
+#include "shading/bump_mapping.h"
 #include "cpu/clipper.h"
-#include "cpu/environment_mapping.h"
-#include "cpu/procedural.h"
+#include "shading/environment.h"
+#include "shading/procedural.h"
 #include "cpu/interpolation.h"
-#include "cpu/normal_mapping.h"
-#include "cpu/lighting.h"
+#include "shading/normal_mapping.h"
+#include "shading/lighting.h"
 #include "cpu/line_pass.h"
-#include "cpu/physically_based.h"
+#include "shading/physically_based.h"
 #include "cpu/rasterize.h"
-#include "cpu/shadow_maps.h"
-#include "cpu/surface_shading.h"
-#include "cpu/texture_sampling.h"
+#include "shading/shadow_maps.h"
+#include "shading/surface_shading.h"
+#include "shading/texture.h"
 #include "cpu/triangle_setup.h"
 #include "cpu/varyings.h"
-#include "cpu/blending.h"
-#include "cpu/vertex_math.h"
+#include "shading/blending.h"
+#include "shading/transform.h"
 #include "image/srgb.h"
 #include "pipeline/frame_checks.h"
 
@@ -211,7 +211,7 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
     const FrameInstance& instance = frame.instances[run.instance];
     const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
     const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
-    // What the fragment stage shades with (cpu/surface_shading.h), and a texture coordinate set at a pixel, from its varyings.
+    // What the fragment stage shades with (shading/surface_shading.h), and a texture coordinate set at a pixel, from its varyings.
     const SurfaceDraw draw = surfaceDraw(scene, frame, instance);
     const Texture* texture = draw.texture;
     const bool colored = draw.colored;
@@ -261,7 +261,7 @@ void litPass(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
         flat[0] = illuminate(frame, maps, summed, centroid, N, V);
         if (!instance.cullBackFaces) flat[1] = illuminate(frame, maps, summed, centroid, -N, V);
       }
-      // Fragment stage: the point the varyings describe at the pixel, shaded (cpu/surface_shading.h).
+      // Fragment stage: the point the varyings describe at the pixel, shaded (shading/surface_shading.h).
       const auto surface = [&](const float* f, bool front, const Interpolation& planes, int px, int py) -> glm::vec3 {
         SurfacePoint p;
         p.front = front;
@@ -360,7 +360,7 @@ class ReferenceRenderer final : public Renderer {
     litPass(scene, frame, maps, target, Drawn::Opaque);
     linePass(scene, frame, target);
     litPass(scene, frame, maps, target, Drawn::Blended);
-    // The resolve, one pixel at a time (cpu/resolve.cpp does it four channels at once).
+    // The resolve, one pixel at a time (shading/resolve.cpp does it four channels at once).
     result.image = Image(frame.width, frame.height);
     for (int y = 0; y < frame.height; ++y)
       for (int x = 0; x < frame.width; ++x) result.image.at(x, y) = encodePixel(unstored(color.at(x, y), frame.blending));
