@@ -6,7 +6,7 @@
 #include "cpu/interpolation.h"
 #include "shading/alpha_mask.h"
 #include "shading/texture.h"
-#include "cpu/varyings.h"
+#include "shading/lit_varyings.h"
 #include "pipeline/material_coefficients.h"
 
 namespace facet::cpu {

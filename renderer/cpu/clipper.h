@@ -8,9 +8,10 @@
 
 #include <glm/vec4.hpp>
 
+#include "shading/lit_varyings.h"  // kMaxVaryings
+
 namespace facet::cpu {
 
-inline constexpr int kMaxVaryings = 23;  // the most varyingLayout (varyings.h) uses
 
 // A vertex after the vertex stage: clip position and the attributes that
 // are interpolated across the triangle.

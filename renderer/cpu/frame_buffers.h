@@ -21,6 +21,7 @@
 
 #include "cpu/clipper.h"
 #include "cpu/interpolation.h"
+#include "shading/draw_uniforms.h"
 #include "shading/lighting.h"
 #include "cpu/line_raster.h"
 #include "cpu/triangle_setup.h"
@@ -133,6 +134,7 @@ inline std::size_t trianglesInTile(const std::vector<WorkerBins>& workers, int t
 
 struct FrameBuffers {
   PassVertices vertices;
+  std::vector<DrawUniforms> draws;  // each instance's, found once per lit pass
   std::vector<WorkerBins> workers;
   std::vector<DrawnLine> lines;  // the lit pass's segments and points (line_pass.h)
   std::vector<std::uint32_t> visible;  // hsr = scanline: each pixel's polygon (scanline_zbuffer.h)

@@ -9,6 +9,8 @@
 
 #include "cpu/clipper.h"
 #include "cpu/plane_equations.h"
+#include "shading/draw_uniforms.h"
+#include "shading/lit_varyings.h"
 
 namespace facet::cpu {
 
@@ -92,5 +94,19 @@ class Interpolation {
     Plane plane[kMaxVaryings];
   } varying_;
 };
+
+// The point of a surface the varyings set up on `in` describe at pixel (px,
+// py), in `mode`'s layout (the first `used`; shading/lit_varyings.h), seen
+// from `front`, flat's face illumination from `flat`; with the quad
+// derivatives of the texture coordinate sets the draw's maps sample.
+inline SurfacePoint surfacePointAt(const Interpolation& in, const DrawUniforms& d, ShadingMode mode, int used, bool front, const Illumination* flat,
+                                   int px, int py) {
+  float v[kMaxVaryings];
+  if (used) in.varyingsAt(px, py, v);
+  SurfacePoint p = surfacePointOf(mode, v, used, front, flat);
+  for (int set = 0; set < 2; ++set)
+    if (d.samplesSet[set]) p.derivatives[set] = in.quadDerivatives(varyingLayout(mode).texcoord(set), px, py);
+  return p;
+}
 
 }  // namespace facet::cpu

@@ -14,39 +14,24 @@
 
 #include "cpu/alpha_mask.h"
 #include "cpu/binning.h"
-#include "shading/blending.h"
 #include "cpu/depth_rows.h"
-#include "shading/environment.h"
-#include "shading/fog.h"
-#include "cpu/fragment_reads.h"
-#include "shading/bump_mapping.h"
 #include "cpu/interpolation.h"
-#include "shading/normal_mapping.h"
-#include "shading/lighting.h"
 #include "cpu/line_pass.h"
 #include "cpu/passes.h"
 #include "cpu/phong_batch.h"
-#include "shading/physically_based.h"
-#include "shading/procedural.h"
-#include "shading/resolve.h"
 #include "cpu/scanline_zbuffer.h"
-#include "shading/texture.h"
 #include "cpu/tile_pixels.h"
 #include "cpu/tile_raster.h"
-#include "cpu/varyings.h"
-#include "shading/transform.h"
+#include "shading/blending.h"
+#include "shading/draw_uniforms.h"
+#include "shading/environment.h"
+#include "shading/fog.h"
+#include "shading/lit_programs.h"
+#include "shading/resolve.h"
+#include "shading/texture.h"
 
 namespace facet::cpu {
 namespace {
-
-
-void put(float* v, int at, glm::vec3 value) {
-  for (int k = 0; k < 3; ++k) v[at + k] = value[k];
-}
-
-void put(float* v, int at, glm::vec4 value) {
-  for (int k = 0; k < 4; ++k) v[at + k] = value[k];
-}
 
 
 constexpr std::uint32_t kNoTriangle = std::numeric_limits<std::uint32_t>::max();
@@ -54,26 +39,18 @@ constexpr std::uint32_t kNoTriangle = std::numeric_limits<std::uint32_t>::max();
 // pixels of a row lie in one tile's row, which lessCovered reads from the block's first column.
 static_assert(kTileSize % 8 == 0);
 
-// The material Gouraud and flat shading sum at a vertex or a triangle: k_e = 0
-// where an emissive texture adds k_e·E at the pixel instead (PIPELINE.md, section 5).
-LaneMaterial<float> vertexMaterial(const CourseMaterial& material, const Mesh& mesh) {
-  return laneMaterial(material, readsMap(material.emissiveMap, mesh) ? glm::vec3(0.0f) : material.emissive);
-}
-
 // The varyings the frame's vertex stage packs (PassVertices::window): the
 // most that any instance reads, in its fragments and their α
-// (fragmentReads: every reader sets up that prefix at most) or in its lines
-// and points (COLOR_0). A frame of plain Phong surfaces packs P and N alone:
-// 40 bytes a vertex instead of 88, written once and read by binning and by
-// every tile.
-int packedVaryings(const Scene& scene, const FrameInputs& frame) {
+// (DrawUniforms::used: every reader sets up that prefix at most) or in its
+// lines and points (COLOR_0). A frame of plain Phong surfaces packs P and N
+// alone: 40 bytes a vertex instead of 88, written once and read by binning
+// and by every tile.
+int packedVaryings(const Scene& scene, const FrameInputs& frame, const std::vector<DrawUniforms>& draws) {
   const VaryingLayout layout = varyingLayout(frame.shading);
   int packed = 0;
-  for (const FrameInstance& instance : frame.instances) {
-    const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
-    const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
-    const FragmentReads reads = fragmentReads(frame.shading, scene, frame, material, mesh);
-    packed = std::max(packed, reads.used);
+  for (std::size_t i = 0; i < frame.instances.size(); ++i) {
+    const Mesh& mesh = scene.meshes[static_cast<std::size_t>(frame.instances[i].mesh)];
+    packed = std::max(packed, draws[i].used);
     if (!mesh.lines.empty() || !mesh.points.empty()) packed = std::max(packed, layout.color + 4);
   }
   return packed;
@@ -98,6 +75,18 @@ int runOf(const std::uint32_t* row, std::uint32_t id, int most) {
 #endif
 }
 
+// The program of each mode the tile shades with (shading/lit_programs.h).
+template <ShadingMode kMode>
+struct LitProgramOf;
+template <>
+struct LitProgramOf<ShadingMode::Flat> { using Type = LitFlatProgram; };
+template <>
+struct LitProgramOf<ShadingMode::Gouraud> { using Type = LitGouraudProgram; };
+template <>
+struct LitProgramOf<ShadingMode::Phong> { using Type = LitPhongProgram; };
+template <>
+struct LitProgramOf<ShadingMode::Pbr> { using Type = LitPbrProgram; };
+
 // The fragment stage of one shading mode: no branch on the mode per pixel.
 // It shades the pixels of `box` (within tile r) where `ids` (the tile's, row
 // by row) names a triangle, and writes (colour, 1) there into `color`; with
@@ -106,21 +95,18 @@ int runOf(const std::uint32_t* row, std::uint32_t id, int most) {
 // place, or Phong's and pbr's bent, normalized and two-sided normal). With
 // `over` (a blended triangle's pass), each colour blends over what `color`
 // holds with the pixel's α from `alpha` (the tile's, row by row) instead.
+// Each pixel is the mode's fragment program at the point its varyings
+// describe; Phong's lighting goes to the batch, many pixels at a time.
 template <ShadingMode kMode>
-void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, WorkerBins::TileScratch& scratch, const std::uint32_t* ids,
-               const TileRect& r, const TileRect& box, const TilePixels& color, bool normals, int lanes, const BlendOver* over, const float* alpha) {
+void shadeTile(const FrameInputs& frame, const DrawUniforms* draws, const ShadowMaps& maps, WorkerBins::TileScratch& scratch,
+               const std::uint32_t* ids, const TileRect& r, const TileRect& box, const TilePixels& color, bool normals, int lanes, const BlendOver* over,
+               const float* alpha) {
+  using Program = typename LitProgramOf<kMode>::Type;
   const int tx0 = box.x0, ty0 = box.y0, tx1 = box.x1, ty1 = box.y1;
-  constexpr VaryingLayout layout = varyingLayout(kMode);
   std::uint32_t current = kNoTriangle;
-  std::uint32_t currentInstance = std::numeric_limits<std::uint32_t>::max();  // whose mesh and material the variables below hold: none yet
+  std::uint32_t currentInstance = std::numeric_limits<std::uint32_t>::max();  // whose uniforms `draw` holds: none yet
   Interpolation* in = nullptr;
-  const CourseMaterial* material = nullptr;
-  const Mesh* drawnMesh = nullptr;
-  FragmentReads reads;  // the instance's
-  const Texture *&texture = reads.texture, *&normalMap = reads.normalMap, *&emissiveMap = reads.emissiveMap;
-  const bool &bumpable = reads.bumpable, &colored = reads.colored;
-  const int& used = reads.used;  // varyings set up for the triangle: a prefix of the layout
-  const bool procedural = frame.procedural != Procedural::None;
+  DrawUniforms draw;  // the instance's
   const bool foggy = frame.fog.mode != FogMode::None;  // fog reads 1/w, set up with the varyings
   bool back = false;
   bool plain = false;
@@ -144,18 +130,14 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
         in = &winner.interpolation;
         if (t.instance != currentInstance) {  // what the pixel reads of its mesh and material: once per run of one instance's triangles
           currentInstance = t.instance;
-          const FrameInstance& instance = frame.instances[t.instance];
-          const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
-          material = &frame.materials[static_cast<std::size_t>(instance.material)];
-          drawnMesh = &mesh;
-          reads = fragmentReads(kMode, scene, frame, *material, mesh);
+          draw = draws[t.instance];
           // Phong's plain pixel: lit, without texture, vertex colours, procedural pattern, bent normal,
           // emission map or fog; its P and N go to the batch as they are interpolated.
-          plain = kMode == ShadingMode::Phong && !normals && !texture && !colored && !procedural && !normalMap && !bumpable && !emissiveMap &&
-                  !foggy && !material->unlit;
+          plain = kMode == ShadingMode::Phong && !normals && !draw.texture && !draw.colored && !draw.procedural && !draw.normalMap && !draw.bumpable &&
+                  !draw.emissiveMap && !foggy && !draw.material->unlit;
         }
         back = !t.snapped.frontFacing;
-        if (used || foggy) in->setUpVaryings(used);
+        if (draw.used || foggy) in->setUpVaryings(draw.used);
         if constexpr (kMode == ShadingMode::Flat) flat = &bins.flat[2 * index];
       }
       if constexpr (kMode == ShadingMode::Phong)
@@ -164,77 +146,34 @@ void shadeTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
           // lanes straight into the batch (a lone pixel on four). The pixels one by one, by the same
           // operations, took 34 % of sphere-100k's shaded pixels through 23 scalar stores each.
           const int run = runOf(&ids[k], id, std::min(lanes, tx1 - px + 1));
-          batch.addRun(run, color.offset(px, py), *in, px, py, back, material->baseColor, *material, over ? &alpha[k] : nullptr);
+          batch.addRun(run, color.offset(px, py), *in, px, py, back, draw.material->baseColor, *draw.material, over ? &alpha[k] : nullptr);
           px += run - 1;
           continue;
         }
-      float v[layout.count];
-      if (used) in->varyingsAt(px, py, v);
-      // A texture coordinate set at the pixel, and its quad derivatives (ds/dx, dt/dx, ds/dy, dt/dy).
-      const auto stAt = [&](int set) { return glm::vec2(v[layout.texcoord(set)], v[layout.texcoord(set) + 1]); };
-      const auto derivativesAt = [&](int set) { return in->quadDerivatives(layout.texcoord(set), px, py); };
-      // Phong and pbr: the interpolated normal, bent by a normal texture (whose result is normalized as the
-      // interpolated one is) and by the bump map; the caller normalizes it.
-      const auto bentNormal = [&] {
-        glm::vec3 n(0.0f);
-        if constexpr (kMode == ShadingMode::Pbr || kMode == ShadingMode::Phong) {
-          n = {v[3], v[4], v[5]};
-          if (normalMap || bumpable) {  // the tangent is set up only then
-            const glm::vec4 tangent{v[layout.tangent], v[layout.tangent + 1], v[layout.tangent + 2], v[layout.tangent + 3]};
-            if (normalMap)
-              n = normalMapped(*normalMap, *material, normalize3(n), tangent, stAt(material->normalMap.set), derivativesAt(material->normalMap.set));
-            if (bumpable) n = bumped(*frame.bump.map, frame.bump.scale, normalize3(n), tangent, stAt(0));
-          }
-        }
-        return n;
-      };
+      // The point the varyings describe at the pixel.
+      const SurfacePoint p = surfacePointAt(*in, draw, kMode, draw.used, !back, flat, px, py);
       if (normals) {  // the normals stage: N as shading reads it, two-sided; Gouraud frames arrive as Phong ones (normalsFrame)
         glm::vec3 N(0.0f);
-        if constexpr (kMode == ShadingMode::Flat) N = (back ? flat[1] : flat[0]).diffuse;
-        else if constexpr (kMode == ShadingMode::Pbr || kMode == ShadingMode::Phong) {
-          const glm::vec3 unit = normalize3(bentNormal());
-          N = back ? -unit : unit;
-        }
+        if constexpr (kMode == ShadingMode::Flat) N = p.lit.diffuse;
+        else if constexpr (kMode == ShadingMode::Pbr || kMode == ShadingMode::Phong) N = LitPhongProgram::shadingNormal(draw, p);
         color.at(px, py) = glm::vec4(N, 1.0f);
         continue;
       }
       // The pixel's eye depth d, for fog.
       const float depth = foggy ? eyeDepth(frame, in->oneOverWAt(px, py), in->depthAt(px, py)) : 0.0f;
-      // k_e·E with an emissive texture (the course's modes, PIPELINE.md section 5).
-      const auto emission = [&] { return emissionAt(*emissiveMap, *material, stAt(material->emissiveMap.set), derivativesAt(material->emissiveMap.set)); };
-      // O_d = factor · COLOR_0 · texel (PIPELINE.md, section 8)
-      glm::vec3 baseColor = material->baseColor;
-      if (colored) baseColor *= glm::vec3(v[layout.color], v[layout.color + 1], v[layout.color + 2]);
-      if (procedural)
-        baseColor *= proceduralGrey(frame.procedural, {v[layout.model], v[layout.model + 1], v[layout.model + 2]}, frame.proceduralScale);
-      else if (texture)
-        baseColor *= glm::vec3(sampleBaseColorTexture(*texture, *material, stAt(material->baseColorSet), derivativesAt(material->baseColorSet)));
-      if (material->unlit) {  // KHR_materials_unlit: O_d itself, through the fog
-        writeFragment(color.at(px, py), fogged(frame.fog, baseColor, depth), a, over);
-        continue;
-      }
       glm::vec3 lit;
-      const glm::vec3 interpolatedNormal = bentNormal();
-      if constexpr (kMode == ShadingMode::Pbr) {
-        const glm::vec3 P{v[0], v[1], v[2]};
-        const glm::vec3 unit = normalize3(interpolatedNormal);
-        const glm::vec3 N = back ? -unit : unit;  // two-sided lighting
-        const PbrSurface surface = pbrSurfaceAt(scene, *material, *drawnMesh, baseColor, {stAt(0), stAt(1)}, {derivativesAt(0), derivativesAt(1)});
-        lit = shadePhysicallyBased(frame, maps, surface, P, N, viewVector<float>(frame, P));
-      } else if constexpr (kMode == ShadingMode::Phong) {
-        // N is normalized (and negated on a back face, two-sided lighting) in the batch
-        batch.add(color.offset(px, py), {v[0], v[1], v[2]},
-                  interpolatedNormal, back, baseColor, *material, emissiveMap ? emission() : material->emissive, depth, a);
-        continue;  // written when the batch is shaded
-      } else if constexpr (kMode == ShadingMode::Gouraud) {
-        const int side = back ? 6 : 0;
-        Illumination I{{v[side], v[side + 1], v[side + 2]}, {v[side + 3], v[side + 4], v[side + 5]}};
-        if (emissiveMap) I.specular = emission() + I.specular;  // summed with k_e = 0 at the vertices
-        lit = shade(I, baseColor);
+      if constexpr (kMode == ShadingMode::Phong) {
+        const glm::vec3 O = baseColorAt(draw, p);
+        if (!draw.material->unlit) {  // lit in the batch
+          batch.add(color.offset(px, py), p.P, LitPhongProgram::bentNormal(draw, p), back, O, *draw.material,
+                    draw.emissiveMap ? emissionAt(draw, p) : draw.material->emissive, depth, a);
+          continue;
+        }
+        lit = O;  // KHR_materials_unlit: O_d itself, through the fog
+      } else if constexpr (kMode == ShadingMode::Pbr) {
+        lit = Program::fragment(draw, maps, p);
       } else {
-        Illumination I = back ? flat[1] : flat[0];
-        if (emissiveMap) I.specular = emission() + I.specular;  // summed with k_e = 0 for the triangle
-        lit = shade(I, baseColor);
+        lit = Program::fragment(draw, p);
       }
       writeFragment(color.at(px, py), fogged(frame.fog, lit, depth), a, over);
     }
@@ -275,14 +214,14 @@ void gatherVisible(const std::vector<WorkerBins>& workers, const PolygonNumberin
 }
 
 // Shading in the frame's mode.
-void shadeIn(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, WorkerBins::TileScratch& scratch, const std::uint32_t* ids,
+void shadeIn(const FrameInputs& frame, const DrawUniforms* draws, const ShadowMaps& maps, WorkerBins::TileScratch& scratch, const std::uint32_t* ids,
              const TileRect& r, const TileRect& box, const TilePixels& color, int lanes, bool normals, const BlendOver* over = nullptr,
              const float* alpha = nullptr) {
   switch (frame.shading) {
-    case ShadingMode::Pbr: shadeTile<ShadingMode::Pbr>(scene, frame, maps, scratch, ids, r, box, color, normals, lanes, over, alpha); break;
-    case ShadingMode::Phong: shadeTile<ShadingMode::Phong>(scene, frame, maps, scratch, ids, r, box, color, normals, lanes, over, alpha); break;
-    case ShadingMode::Gouraud: shadeTile<ShadingMode::Gouraud>(scene, frame, maps, scratch, ids, r, box, color, normals, lanes, over, alpha); break;
-    default: shadeTile<ShadingMode::Flat>(scene, frame, maps, scratch, ids, r, box, color, normals, lanes, over, alpha); break;
+    case ShadingMode::Pbr: shadeTile<ShadingMode::Pbr>(frame, draws, maps, scratch, ids, r, box, color, normals, lanes, over, alpha); break;
+    case ShadingMode::Phong: shadeTile<ShadingMode::Phong>(frame, draws, maps, scratch, ids, r, box, color, normals, lanes, over, alpha); break;
+    case ShadingMode::Gouraud: shadeTile<ShadingMode::Gouraud>(frame, draws, maps, scratch, ids, r, box, color, normals, lanes, over, alpha); break;
+    default: shadeTile<ShadingMode::Flat>(frame, draws, maps, scratch, ids, r, box, color, normals, lanes, over, alpha); break;
   }
 }
 
@@ -290,21 +229,20 @@ void shadeIn(const Scene& scene, const FrameInputs& frame, const ShadowMaps& map
 // their order, after everything opaque. Each one's fragments that pass the
 // depth test (no depth write) get their α, are shaded as a visible fragment
 // is, and blend into the colour buffer.
-void blendTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& maps, VaryingLayout layout, WorkerBins::TileScratch& scratch,
+void blendTile(const FrameInputs& frame, const DrawUniforms* draws, const ShadowMaps& maps, VaryingLayout layout, WorkerBins::TileScratch& scratch,
                const TileRect& r, const TilePixels& color, int lanes) {
   std::fill(std::begin(scratch.fragment), std::end(scratch.fragment), kNoTriangle);
   for (const WorkerBins::TileScratch::Blended& blended : scratch.blended) {
     WorkerBins::TileTriangle& triangle = scratch.triangles[blended.id];
     const BinnedTriangle& t = triangle.bins->triangles[triangle.index];
-    const FrameInstance& instance = frame.instances[t.instance];
-    const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
-    const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
-    const Texture* texture = baseColorTextureOf(scene, frame, material, mesh);
-    const bool colored = !mesh.colors.empty();
+    const DrawUniforms& draw = draws[t.instance];
+    const CourseMaterial& material = *draw.material;
+    const Texture* texture = draw.texture;
+    const bool colored = draw.colored;
     Interpolation& in = triangle.interpolation;
     const float constantAlpha = fragmentAlpha(material, nullptr, nullptr);
     const float* const uniformAlpha = texture || colored ? nullptr : &constantAlpha;  // fragmentAlphaAt's value at every pixel
-    if (!uniformAlpha) in.setUpVaryings(fragmentReads(frame.shading, scene, frame, material, mesh).used);  // α's texture coordinates, COLOR_0
+    if (!uniformAlpha) in.setUpVaryings(draw.used);  // α's texture coordinates, COLOR_0
     TileRect drawn{r.x1 + 1, r.y1 + 1, r.x0 - 1, r.y0 - 1};  // the pixels it reaches, as a box
     // A fragment in front of the opaque surfaces (LESS, no depth write) takes its pixel, with its alpha.
     const auto inFront = [&](int px, int py) {
@@ -339,7 +277,7 @@ void blendTile(const Scene& scene, const FrameInputs& frame, const ShadowMaps& m
     if (drawn.x0 > drawn.x1) continue;
     // Shaded as a visible fragment is, and blended over the colour buffer with its α as it is written.
     const BlendOver over{frame.blending, material.additive};
-    shadeIn(scene, frame, maps, scratch, scratch.fragment, r, drawn, color, lanes, false, &over, scratch.alpha);
+    shadeIn(frame, draws, maps, scratch, scratch.fragment, r, drawn, color, lanes, false, &over, scratch.alpha);
     for (int py = drawn.y0; py <= drawn.y1; ++py)  // the box holds this triangle's pixels or none
       std::fill_n(&scratch.fragment[(py - r.y0) * kTileSize + (drawn.x0 - r.x0)], drawn.x1 - drawn.x0 + 1, kNoTriangle);
   }
@@ -357,76 +295,51 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
   const float halfWidth = 0.5f * static_cast<float>(frame.width), halfHeight = 0.5f * static_cast<float>(frame.height);
   PassVertices& v = buffers.vertices;
   const std::size_t vertexCount = v.world.size();
-  const int packed = packedVaryings(scene, frame);
+  // Each instance's uniforms, once for the frame (the vector keeps its capacity).
+  buffers.draws.clear();
+  for (const FrameInstance& instance : frame.instances) buffers.draws.push_back(drawUniforms(scene, frame, instance));
+  const std::vector<DrawUniforms>& draws = buffers.draws;
+  const int packed = packedVaryings(scene, frame, draws);
   const auto stride = static_cast<std::size_t>(4 + packed);
   v.stride = 4 + packed;
   v.window.resize(vertexCount * stride);
 
-  // Vertex stage, an instance's vertices at a time: its matrices are copied
-  // to locals once, which the stores to the packed vertices cannot alias
-  // (read through the instance, they were loaded again for every vertex).
+  // Vertex stage: the mode's vertex program (shading/lit_programs.h) on
+  // each vertex, writing the packed prefix of its varyings, an instance's
+  // vertices at a time: its matrices are copied to a local once, which the
+  // stores to the packed vertices cannot alias (read through the instance,
+  // they were loaded again for every vertex).
   forEachRange(pool, vertexCount, [&](std::size_t begin, std::size_t end, int) {
     for (std::size_t g = begin, i = 0; g < end;) {
       while (g >= v.firstVertex[i + 1]) ++i;
       const std::size_t first = v.firstVertex[i], last = std::min(end, v.firstVertex[i + 1]);
-      const FrameInstance& instance = frame.instances[i];
-      const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
-      const CourseMaterial& material = frame.materials[static_cast<std::size_t>(instance.material)];
-      const glm::mat4 clipFromModel = instance.clipFromModel;
-      const glm::mat3 normalMatrix = instance.normalMatrix, tangentMatrix(instance.worldFromModel);  // TM's upper 3×3 turns the tangent
-      const LaneMaterial<float> lit = vertexMaterial(material, mesh);
-      for (; g < last; ++g) {
-        const std::size_t local = g - first;
-        const glm::vec4 clip = transformPoint(clipFromModel, mesh.positions[local]);
-        const glm::vec3 P = v.world[g];
-        float* out = v.window.data() + g * stride;
-        float* varyings = out + 4;
-        // The packed prefix of the layout alone (packedVaryings).
-        if (packed >= layout.uv + 4) putTexcoords(varyings, layout.uv, mesh, local);
-        if (packed >= layout.color + 4) put(varyings, layout.color, mesh.colors.empty() ? glm::vec4(1.0f) : mesh.colors[local]);
-        if (packed == layout.count) put(varyings, layout.model, mesh.positions[local]);
-        if (interpolatesNormals(frame.shading)) {
-          put(varyings, 0, P);
-          put(varyings, 3, normalize3(transformDirection(normalMatrix, mesh.normals[local])));
-          // The tangent turns with the surface, w rides along; (0, 0, 0, 1) without one.
-          if (packed >= layout.tangent + 4) {
-            const glm::vec4 t = mesh.tangents.empty() ? glm::vec4(0.0f, 0.0f, 0.0f, 1.0f) : mesh.tangents[local];
-            put(varyings, layout.tangent, glm::vec4(transformDirection(tangentMatrix, glm::vec3(t)), t.w));
-          }
-        } else if (frame.shading == ShadingMode::Gouraud) {
-          const glm::vec3 N = normalize3(transformDirection(normalMatrix, mesh.normals[local]));
-          const glm::vec3 V = viewVector<float>(frame, P);
-          const Illumination front = illuminate(frame, maps, lit, P, N, V);
-          put(varyings, 0, front.diffuse);
-          put(varyings, 3, front.specular);
-          Illumination back;  // zero when one-sided, as ClipVertex's varyings were
-          if (!instance.cullBackFaces) back = illuminate(frame, maps, lit, P, -N, V);
-          put(varyings, 6, back.diffuse);
-          put(varyings, 9, back.specular);
+      const DrawMatrices matrices = drawMatrices(frame.instances[i]);
+      const auto vertices = [&](auto program) {
+        for (; g < last; ++g) {
+          float* out = v.window.data() + g * stride;
+          const glm::vec4 clip = decltype(program)::vertex(draws[i], matrices, maps, g - first, v.world[g], packed, out + 4);
+          v.clip[g] = clip;
+          v.flags[g] = vertexFlags(clip);
+          packWindow(clip, halfWidth, halfHeight, out);
         }
-        v.clip[g] = clip;
-        v.flags[g] = vertexFlags(clip);
-        packWindow(clip, halfWidth, halfHeight, out);
+      };
+      switch (frame.shading) {
+        case ShadingMode::Pbr:
+        case ShadingMode::Phong: vertices(LitPhongProgram{}); break;
+        case ShadingMode::Gouraud: vertices(LitGouraudProgram{}); break;
+        default: vertices(LitFlatProgram{}); break;
       }
     }
   });
 
   // Primitive stage. Flat: one illumination per triangle, from its geometric normal at its centroid.
   const auto flatLighting = [&](std::uint32_t instance, const std::uint32_t (&vertex)[3], Illumination (&out)[2]) {
-    const FrameInstance& drawn = frame.instances[instance];
-    const CourseMaterial& material = frame.materials[static_cast<std::size_t>(drawn.material)];
-    const LaneMaterial<float> lit = vertexMaterial(material, scene.meshes[static_cast<std::size_t>(drawn.mesh)]);
-    const glm::vec3 p0 = v.world[vertex[0]], p1 = v.world[vertex[1]], p2 = v.world[vertex[2]];
-    const glm::vec3 N = normalize3(cross3(p1 - p0, p2 - p0));
-    const glm::vec3 centroid = (p0 + p1 + p2) / 3.0f;
-    const glm::vec3 V = viewVector<float>(frame, centroid);
-    out[0] = illuminate(frame, maps, lit, centroid, N, V);
-    out[1] = !drawn.cullBackFaces ? illuminate(frame, maps, lit, centroid, -N, V) : Illumination{};
+    LitFlatProgram::face(draws[instance], maps, v.world[vertex[0]], v.world[vertex[1]], v.world[vertex[2]], frame.instances[instance].cullBackFaces,
+                         out);
   };
   // The normals stage: the bins hold the triangle's normal, N and -N, in its illumination's diffuse place.
   const auto flatNormal = [&](std::uint32_t, const std::uint32_t (&vertex)[3], Illumination (&out)[2]) {
-    const glm::vec3 p0 = v.world[vertex[0]], p1 = v.world[vertex[1]], p2 = v.world[vertex[2]];
-    const glm::vec3 N = normalize3(cross3(p1 - p0, p2 - p0));
+    const glm::vec3 N = LitFlatProgram::faceNormal(v.world[vertex[0]], v.world[vertex[1]], v.world[vertex[2]]);
     out[0] = {N, glm::vec3(0.0f)};
     out[1] = {-N, glm::vec3(0.0f)};
   };
@@ -550,7 +463,7 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
                             const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
                             const Texture* texture = material.masked ? baseColorTextureOf(scene, frame, material, mesh) : nullptr;
                             const bool colored = !mesh.colors.empty();
-                            if (material.masked) interpolation.setUpVaryings(fragmentReads(frame.shading, scene, frame, material, mesh).used);
+                            if (material.masked) interpolation.setUpVaryings(draws[t.instance].used);
                             rasterizeBlocks(t.snapped, box, [&](int px, int py) {
                               const int k = (py - r.y0) * kTileSize + (px - r.x0);
                               const float z = painter ? 0.0f : interpolation.depthAt(px, py);
@@ -570,9 +483,9 @@ void litPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, const 
       return;
     }
     const TilePixels pixels = pixelsOf(worker, r);
-    shadeIn(scene, frame, maps, scratch, scratch.id, r, r, pixels, buffers.lanes, normals);
+    shadeIn(frame, buffers.draws.data(), maps, scratch, scratch.id, r, r, pixels, buffers.lanes, normals);
     drawLines(frame, buffers.lines, r, painter ? nullptr : scratch.depth, kTileSize, pixels);  // the painter has no depth to test
-    if (!scratch.blended.empty() && !normals) blendTile(scene, frame, maps, layout, scratch, r, pixels, buffers.lanes);
+    if (!scratch.blended.empty() && !normals) blendTile(frame, buffers.draws.data(), maps, layout, scratch, r, pixels, buffers.lanes);
     if (keepDepth)
       for (int py = r.y0; py <= r.y1; ++py)
         std::copy_n(scratch.depth + (py - r.y0) * kTileSize, r.x1 - r.x0 + 1,

@@ -1,11 +1,12 @@
 #pragma once
 // What a Phong batch (phong_batch.h) shades on its lanes: the queued
 // pixels' inputs, one column per lane, and the shading of F's width of them
-// (Float4, Float8 or Float16), the same steps as one pixel's in lit_pass.cpp.
+// (Float4, Float8 or Float16), by the Phong program's lighting (shading/lit_programs.h).
 #include "shading/blending.h"
 #include "shading/fog.h"
 #include "cpu/interpolation.h"
 #include "shading/lighting.h"
+#include "shading/lit_programs.h"
 
 namespace facet::cpu {
 
@@ -66,12 +67,10 @@ void shadeLanes(const FrameInputs& frame, const ShadowMaps& maps, const PhongLan
     return x;
   };
   const auto vec3 = [&](const float (&columns)[3][PhongLanes::kColumn]) { return Vec3(lanes(columns[0]), lanes(columns[1]), lanes(columns[2])); };
-  const Vec3 P = vec3(in.P);
-  // N = normalize(interpolated N), then -N on a back face (two-sided lighting; back is 0 or 1)
-  const Vec3 unit = normalize3(vec3(in.N));
-  const Vec3 N = select(F(0.0f) < lanes(in.back), -unit, unit);
   const LaneMaterial<F> material{vec3(in.E), lanes(in.ka), lanes(in.kd), lanes(in.ks), lanes(in.n), lanes(in.m)};
-  const Vec3 color = fogged(frame.fog, shade(illuminate(frame, maps, material, P, N, viewVector<F>(frame, P)), vec3(in.O)), lanes(in.D));
+  // lit_phong.frag's lighting on the lanes (back is 0 or 1: the lanes whose N is negated)
+  const Vec3 lit = LitPhongProgram::lit<F>(frame, maps, material, vec3(in.P), vec3(in.N), F(0.0f) < lanes(in.back), vec3(in.O));
+  const Vec3 color = fogged(frame.fog, lit, lanes(in.D));
   if (over) blendPixels(rgba, offsets + first, count - first, color, lanes(in.alpha), *over);
   else storePixels(rgba, offsets + first, count - first, color, F(1.0f));  // opaque: (C, 1)
 }

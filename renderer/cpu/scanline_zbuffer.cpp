@@ -4,11 +4,11 @@
 #include <cmath>
 
 #include "cpu/alpha_mask.h"
-#include "cpu/fragment_reads.h"
+#include "shading/draw_uniforms.h"
 #include "cpu/interpolation.h"
 #include "cpu/passes.h"
 #include "shading/texture.h"
-#include "cpu/varyings.h"
+#include "shading/lit_varyings.h"
 
 namespace facet::cpu {
 namespace {
@@ -169,7 +169,7 @@ void scanlineVisibility(ThreadPool& pool, const std::vector<WorkerBins>& workers
         const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
         s.texture = baseColorTextureOf(scene, frame, *s.material, mesh);
         s.colored = !mesh.colors.empty();
-        s.planes.setUpVaryings(fragmentReads(frame.shading, scene, frame, *s.material, mesh).used);  // α's texture coordinates, COLOR_0
+        s.planes.setUpVaryings(drawUniforms(scene, frame, *s.material, mesh).used);  // α's texture coordinates, COLOR_0
       }
       a.setUp = static_cast<std::uint32_t>(setUps.size());
       setUps.push_back(s);

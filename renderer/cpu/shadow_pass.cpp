@@ -9,7 +9,7 @@
 #include "cpu/passes.h"
 #include "shading/texture.h"
 #include "cpu/tile_raster.h"
-#include "cpu/varyings.h"
+#include "shading/lit_varyings.h"
 #include "shading/transform.h"
 
 namespace facet::cpu {

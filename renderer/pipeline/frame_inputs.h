@@ -76,7 +76,7 @@ struct FrameInputs {
   std::vector<glm::vec2> samples;
   glm::vec2 sampleOffset{0.0f};
   // antialiasing.pattern = area: the CPU's exact area-weighted averaging
-  // (cpu/reference/area_averaging.h) in place of samples, which stay empty.
+  // (cpu/area_averaging.h) in place of samples, which stay empty.
   bool areaAveraged = false;
   ShadowSettings shadows;
   int shadowLayerCount = 0;       // S×S depth maps over all lights: one per face

@@ -11,6 +11,7 @@
 #include "shading/blending.h"
 #include "shading/environment.h"
 #include "shading/fog.h"
+#include "shading/lit_programs.h"
 #include "shading/transform.h"
 #include "ray/camera_rays.h"
 #include "ray/optics.h"
@@ -131,7 +132,7 @@ glm::vec4 RayTracer::trace(const Ray& ray, const Path& path, RayStatistics& stat
     const glm::vec3 D = normalize3(ray.direction);
     return glm::vec4(frame_.environment.map ? environmentAt(*frame_.environment.map, D, 0) : frame_.background, 1.0f);
   }
-  const SurfaceDraw& base = scene_.drawOf(hit.primitive);
+  const DrawUniforms& base = scene_.drawOf(hit.primitive);
   const CourseMaterial& material = *base.material;
   const glm::vec3 P = scene_.pointOf(hit, ray);
   const glm::vec3 Ng = scene_.geometricNormal(hit, P);
@@ -147,7 +148,7 @@ glm::vec4 RayTracer::trace(const Ray& ray, const Path& path, RayStatistics& stat
   if (material.reflectivity > 0.0f || kt > 0.0f) {
     const glm::vec3 D = normalize3(ray.direction);
     // The normal the rays turn about, facing the incoming ray (the geometric one where the interpolated one does not).
-    glm::vec3 N = interpolatesNormals(frame_.shading) && !sphere ? shadingNormal(base, p) : (p.front ? Ng : -Ng);
+    glm::vec3 N = interpolatesNormals(frame_.shading) && !sphere ? LitPhongProgram::shadingNormal(base, p) : (p.front ? Ng : -Ng);
     if (!(glm::dot(N, D) < 0.0f)) N = glm::dot(Ng, D) < 0.0f ? Ng : -Ng;
     const float m = material.metallic;
     kr = material.reflectivity * (glm::vec3(1.0f - m) + m * baseColorAt(base, p));
@@ -196,7 +197,7 @@ glm::vec4 RayTracer::trace(const Ray& ray, const Path& path, RayStatistics& stat
 
   // The local term: a surface loses the diffuse share it reflects or transmits as a traced ray, k_a and
   // k_d times (1 - reflectivity) and (1 - k_t); its highlights stay. Where no ray is traced it keeps all of it.
-  SurfaceDraw draw = base;
+  DrawUniforms draw = base;
   CourseMaterial shared;
   const float keep = (reflects ? 1.0f - material.reflectivity : 1.0f) * (transmits ? 1.0f - kt : 1.0f);
   if (keep < 1.0f) {
@@ -210,18 +211,16 @@ glm::vec4 RayTracer::trace(const Ray& ray, const Path& path, RayStatistics& stat
   if (!interpolatesNormals(frame_.shading) && !sphere) {
     // Gouraud lights the triangle's vertices and weights them by the barycentrics; flat lights its centroid.
     const glm::vec3* corner = &scene_.primitives().triangleCorners[3 * static_cast<std::size_t>(hit.primitive)];
-    const float side = p.front ? 1.0f : -1.0f;
     if (frame_.shading == ShadingMode::Flat) {
-      const glm::vec3 centroid = (corner[0] + corner[1] + corner[2]) / 3.0f;
-      p.lit = illuminate(frame_, shadows, draw.summed, centroid, side * Ng, viewVector<float>(frame_, centroid));
+      p.lit = LitFlatProgram::faceSide(draw, shadows, corner[0], corner[1], corner[2], p.front);
     } else {
       const Mesh& mesh = *base.mesh;
+      const DrawMatrices matrices = drawMatrices(instance);
       const std::uint32_t* index = &mesh.indices[scene_.primitive(hit.primitive).first];
       const float w[3] = {1.0f - hit.u - hit.v, hit.u, hit.v};
       Illumination sum;
       for (int k = 0; k < 3; ++k) {
-        const glm::vec3 N = normalize3(transformDirection(instance.normalMatrix, mesh.normals[index[k]]));
-        const Illumination I = illuminate(frame_, shadows, draw.summed, corner[k], side * N, viewVector<float>(frame_, corner[k]));
+        const Illumination I = LitGouraudProgram::vertexSide(draw, shadows, corner[k], worldNormal(matrices, mesh, index[k]), p.front);
         sum.diffuse = sum.diffuse + w[k] * I.diffuse;
         sum.specular = sum.specular + w[k] * I.specular;
       }
@@ -231,7 +230,7 @@ glm::vec4 RayTracer::trace(const Ray& ray, const Path& path, RayStatistics& stat
     // A traced sphere has no vertices or facets: every mode lights it at the hit.
     p.lit = illuminate(frame_, shadows, draw.summed, P, p.front ? p.normal : -p.normal, viewVector<float>(frame_, P));
   }
-  glm::vec3 color = shadeSurface(draw, shadows, p);
+  glm::vec3 color = litFragment(draw, shadows, p);
 
   // The recursive terms k_r·I_r + k_t·I_t.
   Path next;

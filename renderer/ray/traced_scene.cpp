@@ -7,6 +7,7 @@
 #include <glm/matrix.hpp>
 
 #include "shading/alpha_mask.h"
+#include "shading/lit_programs.h"
 #include "shading/transform.h"
 
 namespace facet::ray {
@@ -87,7 +88,7 @@ void TracedScene::bind(const Scene& scene, const FrameInputs& frame) {
   scene_ = &scene;
   frame_ = &frame;
   draws_.clear();
-  for (const FrameInstance& instance : frame.instances) draws_.push_back(surfaceDraw(scene, frame, instance));
+  for (const FrameInstance& instance : frame.instances) draws_.push_back(drawUniforms(scene, frame, instance));
 }
 
 glm::vec3 TracedScene::geometricNormal(const Hit& hit, glm::vec3 P) const {
@@ -164,11 +165,13 @@ SurfacePoint TracedScene::surfaceAt(const Hit& hit, const Ray& ray, const RayDif
     return sum + w[2] * value(index[2]);
   };
   p.P = pointOf(hit, ray);
-  p.normal = weighted([&](std::uint32_t i) { return normalize3(transformDirection(instance.normalMatrix, mesh.normals[i])); });
+  // The vertex programs' world normal and tangent (shading/lit_programs.h).
+  const DrawMatrices matrices = drawMatrices(instance);
+  p.normal = weighted([&](std::uint32_t i) { return worldNormal(matrices, mesh, i); });
   p.model = weighted([&](std::uint32_t i) { return mesh.positions[i]; });
   if (!mesh.colors.empty()) p.color = weighted([&](std::uint32_t i) { return mesh.colors[i]; });
   if (!mesh.tangents.empty()) {
-    const glm::vec3 T = weighted([&](std::uint32_t i) { return transformDirection(glm::mat3(instance.worldFromModel), glm::vec3(mesh.tangents[i])); });
+    const glm::vec3 T = weighted([&](std::uint32_t i) { return glm::vec3(LitPhongProgram::worldTangent(matrices, mesh, i)); });
     p.tangent = glm::vec4(T, mesh.tangents[index[0]].w);
   }
   for (int set = 0; set < 2; ++set) {
@@ -193,7 +196,7 @@ float TracedScene::alphaAt(const Hit& hit, const Ray& ray) const {
   // Only what α reads (it runs inside traversals, for each masked or blended candidate): the base
   // colour texture's coordinates and COLOR_0's alpha at the hit, weighted as surfaceAt weights them.
   const TracedPrimitive& traced = traced_[hit.primitive];
-  const SurfaceDraw& draw = draws_[traced.instance];
+  const DrawUniforms& draw = draws_[traced.instance];
   const Mesh& mesh = *draw.mesh;
   const int set = draw.material->baseColorSet;
   glm::vec2 st{0.0f};

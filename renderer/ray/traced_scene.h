@@ -3,7 +3,7 @@
 // every instance's world triangles, the rasterizers' corners, or a sphere in
 // place of the builtin sphere's; which instance and which of its mesh's
 // triangles each primitive is; the BVH over them; and what a hit point
-// carries for the fragment stage (shading/surface_shading.h).
+// carries for the fragment stage (shading/lit_programs.h).
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -11,7 +11,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "shading/surface_shading.h"
+#include "shading/draw_uniforms.h"
+#include "shading/lit_varyings.h"
 #include "common/thread_pool.h"
 #include "pipeline/frame_inputs.h"
 #include "ray/bvh.h"
@@ -61,7 +62,7 @@ class TracedScene {
   const Bvh& bvh() const { return bvh_; }
   const TracedPrimitive& primitive(std::uint32_t p) const { return traced_[p]; }
   const FrameInstance& instanceOf(const FrameInputs& frame, std::uint32_t p) const { return frame.instances[traced_[p].instance]; }
-  const SurfaceDraw& drawOf(std::uint32_t p) const { return draws_[traced_[p].instance]; }
+  const DrawUniforms& drawOf(std::uint32_t p) const { return draws_[traced_[p].instance]; }
 
   // The unit geometric normal at a hit: (p1 - p0) × (p2 - p0) of a triangle's world corners, (P - C)/r on a sphere.
   glm::vec3 geometricNormal(const Hit& hit, glm::vec3 P) const;
@@ -92,7 +93,7 @@ class TracedScene {
   Primitives primitives_;
   std::vector<TracedPrimitive> traced_;
   std::vector<TracedSphere> sphereFrames_;
-  std::vector<SurfaceDraw> draws_;  // per instance
+  std::vector<DrawUniforms> draws_;  // per instance
   Bvh bvh_;
 };
 

@@ -15,7 +15,7 @@
 #include "common/error.h"
 #include "cpu/area_coverage.h"
 #include "cpu/cpu_renderer.h"
-#include "cpu/reference/area_averaging.h"
+#include "cpu/area_averaging.h"
 #include "cpu/reference/reference_renderer.h"
 #include "cpu_test_scenes.h"
 #include "image/srgb.h"

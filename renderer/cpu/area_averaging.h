@@ -4,8 +4,8 @@
 // collected as surfaces, every pixel is cut into cells (cpu/area_coverage.h),
 // the same triangles are drawn again to shade each cell's surfaces at the
 // cell's centroid, and each pixel sums its cells weighted by their areas.
-// The readable reference drives it (reference_renderer.cpp); the CPU
-// backend draws `antialiasing.pattern=area` through the same code.
+// The CPU backend draws `antialiasing.pattern=area` frames with it
+// (area_averaged_frame.h).
 #include <cstdint>
 #include <optional>
 #include <string>

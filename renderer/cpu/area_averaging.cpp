@@ -1,4 +1,4 @@
-#include "cpu/reference/area_averaging.h"
+#include "cpu/area_averaging.h"
 
 #include <algorithm>
 #include <cmath>
