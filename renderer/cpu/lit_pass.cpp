@@ -106,7 +106,7 @@ void shadeTile(const FrameInputs& frame, const DrawUniforms* draws, const Shadow
   std::uint32_t current = kNoTriangle;
   std::uint32_t currentInstance = std::numeric_limits<std::uint32_t>::max();  // whose uniforms `draw` holds: none yet
   Interpolation* in = nullptr;
-  DrawUniforms draw;  // the instance's
+  const DrawUniforms* draw = nullptr;  // the instance's
   const bool foggy = frame.fog.mode != FogMode::None;  // fog reads 1/w, set up with the varyings
   bool back = false;
   bool plain = false;
@@ -130,14 +130,14 @@ void shadeTile(const FrameInputs& frame, const DrawUniforms* draws, const Shadow
         in = &winner.interpolation;
         if (t.instance != currentInstance) {  // what the pixel reads of its mesh and material: once per run of one instance's triangles
           currentInstance = t.instance;
-          draw = draws[t.instance];
+          draw = &draws[t.instance];
           // Phong's plain pixel: lit, without texture, vertex colours, procedural pattern, bent normal,
           // emission map or fog; its P and N go to the batch as they are interpolated.
-          plain = kMode == ShadingMode::Phong && !normals && !draw.texture && !draw.colored && !draw.procedural && !draw.normalMap && !draw.bumpable &&
-                  !draw.emissiveMap && !foggy && !draw.material->unlit;
+          plain = kMode == ShadingMode::Phong && !normals && !draw->texture && !draw->colored && !draw->procedural && !draw->normalMap && !draw->bumpable &&
+                  !draw->emissiveMap && !foggy && !draw->material->unlit;
         }
         back = !t.snapped.frontFacing;
-        if (draw.used || foggy) in->setUpVaryings(draw.used);
+        if (draw->used || foggy) in->setUpVaryings(draw->used);
         if constexpr (kMode == ShadingMode::Flat) flat = &bins.flat[2 * index];
       }
       if constexpr (kMode == ShadingMode::Phong)
@@ -146,16 +146,16 @@ void shadeTile(const FrameInputs& frame, const DrawUniforms* draws, const Shadow
           // lanes straight into the batch (a lone pixel on four). The pixels one by one, by the same
           // operations, took 34 % of sphere-100k's shaded pixels through 23 scalar stores each.
           const int run = runOf(&ids[k], id, std::min(lanes, tx1 - px + 1));
-          batch.addRun(run, color.offset(px, py), *in, px, py, back, draw.material->baseColor, *draw.material, over ? &alpha[k] : nullptr);
+          batch.addRun(run, color.offset(px, py), *in, px, py, back, draw->material->baseColor, *draw->material, over ? &alpha[k] : nullptr);
           px += run - 1;
           continue;
         }
       // The point the varyings describe at the pixel.
-      const SurfacePoint p = surfacePointAt(*in, draw, kMode, draw.used, !back, flat, px, py);
+      const SurfacePoint p = surfacePointAt(*in, *draw, kMode, draw->used, !back, flat, px, py);
       if (normals) {  // the normals stage: N as shading reads it, two-sided; Gouraud frames arrive as Phong ones (normalsFrame)
         glm::vec3 N(0.0f);
         if constexpr (kMode == ShadingMode::Flat) N = p.lit.diffuse;
-        else if constexpr (kMode == ShadingMode::Pbr || kMode == ShadingMode::Phong) N = LitPhongProgram::shadingNormal(draw, p);
+        else if constexpr (kMode == ShadingMode::Pbr || kMode == ShadingMode::Phong) N = LitPhongProgram::shadingNormal(*draw, p);
         color.at(px, py) = glm::vec4(N, 1.0f);
         continue;
       }
@@ -163,17 +163,17 @@ void shadeTile(const FrameInputs& frame, const DrawUniforms* draws, const Shadow
       const float depth = foggy ? eyeDepth(frame, in->oneOverWAt(px, py), in->depthAt(px, py)) : 0.0f;
       glm::vec3 lit;
       if constexpr (kMode == ShadingMode::Phong) {
-        const glm::vec3 O = baseColorAt(draw, p);
-        if (!draw.material->unlit) {  // lit in the batch
-          batch.add(color.offset(px, py), p.P, LitPhongProgram::bentNormal(draw, p), back, O, *draw.material,
-                    draw.emissiveMap ? emissionAt(draw, p) : draw.material->emissive, depth, a);
+        const glm::vec3 O = baseColorAt(*draw, p);
+        if (!draw->material->unlit) {  // lit in the batch
+          batch.add(color.offset(px, py), p.P, LitPhongProgram::bentNormal(*draw, p), back, O, *draw->material,
+                    draw->emissiveMap ? emissionAt(*draw, p) : draw->material->emissive, depth, a);
           continue;
         }
         lit = O;  // KHR_materials_unlit: O_d itself, through the fog
       } else if constexpr (kMode == ShadingMode::Pbr) {
-        lit = Program::fragment(draw, maps, p);
+        lit = Program::fragment(*draw, maps, p);
       } else {
-        lit = Program::fragment(draw, p);
+        lit = Program::fragment(*draw, p);
       }
       writeFragment(color.at(px, py), fogged(frame.fog, lit, depth), a, over);
     }

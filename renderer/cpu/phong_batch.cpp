@@ -26,11 +26,11 @@ void PhongBatch::flush() {
   if (count_ == 0) return;
   if (lanes_ == 1) {
     const glm::vec3 P{in_.P[0][0], in_.P[1][0], in_.P[2][0]};
-    const glm::vec3 N{in_.N[0][0], in_.N[1][0], in_.N[2][0]};
+    const glm::vec3 N = LitPhongProgram::twoSided<float>({in_.N[0][0], in_.N[1][0], in_.N[2][0]}, in_.back[0] != 0.0f);
     const glm::vec3 O{in_.O[0][0], in_.O[1][0], in_.O[2][0]};
     const glm::vec3 E{in_.E[0][0], in_.E[1][0], in_.E[2][0]};
     const LaneMaterial<float> material{E, in_.ka[0], in_.kd[0], in_.ks[0], in_.n[0], in_.m[0]};
-    const glm::vec3 lit = LitPhongProgram::lit<float>(frame_, maps_, material, P, N, in_.back[0] != 0.0f, O);
+    const glm::vec3 lit = shade(LitPhongProgram::lit<float>(frame_, maps_, material, P, N), O);
     writeFragment(pixels_[offset_[0]], fogged(frame_.fog, lit, in_.D[0]), in_.alpha[0], over_);
     count_ = 0;
     return;

@@ -67,10 +67,11 @@ void shadeLanes(const FrameInputs& frame, const ShadowMaps& maps, const PhongLan
     return x;
   };
   const auto vec3 = [&](const float (&columns)[3][PhongLanes::kColumn]) { return Vec3(lanes(columns[0]), lanes(columns[1]), lanes(columns[2])); };
-  const LaneMaterial<F> material{vec3(in.E), lanes(in.ka), lanes(in.kd), lanes(in.ks), lanes(in.n), lanes(in.m)};
   // lit_phong.frag's lighting on the lanes (back is 0 or 1: the lanes whose N is negated)
-  const Vec3 lit = LitPhongProgram::lit<F>(frame, maps, material, vec3(in.P), vec3(in.N), F(0.0f) < lanes(in.back), vec3(in.O));
-  const Vec3 color = fogged(frame.fog, lit, lanes(in.D));
+  const Vec3 P = vec3(in.P);
+  const Vec3 N = LitPhongProgram::twoSided<F>(vec3(in.N), F(0.0f) < lanes(in.back));
+  const LaneMaterial<F> material{vec3(in.E), lanes(in.ka), lanes(in.kd), lanes(in.ks), lanes(in.n), lanes(in.m)};
+  const Vec3 color = fogged(frame.fog, shade(LitPhongProgram::lit<F>(frame, maps, material, P, N), vec3(in.O)), lanes(in.D));
   if (over) blendPixels(rgba, offsets + first, count - first, color, lanes(in.alpha), *over);
   else storePixels(rgba, offsets + first, count - first, color, F(1.0f));  // opaque: (C, 1)
 }

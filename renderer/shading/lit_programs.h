@@ -189,13 +189,15 @@ struct LitPhongProgram {
   }
   static glm::vec3 shadingNormal(const DrawUniforms& d, const SurfacePoint& p) { return twoSided<float>(bentNormal(d, p), !p.front); }
 
-  // The illumination equation at the point, times O_d: on one pixel or on a
-  // lane per pixel (the fast renderer's batch queues P, the bent normal, O_d
-  // and the material of many pixels, and shades them here together).
+  // The illumination equation at P with N (twoSided's), which the caller
+  // shades O_d with: on one pixel or on a lane per pixel (the fast
+  // renderer's batch queues P, the bent normal, O_d and the material of many
+  // pixels, and lights them here together; O_d is read after, so it waits in
+  // memory while the lights are summed).
   template <class F, class Shadows>
-  static Vec3Of<F> lit(const FrameInputs& frame, const Shadows& shadows, const LaneMaterial<F>& material, const Vec3Of<F>& P,
-                       const Vec3Of<F>& bent, MaskOf<F> back, const Vec3Of<F>& baseColor) {
-    return shade(illuminate(frame, shadows, material, P, twoSided<F>(bent, back), viewVector<F>(frame, P)), baseColor);
+  static IlluminationOf<F> lit(const FrameInputs& frame, const Shadows& shadows, const LaneMaterial<F>& material, const Vec3Of<F>& P,
+                               const Vec3Of<F>& N) {
+    return illuminate(frame, shadows, material, P, N, viewVector<F>(frame, P));
   }
 
   // KHR_materials_unlit's O_d itself, else the lit colour, k_e·E in k_e's place with an emissive texture.
@@ -204,7 +206,7 @@ struct LitPhongProgram {
     const glm::vec3 O = baseColorAt(d, p);
     if (d.material->unlit) return O;
     const glm::vec3 emissive = d.emissiveMap ? emissionAt(d, p) : d.material->emissive;
-    return lit<float>(*d.frame, shadows, laneMaterial(*d.material, emissive), p.P, bentNormal(d, p), !p.front, O);
+    return shade(lit<float>(*d.frame, shadows, laneMaterial(*d.material, emissive), p.P, shadingNormal(d, p)), O);
   }
 };
 
