@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "common/error.h"
+#include "common/random.h"
 #include "common/denormals.h"  // header only: the mode the CPU backend and llvmpipe compute in
 
 namespace facet {
@@ -106,25 +107,13 @@ bool countable(const Emitter& e, float time) {
   return std::isfinite(time) && std::isfinite(e.rate) && e.rate > 0.0f && std::isfinite(e.startTime) && std::isfinite(e.lifetime) && e.lifetime > 0.0f;
 }
 
-// ---- Each particle's random numbers: SplitMix64 (Steele, Lea and Flood 2014)
-// started from a hash of (seed, n) alone, so no particle's numbers depend on
+// ---- Each particle's random numbers: common/random.h's SplitMix64 started
+// from a hash of (seed, n) alone, so no particle's numbers depend on
 // another's or on which thread draws them.
 
-std::uint64_t mix64(std::uint64_t z) {
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
+SplitMix64 particleRandom(int seed, std::uint64_t n) {
+  return SplitMix64(mix64(mix64(std::uint64_t{static_cast<std::uint32_t>(seed)} ^ 0x5851F42D4C957F2Dull) ^ n));
 }
-
-class ParticleRandom {
- public:
-  ParticleRandom(int seed, std::uint64_t n) : state_(mix64(mix64(std::uint64_t{static_cast<std::uint32_t>(seed)} ^ 0x5851F42D4C957F2Dull) ^ n)) {}
-  // A number in [0, 1): the top 53 bits over 2^53, exact in double.
-  double uniform() { return static_cast<double>(mix64(state_ += 0x9E3779B97F4A7C15ull) >> 11) * 0x1p-53; }
-
- private:
-  std::uint64_t state_;
-};
 
 // The cone of initial directions, in double: the unit axis, a frame
 // completing it (Duff et al. 2017), and 1 − cos(spread) = 2 sin²(spread/2)
@@ -152,10 +141,10 @@ Cone makeCone(const Emitter& e) {
 // angle (1 − cos θ = u₁·(1 − cos spread), φ = 2π·u₂) times a speed uniform in
 // [speed − speedSpread, speed + speedSpread] (speed + speedSpread·(2u₃ − 1)), clamped at 0.
 glm::vec3 initialVelocity(const Emitter& e, const Cone& c, std::uint64_t n) {
-  ParticleRandom random(e.seed, n);
-  const double oneMinusCos = random.uniform() * c.oneMinusCosSpread;
-  const double phi = 2.0 * std::numbers::pi * random.uniform();
-  const double speed = std::max(0.0, static_cast<double>(e.speed) + static_cast<double>(e.speedSpread) * (2.0 * random.uniform() - 1.0));
+  SplitMix64 random = particleRandom(e.seed, n);
+  const double oneMinusCos = random.unitDouble() * c.oneMinusCosSpread;
+  const double phi = 2.0 * std::numbers::pi * random.unitDouble();
+  const double speed = std::max(0.0, static_cast<double>(e.speed) + static_cast<double>(e.speedSpread) * (2.0 * random.unitDouble() - 1.0));
   const double cosTheta = 1.0 - oneMinusCos, sinTheta = std::sqrt(std::max(0.0, oneMinusCos * (2.0 - oneMinusCos)));
   const double along = sinTheta * std::cos(phi), across = sinTheta * std::sin(phi);
   glm::vec3 v;
