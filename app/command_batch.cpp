@@ -21,6 +21,7 @@
 #include "common/error.h"
 #include "output_option.h"
 #include "progress_bar.h"
+#include "vocabulary/limits.h"
 
 namespace facet {
 namespace {
@@ -74,7 +75,7 @@ int mergeReports(const BatchCommandOptions& options) {
   if (options.inputs.empty()) throw UsageError("--merge OUT.xml: name the reports to join after it");
   checkOutputFile(options.merge, options.inputs, MissingFolders::Refuse);
   std::vector<std::string> reports;
-  for (const std::string& path : options.inputs) reports.push_back(readFile(path, 1ull << 30));
+  for (const std::string& path : options.inputs) reports.push_back(readFile(path, kMaxReportFileBytes));
   writeFileAtomically(options.merge, mergeJunitReports(reports, options.inputs));
   std::printf("%zu reports merged into %s\n", reports.size(), options.merge.c_str());
   return 0;
@@ -129,7 +130,7 @@ Command addBatchCommand(CLI::App& app) {
   auto options = std::make_shared<BatchCommandOptions>();
   CLI::App* command = app.add_subcommand("batch", "Render (and compare) many frames from a job file, one JSON object a line, in parallel");
   command->add_option("jobs-file", options->inputs, "JOBS.jsonl; with --merge, the JUnit reports to join");
-  command->add_option("--jobs", options->jobs, "jobs run at once (0: one per core)")->check(CLI::Range(0, 256));
+  command->add_option("--jobs", options->jobs, "jobs run at once (0: one per core)")->check(CLI::Range(0, kMaxParallelJobs));
   refuseEmptyName(command->add_option("--junit", options->junit, "write a JUnit XML report of the jobs to this file"));
   command->add_flag("--resume", options->resume, "skip jobs whose output exists and was rendered from the same inputs (scene, settings, size, backend, facet version)");
   command->add_option("--shard", options->shard, "I/N: run only the I-th of N slices of the jobs (job k when k mod N = I; I from 0)");

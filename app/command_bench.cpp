@@ -52,6 +52,7 @@
 #include "image/png.h"
 #include "pipeline/frame_inputs.h"
 #include "pipeline/scene_additions.h"
+#include "vocabulary/limits.h"
 #if FACET_HAVE_GL
 #include "bench_lean_gl.h"
 #include "gl/gl_renderer.h"
@@ -196,7 +197,7 @@ Command addBenchCommand(CLI::App& app) {
       ->check(CLI::IsMember({"cpu", "cpu4", "cpu8", "gl", "lean", "lean-msaa", "ray"}));
   command->add_option("--frames", o->frames, "timed frames per backend and scene")->check(wholeNumberIn(1, 1000));
   command->add_option("--warmup", o->warmup, "untimed frames first")->check(wholeNumberIn(0, 100));
-  command->add_option("--threads", o->threads, "threads of every backend (LP_NUM_THREADS for llvmpipe)")->check(wholeNumberIn(1, 256));
+  command->add_option("--threads", o->threads, "threads of every backend (LP_NUM_THREADS for llvmpipe)")->check(wholeNumberIn(1, kMaxThreads));
   command->add_option("--size", o->size, "image size WxH");
   command->add_option("--startup-runs", o->startupRuns, "runs of `facet render` per backend for the time to the first PNG (0: skip)")
       ->check(CLI::Range(0, 100));

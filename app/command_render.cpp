@@ -37,6 +37,7 @@
 #include "render/stage.h"
 #include "scene/load_scene.h"
 #include "pipeline/scene_additions.h"
+#include "vocabulary/limits.h"
 #if FACET_HAVE_GL
 #include "gl/gl_renderer.h"
 #endif
@@ -98,7 +99,7 @@ Command addRenderCommand(CLI::App& app) {
       ->check(CLI::IsMember({"gl", "cpu", "reference", "ray"}));
   command->add_option("--context", options->context, "headless OpenGL context for --backend gl: osmesa or egl")
       ->check(CLI::IsMember({"osmesa", "egl"}));
-  command->add_option("--threads", options->threads, "CPU backend and ray tracer threads (0: one per core)")->check(wholeNumberIn(0, 256));
+  command->add_option("--threads", options->threads, "CPU backend and ray tracer threads (0: one per core)")->check(wholeNumberIn(0, kMaxThreads));
   command->add_option("--output-stage", options->stage,
                       "what to write (renderer/PIPELINE.md, section 6, \"Stages\"): image (the frame); overdraw (the depth complexity: "
                       "fragments per pixel before the depth test, black 0, pale yellow the busiest pixel); depth (the z-buffer's window z, "

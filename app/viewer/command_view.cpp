@@ -9,6 +9,7 @@
 #include "render/stage.h"
 #include "scene/load_scene.h"
 #include "viewer/viewer_loop.h"
+#include "vocabulary/limits.h"
 
 namespace facet {
 namespace {
@@ -40,7 +41,7 @@ Command addViewCommand(CLI::App& app) {
   addCommonOptions(*command, options->common, "where F12 and Ctrl+S write screenshots (default: facet-view-N.png, the first N not taken)");
   CLI::Option* screenshot = command->add_option(
       "--screenshot", options->screenshot, "draw --frames frames, write the 3D view (without the panel) to this PNG, and exit");
-  command->add_option("--frames", options->frames, "how many frames --screenshot draws first")->check(CLI::Range(1, 100000))->needs(screenshot);
+  command->add_option("--frames", options->frames, "how many frames --screenshot draws first")->check(CLI::Range(1, kMaxViewerFrames))->needs(screenshot);
   command->add_flag("--with-panel", options->withPanel, "--screenshot writes the whole window, panel included")->needs(screenshot);
   command->add_flag("--reference", options->reference,
                     "render the CPU reference after every change; --screenshot waits for it and prints its figures");
@@ -72,7 +73,7 @@ Command addViewCommand(CLI::App& app) {
   command->add_option("--bench-orbit", options->benchOrbit,
                       "orbit the camera once around the scene in N frames, as a drag would, print the median and spread of ms per window frame "
                       "and the ratio to a headless `facet render` frame of the same scene and size, and exit")
-      ->check(CLI::Range(1, 100000))
+      ->check(CLI::Range(1, kMaxViewerFrames))
       ->excludes(screenshot);
   return [options]() {
     viewer::ViewerOptions view;

@@ -13,7 +13,9 @@
 #include <thread>
 
 #include "common/error.h"
+#include "common/random.h"
 #include "common/denormals.h"  // header only: the mode the CPU backend and llvmpipe compute in
+#include "settings/settings_fields.h"
 
 namespace facet {
 namespace {
@@ -106,25 +108,13 @@ bool countable(const Emitter& e, float time) {
   return std::isfinite(time) && std::isfinite(e.rate) && e.rate > 0.0f && std::isfinite(e.startTime) && std::isfinite(e.lifetime) && e.lifetime > 0.0f;
 }
 
-// ---- Each particle's random numbers: SplitMix64 (Steele, Lea and Flood 2014)
-// started from a hash of (seed, n) alone, so no particle's numbers depend on
+// ---- Each particle's random numbers: common/random.h's SplitMix64 started
+// from a hash of (seed, n) alone, so no particle's numbers depend on
 // another's or on which thread draws them.
 
-std::uint64_t mix64(std::uint64_t z) {
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
+SplitMix64 particleRandom(int seed, std::uint64_t n) {
+  return SplitMix64(mix64(mix64(std::uint64_t{static_cast<std::uint32_t>(seed)} ^ 0x5851F42D4C957F2Dull) ^ n));
 }
-
-class ParticleRandom {
- public:
-  ParticleRandom(int seed, std::uint64_t n) : state_(mix64(mix64(std::uint64_t{static_cast<std::uint32_t>(seed)} ^ 0x5851F42D4C957F2Dull) ^ n)) {}
-  // A number in [0, 1): the top 53 bits over 2^53, exact in double.
-  double uniform() { return static_cast<double>(mix64(state_ += 0x9E3779B97F4A7C15ull) >> 11) * 0x1p-53; }
-
- private:
-  std::uint64_t state_;
-};
 
 // The cone of initial directions, in double: the unit axis, a frame
 // completing it (Duff et al. 2017), and 1 − cos(spread) = 2 sin²(spread/2)
@@ -152,10 +142,10 @@ Cone makeCone(const Emitter& e) {
 // angle (1 − cos θ = u₁·(1 − cos spread), φ = 2π·u₂) times a speed uniform in
 // [speed − speedSpread, speed + speedSpread] (speed + speedSpread·(2u₃ − 1)), clamped at 0.
 glm::vec3 initialVelocity(const Emitter& e, const Cone& c, std::uint64_t n) {
-  ParticleRandom random(e.seed, n);
-  const double oneMinusCos = random.uniform() * c.oneMinusCosSpread;
-  const double phi = 2.0 * std::numbers::pi * random.uniform();
-  const double speed = std::max(0.0, static_cast<double>(e.speed) + static_cast<double>(e.speedSpread) * (2.0 * random.uniform() - 1.0));
+  SplitMix64 random = particleRandom(e.seed, n);
+  const double oneMinusCos = random.unitDouble() * c.oneMinusCosSpread;
+  const double phi = 2.0 * std::numbers::pi * random.unitDouble();
+  const double speed = std::max(0.0, static_cast<double>(e.speed) + static_cast<double>(e.speedSpread) * (2.0 * random.unitDouble() - 1.0));
   const double cosTheta = 1.0 - oneMinusCos, sinTheta = std::sqrt(std::max(0.0, oneMinusCos * (2.0 - oneMinusCos)));
   const double along = sinTheta * std::cos(phi), across = sinTheta * std::sin(phi);
   glm::vec3 v;
@@ -276,60 +266,59 @@ void runRange(const Job& job, std::uint64_t from, std::uint64_t to) {
 
 // ---- Validation: one line naming the key of the value at fault.
 
-void requireFinite(glm::vec3 v, const std::string& name) {
-  if (!finite(v)) throw Error(name + ": " + vec3(v) + " is not finite");
-}
+// Every number of the emitter against its range in the settings' field table
+// (settings/settings_fields.h), the one its key is read with, so the two
+// cannot disagree; a number the table leaves unbounded must be finite. The
+// bounds are compared as floats: the settings check the double they read,
+// then narrow it, and narrowing keeps order, so whatever they accept passes here.
+struct TableRanges {
+  const std::string& key;
 
-void requireRange(float v, float lo, float hi, const std::string& name, const char* unit) {
-  if (!(v >= lo && v <= hi))
-    throw Error(name + ": " + number(v) + unit + " is outside [" + number(lo) + ", " + number(hi) + "]");
-}
+  std::string name(const FieldInfo& f) const { return key + "." + std::string(f.key); }
+  bool bounded(const FieldInfo& f) const { return f.min != f.max; }
+  bool inRange(const FieldInfo& f, float v) const { return v >= static_cast<float>(f.min) && v <= static_cast<float>(f.max); }
+  std::string range(const FieldInfo& f) const {
+    return "[" + number(static_cast<float>(f.min)) + ", " + number(static_cast<float>(f.max)) + "]";
+  }
 
-void requirePositive(float v, const std::string& name, const char* unit) {
-  if (!(v > 0.0f) || !std::isfinite(v)) throw Error(name + ": " + number(v) + unit + ": must be positive and finite");
-}
+  void field(const FieldInfo& f, float v) {
+    if (!bounded(f) && !std::isfinite(v)) throw Error(name(f) + ": " + number(v) + " is not finite");
+    if (bounded(f) && !inRange(f, v))
+      throw Error(name(f) + ": " + number(v) + (f.unit.empty() ? "" : " ") + std::string(f.unit) + " is outside " + range(f));
+  }
+  void field(const FieldInfo& f, glm::vec3 v) {
+    if (!bounded(f) && !finite(v)) throw Error(name(f) + ": " + vec3(v) + " is not finite");
+    if (bounded(f) && !(inRange(f, v.x) && inRange(f, v.y) && inRange(f, v.z))) throw Error(name(f) + ": " + vec3(v) + " is outside " + range(f));
+  }
+  void field(const FieldInfo& f, int v) {
+    if (bounded(f) && !(v >= f.min && v <= f.max)) throw Error(name(f) + ": " + std::to_string(v) + " is outside " + range(f));
+  }
+  void field(const FieldInfo&, bool) {}
+  void field(const FieldInfo&, const std::string&) {}
+  template <class E, std::size_t N>
+  void choice(const FieldInfo&, E, const std::array<std::string_view, N>&) {}
+};
 
-void requireAtLeastZero(float v, const std::string& name) {
-  if (!(v >= 0.0f) || !std::isfinite(v)) throw Error(name + ": " + number(v) + " must be finite and at least 0");
-}
-
+// The table's ranges first (with `step`, the step the particles are integrated
+// with, as the emitter's), then what no range can say.
 void validate(const Emitter& e, float time, float step, const std::string& key) {
   if (!std::isfinite(time)) throw Error("time: " + number(time) + " is not a finite number of seconds");
   if (time < 0.0f) throw Error("time: " + number(time) + " s is before 0");
-  if (!(step > 0.0f) || !std::isfinite(step)) throw Error("particles.step: " + number(step) + " s: the step must be positive and finite");
+  Emitter checked = e;
+  checked.step = step;
+  TableRanges ranges{key};
+  visitItem(ranges, checked);
 
-  requireFinite(e.position, key + ".position");
-  requirePositive(e.rate, key + ".rate", " particles a second");
-  if (!std::isfinite(e.startTime)) throw Error(key + ".startTime: " + number(e.startTime) + " is not a finite number of seconds");
-  requireFinite(e.direction, key + ".direction");
   if (e.direction == glm::vec3(0.0f)) throw Error(key + ".direction: (0, 0, 0) has no direction");
-  requireRange(e.spread, 0.0f, 180.0f, key + ".spread", " degrees");
-  requireAtLeastZero(e.speed, key + ".speed");
-  requireAtLeastZero(e.speedSpread, key + ".speedSpread");
-  requirePositive(e.lifetime, key + ".lifetime", " s");
-  requireFinite(e.startColor, key + ".startColor");
-  requireFinite(e.endColor, key + ".endColor");
-  requireRange(e.startAlpha, 0.0f, 1.0f, key + ".startAlpha", "");
-  requireRange(e.endAlpha, 0.0f, 1.0f, key + ".endAlpha", "");
-  requireAtLeastZero(e.startSize, key + ".startSize");
-  requireAtLeastZero(e.endSize, key + ".endSize");
-  requirePositive(e.mass, key + ".mass", " kg");
-  requireFinite(e.gravity, key + ".gravity");
-  requireAtLeastZero(e.drag, key + ".drag");
-  requireFinite(e.wind, key + ".wind");
-  if (!std::isfinite(e.groundHeight)) throw Error(key + ".groundHeight: " + number(e.groundHeight) + " is not finite");
-  requireRange(e.restitution, 0.0f, 1.0f, key + ".restitution", "");
-  requireRange(e.friction, 0.0f, 1.0f, key + ".friction", "");
-
   const double stepsPerParticle = static_cast<double>(e.lifetime) / static_cast<double>(step);
   if (stepsPerParticle > kMaxStepsPerParticle)
-    throw Error("particles.step: " + number(step) + " s over " + key + ".lifetime " + number(e.lifetime) + " s is " + number(stepsPerParticle) +
+    throw Error(key + ".step: " + number(step) + " s over " + key + ".lifetime " + number(e.lifetime) + " s is " + number(stepsPerParticle) +
                 " steps a particle, more than " + std::to_string(static_cast<std::uint64_t>(kMaxStepsPerParticle)));
   // Explicit Euler on the drag: (k/m)·h > 1 overshoots the wind's velocity
   // each step (and diverges past 2), so the motion would be the step's, not the drag's.
   const double dragStep = static_cast<double>(e.drag) / static_cast<double>(e.mass) * static_cast<double>(step);
   if (dragStep > 1.0)
-    throw Error(key + ".drag: " + number(e.drag) + " kg/s over " + key + ".mass " + number(e.mass) + " kg times particles.step " + number(step) +
+    throw Error(key + ".drag: " + number(e.drag) + " kg/s over " + key + ".mass " + number(e.mass) + " kg times " + key + ".step " + number(step) +
                 " s is " + number(dragStep) + ", more than 1: the step overshoots the wind's velocity");
 }
 

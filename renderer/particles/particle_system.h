@@ -34,7 +34,8 @@ std::uint64_t aliveParticleCount(const Emitter& emitter, float time);
 // the last, partial step is of the remaining time. Runs on `threads` workers
 // (0: the hardware's); the result does not depend on how many.
 // Throws facet::Error naming `key` ("particles.0") when the emitter would
-// have more than kMaxParticles alive, or a value is out of range.
+// have more than kMaxParticles alive, or a value (`step` as the emitter's
+// step) is outside the settings' field table's range for its key.
 std::vector<Particle> simulateParticles(const Emitter& emitter, float time, float step, const char* key, int threads = 0);
 
 }  // namespace facet

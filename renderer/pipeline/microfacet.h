@@ -2,7 +2,8 @@
 // The microfacet terms of shading=pbr (renderer/PIPELINE.md, section 7,
 // "Physically based"), for float (the CPU backend's pixels, mirrored in
 // shaders/physically_based.glsl) and double (the split-sum table built from
-// them, pipeline/split_sum.h): one definition of each.
+// them, pipeline/split_sum.h): one definition of each, Schlick's Fresnel
+// shared with the ray tracer.
 #include <cmath>
 
 namespace facet {
@@ -16,6 +17,14 @@ T schlickWeight(T VdotH) {
   const T x = T(1) - VdotH;
   const T x2 = x * x;
   return (x2 * x2) * x;
+}
+
+// Schlick's Fresnel, F = F0 + (1 - F0)·x⁵, from x⁵ = (1 - cos θ)⁵: F0 a colour
+// (shading=pbr's, x⁵ by schlickWeight) or one reflectance (the ray tracer's
+// dielectrics, ray/optics.h, whose x⁵ is std::pow's: see there).
+template <class C, class T>
+C schlickReflectance(C F0, T x5) {
+  return F0 + (C(T(1)) - F0) * x5;
 }
 
 // D = α²/(π·(d·d)), d = (N·H)²·(α² - 1) + 1 (GGX)

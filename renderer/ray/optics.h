@@ -8,6 +8,8 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "pipeline/microfacet.h"
+
 namespace facet::ray {
 
 // R = D - 2(D·N)N: D the unit incoming direction, N the unit normal.
@@ -31,12 +33,16 @@ inline std::optional<Refraction> refracted(glm::vec3 D, glm::vec3 N, float n1, f
   return Refraction{eta * D + (eta * c1 - c2) * N, c2};
 }
 
-// Schlick: F = F0 + (1 - F0)(1 - c)^5, F0 = ((n1 - n2)/(n1 + n2))², c the
-// cosine on the side of the smaller index (c1 entering a denser medium, c2 leaving it).
+// Schlick: F = F0 + (1 - F0)(1 - c)^5 (pipeline/microfacet.h), F0 =
+// ((n1 - n2)/(n1 + n2))², c the cosine on the side of the smaller index (c1
+// entering a denser medium, c2 leaving it).
+// (1 - c)^5 is std::pow's, not shading=pbr's (x²·x²)·x, which its GLSL
+// mirror fixes: the two round differently for one float c in seventeen of
+// [0, 1] (63 million of them), so that form would change the ray tracer's images.
 inline float fresnelSchlick(float n1, float n2, float cosIncident, float cosTransmitted) {
   const float r0 = (n1 - n2) / (n1 + n2), F0 = r0 * r0;
   const float c = n1 <= n2 ? cosIncident : cosTransmitted;
-  return F0 + (1.0f - F0) * std::pow(1.0f - c, 5.0f);
+  return schlickReflectance(F0, std::pow(1.0f - c, 5.0f));
 }
 
 }  // namespace facet::ray

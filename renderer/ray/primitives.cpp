@@ -7,6 +7,7 @@
 
 #include "common/error.h"
 #include "ray/narrowing.h"
+#include "vocabulary/limits.h"
 
 namespace facet::ray {
 
@@ -14,9 +15,9 @@ void checkPrimitiveCounts(std::size_t cornerCount, std::size_t sphereCount) {
   if (cornerCount % 3 != 0)
     throw Error("ray tracing: " + std::to_string(cornerCount) + " triangle corners are not a whole number of triangles");
   const std::size_t triangles = cornerCount / 3;
-  if (triangles > kMaxPrimitives || sphereCount > kMaxPrimitives - triangles)
+  if (triangles > kMaxTracedPrimitives || sphereCount > kMaxTracedPrimitives - triangles)
     throw Error("ray tracing: " + std::to_string(triangles) + " triangles and " + std::to_string(sphereCount) +
-                " spheres are more than the " + std::to_string(kMaxPrimitives) + " primitives a BVH can index");
+                " spheres are more than the " + std::to_string(kMaxTracedPrimitives) + " primitives a BVH can index");
 }
 
 namespace {

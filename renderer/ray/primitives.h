@@ -31,13 +31,9 @@ struct Primitives {
   bool isSphere(std::uint32_t primitive) const { return primitive >= triangleCount(); }
 };
 
-// The most primitives one set may hold: indices, node offsets (at most
-// 2·count - 1 nodes) and slots must fit the BVH's 32-bit fields.
-inline constexpr std::size_t kMaxPrimitives = (std::size_t{1} << 31) - 1;
-
 // Throws facet::Error when the counts overflow the node format (above
-// kMaxPrimitives together) or when the corners are not a whole number of
-// triangles.
+// kMaxTracedPrimitives together, vocabulary/limits.h) or when the corners
+// are not a whole number of triangles.
 void checkPrimitiveCounts(std::size_t cornerCount, std::size_t sphereCount);
 
 // The primitive's box (a sphere's rounded outwards, so it contains the

@@ -21,6 +21,7 @@
 #include "ray/traced_scene.h"
 #include "scene/memory_budget.h"
 #include "settings/render_settings.h"
+#include "vocabulary/limits.h"
 
 namespace facet {
 namespace {
@@ -30,8 +31,6 @@ using ray::RayTracer;
 using ray::TracedScene;
 
 constexpr int kTile = 16;  // pixels a side: a worker's unit of work
-// Motion blur places the scene at most this many times across the shutter (a BVH each).
-constexpr int kMaxShutterSlices = 16;
 
 class RayRenderer final : public Renderer {
  public:

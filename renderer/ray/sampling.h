@@ -13,30 +13,26 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "common/random.h"
+
 namespace facet::ray {
 
-// SplitMix64 (Steele, Lea and Flood 2014), as pipeline/antialiasing.cpp's jitter.
+// One path's numbers: common/random.h's SplitMix64, started from the seed,
+// the pixel and the path.
 class PathSampler {
  public:
   PathSampler(std::uint32_t seed, std::uint32_t pixel, std::uint32_t path)
-      : state_((std::uint64_t{seed} << 40) ^ (std::uint64_t{pixel} << 12) ^ std::uint64_t{path} ^ 0x5851F42D4C957F2Dull) {
-    next();  // one step so that neighbouring seeds do not start alike
+      : random_((std::uint64_t{seed} << 40) ^ (std::uint64_t{pixel} << 12) ^ std::uint64_t{path} ^ 0x5851F42D4C957F2Dull) {
+    random_.next();  // one step so that neighbouring seeds do not start alike
   }
-  // A number in [0, 1): the top 24 bits over 2^24, exact in float.
-  float uniform() { return static_cast<float>(next() >> 40) * (1.0f / 16777216.0f); }
+  float uniform() { return random_.unitFloat(); }  // in [0, 1): k/2^24
   glm::vec2 uniform2() {
     const float u = uniform();
     return {u, uniform()};
   }
 
  private:
-  std::uint64_t next() {
-    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  std::uint64_t state_;
+  SplitMix64 random_;
 };
 
 // Path k of n's offset from the pixel centre, in [-0.5, 0.5)²: stratified on

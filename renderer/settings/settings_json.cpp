@@ -269,7 +269,7 @@ Emitter emitterFromJson(const json& j, const std::string& where) {
 }
 
 RenderSettings loadSettingsFile(const std::string& path) {
-  const std::string text = readFile(path, 16u << 20);
+  const std::string text = readFile(path, kMaxSettingsFileBytes);
   try {
     return settingsFromJson(parseStrictJson(text, kMaxSettingsDepth));
   } catch (const Error& e) {

@@ -54,8 +54,8 @@ inline PbrSurface pbrSurfaceAt(const Scene& scene, const CourseMaterial& m, cons
   return s;
 }
 
-// F = F0 + (1 - F0)·x⁵ (Schlick; x⁵ by pipeline/microfacet.h)
-inline glm::vec3 schlickFresnel(glm::vec3 F0, float VdotH) { return F0 + (glm::vec3(1.0f) - F0) * schlickWeight(VdotH); }
+// F = F0 + (1 - F0)·x⁵, x = 1 - V·H (Schlick; both by pipeline/microfacet.h)
+inline glm::vec3 schlickFresnel(glm::vec3 F0, float VdotH) { return schlickReflectance(F0, schlickWeight(VdotH)); }
 
 // The split-sum factors (A, B) at roughness r and N·V: the table of
 // pipeline/split_sum.h read LINEAR at x = N·V·31, y = r·31, indices clamped to [0, 31].

@@ -65,16 +65,30 @@ inline constexpr std::size_t kMaxSettingsPathBytes = kMaxPathBytes;
 // The deepest valid settings nest 4 levels (lights, a light, its position);
 // a few more leave room for a helpful "expected ..." message.
 inline constexpr std::size_t kMaxSettingsDepth = 8;
+inline constexpr std::uint64_t kMaxSettingsFileBytes = 16ull << 20;  // a settings file is a few kB
 // A job file is a list of short lines; this bounds a mistaken huge file.
 inline constexpr std::uint64_t kMaxJobFileBytes = 64ull << 20;
 // A job nests a settings object, whose deepest keys sit 4 levels down.
 inline constexpr std::size_t kMaxJobDepth = 10;
 // A file's bytes count toward a batch job's inputs hash; a glTF or a map is far below this.
 inline constexpr std::uint64_t kMaxHashedFileBytes = 2ull << 30;
+// A JUnit report that batch --merge joins: a few hundred bytes a job.
+inline constexpr std::uint64_t kMaxReportFileBytes = 1ull << 30;
+// What the command line may ask for at once: worker threads of a frame
+// (render --threads, bench --threads) and batch jobs (batch --jobs).
+inline constexpr int kMaxThreads = 256;
+inline constexpr int kMaxParallelJobs = 256;
+// The viewer's scripted runs: frames view --screenshot draws first, or view --bench-orbit times.
+inline constexpr int kMaxViewerFrames = 100000;
 
 // [SECTION] Ray tracing
 inline constexpr int kMaxRayDepth = 16;     // levels of the ray tree; the tree doubles with each
 inline constexpr int kMaxRaySamples = 4096; // paths per pixel
+// Motion blur places the scene at most this many times across the shutter (a BVH each).
+inline constexpr int kMaxShutterSlices = 16;
+// The most primitives (triangles and spheres) one BVH holds: indices, node
+// offsets (at most 2·count - 1 nodes) and slots must fit its 32-bit fields.
+inline constexpr std::size_t kMaxTracedPrimitives = (std::size_t{1} << 31) - 1;
 
 // [SECTION] Particles and volumes
 // The emitters of the settings, particles.N.* (the scene's, from glTF node extras, come on top).

@@ -45,35 +45,29 @@ struct ZnzClose {
 };
 using ZnzFile = std::unique_ptr<znzptr, ZnzClose>;
 
-SampleType sampleType(int datatype) {
+// NIfTI-1's sample types: those of facet's table (volume/volume_file.h), and
+// those only NIfTI-1 has.
+SampleType niftiSampleType(int datatype) {
   switch (datatype) {
-    case DT_INT8: return {"int8", 1, true};
-    case DT_UINT8: return {"uint8", 1, true};
-    case DT_INT16: return {"int16", 2, true};
-    case DT_UINT16: return {"uint16", 2, true};
-    case DT_FLOAT32: return {"float32", 4, true};
-    case DT_INT32: return {"int32", 4, false};
-    case DT_UINT32: return {"uint32", 4, false};
-    case DT_INT64: return {"int64", 8, false};
-    case DT_UINT64: return {"uint64", 8, false};
-    case DT_FLOAT64: return {"float64", 8, false};
-    case DT_FLOAT128: return {"float128", 16, false};
-    case DT_COMPLEX64: return {"complex64", 8, false};
-    case DT_COMPLEX128: return {"complex128", 16, false};
-    case DT_COMPLEX256: return {"complex256", 32, false};
+    case DT_INT8: return sampleType(SampleKind::Int8);
+    case DT_UINT8: return sampleType(SampleKind::UInt8);
+    case DT_INT16: return sampleType(SampleKind::Int16);
+    case DT_UINT16: return sampleType(SampleKind::UInt16);
+    case DT_FLOAT32: return sampleType(SampleKind::Float32);
+    case DT_INT32: return sampleType(SampleKind::Int32);
+    case DT_UINT32: return sampleType(SampleKind::UInt32);
+    case DT_INT64: return sampleType(SampleKind::Int64);
+    case DT_UINT64: return sampleType(SampleKind::UInt64);
+    case DT_FLOAT64: return sampleType(SampleKind::Float64);
+    case DT_FLOAT128: return {"float128", 16, true};
+    case DT_COMPLEX64: return {"complex64", 8, true};
+    case DT_COMPLEX128: return {"complex128", 16, true};
+    case DT_COMPLEX256: return {"complex256", 32, true};
     case DT_RGB24: return {"RGB24", 3, false};
     case DT_RGBA32: return {"RGBA32", 4, false};
-    case DT_BINARY: return {"binary (1-bit)", 0, false};
-    default: return {nullptr, 0, false};
+    case DT_BINARY: return {"binary (1-bit)"};
+    default: return {nullptr};
   }
-}
-
-const char* const kAxisNames[3] = {"x", "y", "z"};
-
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
 }
 
 std::int32_t byteSwapped(std::int32_t v) {
@@ -119,34 +113,21 @@ nifti_1_header readCheckedHeader(const std::string& path, const std::string& sho
       throw Error(shown + ": " + std::to_string(n) + (n == 1 ? " sample" : " samples") + " along " + kAxisNames[a] + " (dim[" +
                   std::to_string(a + 1) + "]), a volume needs at least 2");
   }
-  const SampleType type = sampleType(h.datatype);
-  if (!type.supported) {
+  const SampleType type = niftiSampleType(h.datatype);
+  if (!type.toFloat) {
     const std::string name = type.name ? type.name : "datatype " + std::to_string(h.datatype);
-    throw Error(shown + ": " + name + " samples are not supported (int8, uint8, int16, uint16 and float32 are)");
+    throw Error(shown + ": " + name + " samples are not supported (" + readSampleTypeNames() + " are)");
   }
   for (int a = 0; a < 3; ++a) {
     const float spacing = h.pixdim[a + 1];
     if (!(std::isfinite(spacing) && spacing > 0.0f))
-      throw Error(shown + ": spacing along " + kAxisNames[a] + " (pixdim[" + std::to_string(a + 1) + "]) is " + number(spacing) +
+      throw Error(shown + ": spacing along " + kAxisNames[a] + " (pixdim[" + std::to_string(a + 1) + "]) is " + shownNumber(spacing) +
                   ", not a positive number");
   }
   // niftiio converts vox_offset to an int.
   if (!(std::isfinite(h.vox_offset) && h.vox_offset >= 0.0f && h.vox_offset < 2147483648.0f))
-    throw Error(shown + ": vox_offset " + number(h.vox_offset) + " is not a byte offset into the file");
+    throw Error(shown + ": vox_offset " + shownNumber(h.vox_offset) + " is not a byte offset into the file");
   return h;
-}
-
-// Samples as read to floats, scaled by scl_slope and scl_inter when the slope is set.
-template <typename T>
-void convert(const unsigned char* bytes, bool swap, double slope, double intercept, std::vector<float>& values) {
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    unsigned char b[sizeof(T)];
-    std::memcpy(b, bytes + i * sizeof(T), sizeof(T));
-    if (swap) std::reverse(b, b + sizeof(T));
-    T v;
-    std::memcpy(&v, b, sizeof(T));
-    values[i] = slope != 0.0 ? static_cast<float>(slope * static_cast<double>(v) + intercept) : static_cast<float>(v);
-  }
 }
 
 }  // namespace
@@ -159,7 +140,7 @@ Volume readNifti(const std::string& path) {
   nifti_set_debug_level(0);
   const bool compressed = nifti_is_gzfile(path.c_str()) != 0;
   const nifti_1_header header = readCheckedHeader(path, shown, compressed);
-  const SampleType type = sampleType(header.datatype);
+  const SampleType type = niftiSampleType(header.datatype);
 
   Volume volume;
   volume.source = path;
@@ -217,13 +198,7 @@ Volume readNifti(const std::string& path) {
   // niftiio has already set a non-finite slope or intercept to 0.
   const double slope = image->scl_slope, intercept = image->scl_inter;
   volume.values.resize(static_cast<std::size_t>(count));
-  switch (header.datatype) {
-    case DT_INT8: convert<std::int8_t>(bytes.data(), false, slope, intercept, volume.values); break;
-    case DT_UINT8: convert<std::uint8_t>(bytes.data(), false, slope, intercept, volume.values); break;
-    case DT_INT16: convert<std::int16_t>(bytes.data(), swap, slope, intercept, volume.values); break;
-    case DT_UINT16: convert<std::uint16_t>(bytes.data(), swap, slope, intercept, volume.values); break;
-    default: convert<float>(bytes.data(), swap, slope, intercept, volume.values); break;
-  }
+  type.toFloat(bytes.data(), swap, SampleScale{slope, intercept}, volume.values);
   updateRange(volume);
   return volume;
 }

@@ -8,7 +8,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -167,30 +166,23 @@ void checkHeaderText(const std::string& path, const std::string& shown) {
   if (!ended && head.size() > kMaxNrrdHeaderBytes) throw Error(shown + ": header longer than " + byteCount(kMaxNrrdHeaderBytes));
 }
 
-SampleType sampleType(int type) {
+// teem's sample types: those of facet's table (volume/volume_file.h), and
+// the block type, which has no fixed layout.
+SampleType nrrdSampleType(int type) {
   switch (type) {
-    case nrrdTypeChar: return {"int8", 1, true};
-    case nrrdTypeUChar: return {"uint8", 1, true};
-    case nrrdTypeShort: return {"int16", 2, true};
-    case nrrdTypeUShort: return {"uint16", 2, true};
-    case nrrdTypeFloat: return {"float32", 4, true};
-    case nrrdTypeInt: return {"int32", 4, false};
-    case nrrdTypeUInt: return {"uint32", 4, false};
-    case nrrdTypeLLong: return {"int64", 8, false};
-    case nrrdTypeULLong: return {"uint64", 8, false};
-    case nrrdTypeDouble: return {"float64", 8, false};
-    case nrrdTypeBlock: return {"block", 0, false};
-    default: return {"unknown", 0, false};  // teem knows no other
+    case nrrdTypeChar: return sampleType(SampleKind::Int8);
+    case nrrdTypeUChar: return sampleType(SampleKind::UInt8);
+    case nrrdTypeShort: return sampleType(SampleKind::Int16);
+    case nrrdTypeUShort: return sampleType(SampleKind::UInt16);
+    case nrrdTypeFloat: return sampleType(SampleKind::Float32);
+    case nrrdTypeInt: return sampleType(SampleKind::Int32);
+    case nrrdTypeUInt: return sampleType(SampleKind::UInt32);
+    case nrrdTypeLLong: return sampleType(SampleKind::Int64);
+    case nrrdTypeULLong: return sampleType(SampleKind::UInt64);
+    case nrrdTypeDouble: return sampleType(SampleKind::Float64);
+    case nrrdTypeBlock: return {"block"};
+    default: return {"unknown"};  // teem knows no other
   }
-}
-
-const char* const kAxisNames[3] = {"x", "y", "z"};
-
-// A number as a message shows it: "-2", "0.5", "inf".
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
 }
 
 // The distance between samples along an axis: "spacings", else the length of
@@ -240,19 +232,6 @@ void readGzip(FILE* data, long skip, unsigned char* out, std::size_t count, cons
   }
 }
 
-// Samples as read (little- or big-endian as the header says) to floats.
-template <typename T>
-void convert(const unsigned char* bytes, bool swap, std::vector<float>& values) {
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    unsigned char b[sizeof(T)];
-    std::memcpy(b, bytes + i * sizeof(T), sizeof(T));
-    if (swap) std::reverse(b, b + sizeof(T));
-    T v;
-    std::memcpy(&v, b, sizeof(T));
-    values[i] = static_cast<float>(v);
-  }
-}
-
 }  // namespace
 
 Volume readNrrd(const std::string& path) {
@@ -274,9 +253,8 @@ Volume readNrrd(const std::string& path) {
   const Nrrd& nrrd = *teem.nrrd();
 
   if (nrrd.dim != 3) throw Error(shown + ": " + countOf(nrrd.dim, "axis", "axes") + ", a volume has 3");
-  const SampleType type = sampleType(nrrd.type);
-  if (!type.supported)
-    throw Error(shown + ": " + type.name + " samples are not supported (int8, uint8, int16, uint16 and float32 are)");
+  const SampleType type = nrrdSampleType(nrrd.type);
+  if (!type.toFloat) throw Error(shown + ": " + type.name + " samples are not supported (" + readSampleTypeNames() + " are)");
   Volume volume;
   volume.source = path;
   std::string dims;
@@ -290,7 +268,7 @@ Volume readNrrd(const std::string& path) {
     dims += std::to_string(n);
     const double spacing = axisSpacing(nrrd, a);
     if (!(std::isfinite(spacing) && spacing > 0.0 && spacing <= std::numeric_limits<float>::max()))
-      throw Error(shown + ": spacing along " + kAxisNames[a] + " is " + number(spacing) + ", not a positive number");
+      throw Error(shown + ": spacing along " + kAxisNames[a] + " is " + shownNumber(spacing) + ", not a positive number");
     volume.spacing[a] = static_cast<float>(spacing);
   }
   const std::string samples = dims + " " + type.name + " samples";
@@ -334,13 +312,7 @@ Volume readNrrd(const std::string& path) {
 
   const bool swap = type.bytes > 1 && io.encoding->endianMatters && io.endian != airEndianUnknown && io.endian != airMyEndian();
   volume.values.resize(static_cast<std::size_t>(total));
-  switch (nrrd.type) {
-    case nrrdTypeChar: convert<std::int8_t>(bytes.data(), false, volume.values); break;
-    case nrrdTypeUChar: convert<std::uint8_t>(bytes.data(), false, volume.values); break;
-    case nrrdTypeShort: convert<std::int16_t>(bytes.data(), swap, volume.values); break;
-    case nrrdTypeUShort: convert<std::uint16_t>(bytes.data(), swap, volume.values); break;
-    default: convert<float>(bytes.data(), swap, volume.values); break;
-  }
+  type.toFloat(bytes.data(), swap, SampleScale{}, volume.values);
   updateRange(volume);
   return volume;
 }

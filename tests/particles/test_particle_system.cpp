@@ -437,11 +437,11 @@ TEST_CASE("refusals: each names its key in one line") {
   add("time", same, -1.0f);
   add("time", same, nan);
   add("time", same, inf);
-  add("particles.step", same, 1.0f, 0.0f);
-  add("particles.step", same, 1.0f, -0.01f);
-  add("particles.step", same, 1.0f, nan);
-  add("particles.step", same, 1.0f, inf);
-  add("particles.step", [](Emitter& e) { e.lifetime = 100.0f; }, 1.0f, 1e-6f);  // 10^8 steps a particle
+  add("particles.3.step", same, 1.0f, 0.0f);
+  add("particles.3.step", same, 1.0f, -0.01f);
+  add("particles.3.step", same, 1.0f, nan);
+  add("particles.3.step", same, 1.0f, inf);
+  add("particles.3.step", [](Emitter& e) { e.lifetime = 1000.0f; }, 1.0f, 1e-5f);  // 10^8 steps a particle
   add("particles.3.position", [&](Emitter& e) { e.position.y = inf; });
   add("particles.3.rate", [](Emitter& e) { e.rate = 0.0f; });
   add("particles.3.rate", [](Emitter& e) { e.rate = -5.0f; });

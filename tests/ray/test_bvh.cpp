@@ -16,6 +16,7 @@
 #include "ray/brute_force.h"
 #include "ray/bvh.h"
 #include "ray_test_scenes.h"
+#include "vocabulary/limits.h"
 
 using namespace facet;
 using namespace facet::ray;
@@ -259,7 +260,7 @@ TEST_CASE("bvh: no primitives, or only broken ones, hit nothing") {
 }
 
 TEST_CASE("bvh: counts beyond the node format, and corners that are not whole triangles, are refused with facet::Error") {
-  const std::size_t most = kMaxPrimitives;
+  const std::size_t most = kMaxTracedPrimitives;
   CHECK_NOTHROW(checkPrimitiveCounts(3 * most, 0));
   CHECK_NOTHROW(checkPrimitiveCounts(3 * (most - 5), 5));
   CHECK_THROWS_AS(checkPrimitiveCounts(3 * (most + 1), 0), Error);

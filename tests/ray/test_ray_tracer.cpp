@@ -5,6 +5,7 @@
 // internal reflection) and to the stopping conditions of the ray tree.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <numbers>
 #include <string>
@@ -18,6 +19,7 @@
 #include "cpu/cpu_renderer.h"
 #include "math/transforms.h"
 #include "pipeline/frame_inputs.h"
+#include "pipeline/microfacet.h"
 #include "ray/camera_rays.h"
 #include "ray/optics.h"
 #include "ray/ray_renderer.h"
@@ -196,6 +198,19 @@ TEST_CASE("optics: the law of reflection, Snell's law, the critical angle and Fr
   CHECK_FALSE(ray::refracted(D45, N, 1.5f, 1.0f));
   CHECK(ray::fresnelSchlick(1.0f, 1.5f, 1.0f, 1.0f) == doctest::Approx(0.04f));
   CHECK(ray::fresnelSchlick(1.0f, 1.5f, 0.0f, 1.0f) == doctest::Approx(1.0f));
+}
+
+TEST_CASE("optics: the ray tracer's Fresnel takes (1 - c)^5 from std::pow, which rounds unlike shading=pbr's (x*x)*(x*x)*x") {
+  // Both share pipeline/microfacet.h's F0 + (1 - F0)·x⁵; only x⁵ differs, and it must, bit for bit.
+  const float r0 = (1.0f - 1.5f) / (1.0f + 1.5f), F0 = r0 * r0;
+  int differ = 0;
+  for (std::uint32_t k = 0; k <= (1u << 20); ++k) {
+    const float c = static_cast<float>(k) * 0x1p-20f;
+    const float pow5 = std::pow(1.0f - c, 5.0f);
+    REQUIRE(ray::fresnelSchlick(1.0f, 1.5f, c, 1.0f) == schlickReflectance(F0, pow5));
+    if (pow5 != schlickWeight(c)) ++differ;
+  }
+  CHECK(differ > 1000);  // of 2^20 + 1: (x²·x²)·x here would change the ray tracer's images
 }
 
 namespace {

@@ -21,6 +21,7 @@
 #include "common/error.h"
 #include "scratch_folder.h"
 #include "volume/load_volume.h"
+#include "volume/volume_file.h"
 #include "scene/volume.h"
 
 using namespace facet;
@@ -573,6 +574,88 @@ TEST_CASE("NIfTI reader: nibabel's anatomical.nii MRI and standard.nii.gz as nib
   CHECK(standard.at(3, 1, 0) == 255.0f);
   CHECK(standard.at(3, 3, 0) == 255.0f);
   CHECK(standard.at(0, 0, 0) == 0.0f);
+}
+
+// [SECTION] Both readers: one table of sample types
+
+namespace {
+
+// How each format writes a type of the table (a test-side copy, so that the
+// table is held to the formats), and the ramp's offset for it.
+struct FormatType {
+  const char* nrrd;
+  short datatype, bitpix;
+  int offset;
+};
+
+FormatType formatType(SampleKind kind) {
+  switch (kind) {
+    case SampleKind::Int8: return {"int8", DT_INT8, 8, -120};
+    case SampleKind::UInt8: return {"uint8", DT_UINT8, 8, 0};
+    case SampleKind::Int16: return {"int16", DT_INT16, 16, -1000};
+    case SampleKind::UInt16: return {"uint16", DT_UINT16, 16, 60000};
+    case SampleKind::Float32: return {"float", DT_FLOAT32, 32, -50};
+    case SampleKind::Int32: return {"int32", DT_INT32, 32, 0};
+    case SampleKind::UInt32: return {"uint32", DT_UINT32, 32, 0};
+    case SampleKind::Int64: return {"int64", DT_INT64, 64, 0};
+    case SampleKind::UInt64: return {"uint64", DT_UINT64, 64, 0};
+    case SampleKind::Float64: return {"double", DT_FLOAT64, 64, 0};
+    case SampleKind::Count: break;
+  }
+  FAIL("no such sample kind");
+  return {};
+}
+
+// A 4x3x2 ramp of the kind's samples (zeros for a type facet does not read).
+std::string rampSamples(SampleKind kind, int offset, bool bigEndian) {
+  switch (kind) {
+    case SampleKind::Int8: return samplesOf(rampValues<std::int8_t>(4, 3, 2, offset), bigEndian);
+    case SampleKind::UInt8: return samplesOf(rampValues<std::uint8_t>(4, 3, 2, offset), bigEndian);
+    case SampleKind::Int16: return samplesOf(rampValues<std::int16_t>(4, 3, 2, offset), bigEndian);
+    case SampleKind::UInt16: return samplesOf(rampValues<std::uint16_t>(4, 3, 2, offset), bigEndian);
+    case SampleKind::Float32: return samplesOf(rampValues<float>(4, 3, 2, offset), bigEndian);
+    default: return std::string(24 * sampleType(kind).bytes, '\0');
+  }
+}
+
+}  // namespace
+
+TEST_CASE("sample types: NRRD and NIfTI read each type of the one table alike, in either byte order, and refuse the others alike") {
+  const fs::path dir = test::scratchFolder("volume_readers", "sample_types");
+  CHECK(readSampleTypeNames() == "int8, uint8, int16, uint16 and float32");
+  for (int i = 0; i < static_cast<int>(SampleKind::Count); ++i) {
+    const SampleKind kind = static_cast<SampleKind>(i);
+    const SampleType& type = sampleType(kind);
+    const FormatType f = formatType(kind);
+    CAPTURE(type.name);
+    writeFile(dir / "little.nrrd", nrrdHeader(f.nrrd, "4 3 2") + "\n" + rampSamples(kind, f.offset, false));
+    writeFile(dir / "big.nrrd", nrrdHeader(f.nrrd, "4 3 2", "encoding: raw\nendian: big\n") + "\n" + rampSamples(kind, f.offset, true));
+    const nifti_1_header h = niftiHeader(4, 3, 2, f.datatype, f.bitpix);
+    writeFile(dir / "native.nii", niftiFile(h, rampSamples(kind, f.offset, false)));
+    nifti_1_header swapped = h;
+    swapHeader(swapped);
+    writeFile(dir / "swapped.nii", niftiFile(swapped, rampSamples(kind, f.offset, true)));
+    nifti_1_header scaled = h;
+    scaled.scl_slope = 2.0f;
+    scaled.scl_inter = -3.0f;
+    writeFile(dir / "scaled.nii", niftiFile(scaled, rampSamples(kind, f.offset, false)));
+
+    if (!type.toFloat) {
+      const std::string refusal = std::string(type.name) + " samples are not supported (int8, uint8, int16, uint16 and float32 are)";
+      checkError(errorOf([&] { readNrrd((dir / "little.nrrd").string()); }), "little.nrrd", refusal);
+      checkError(errorOf([&] { readNifti((dir / "native.nii").string()); }), "native.nii", refusal);
+      continue;
+    }
+    CHECK(type.bytes * 8 == static_cast<std::size_t>(f.bitpix));  // and readNifti holds it to niftiio's bytes per voxel
+    checkRamp(readNrrd((dir / "little.nrrd").string()), f.offset);
+    checkRamp(readNrrd((dir / "big.nrrd").string()), f.offset);
+    checkRamp(readNifti((dir / "native.nii").string()), f.offset);
+    checkRamp(readNifti((dir / "swapped.nii").string()), f.offset);
+    const Volume v = readNifti((dir / "scaled.nii").string());
+    for (int z = 0; z < 2; ++z)
+      for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 4; ++x) REQUIRE(v.at(x, y, z) == static_cast<float>(2.0 * (f.offset + x + 10 * y + 100 * z) - 3.0));
+  }
 }
 
 // [SECTION] loadVolume
