@@ -82,7 +82,7 @@ TEST_CASE("volume ray casting: empty-space skipping changes no result and early 
   const glm::vec3 extent = volume.extent();
   for (int j = 0; j < 40; ++j)
     for (int i = 0; i < 40; ++i) {
-      const glm::vec3 from(-0.3f * extent.x, (i + 0.5f) / 40.0f * extent.y, (j + 0.5f) / 40.0f * extent.z);
+      const glm::vec3 from(-0.3f * extent.x, (static_cast<float>(i) + 0.5f) / 40.0f * extent.y, (static_cast<float>(j) + 0.5f) / 40.0f * extent.z);
       const glm::vec3 to(1.3f * extent.x, extent.y - from.y, from.z * 0.7f);
       const glm::vec4 p = plain.cast(from, to, a), s = skipping.cast(from, to, b), e = stopping.cast(from, to, c);
       differing += p != s;
