@@ -39,7 +39,8 @@ void compare(const Scene& scene, const RenderSettings& s, const std::string& wha
   long pixels = 0, drawn = 0;
   for (int y = 0; y < a.height(); ++y)
     for (int x = 0; x < a.width(); ++x) pixels += a.at(x, y) == b.at(x, y) ? 0 : 1;
-  const auto ids = fast->visibleTriangles(scene, frame), referenceIds = reference->visibleTriangles(scene, frame);
+  const auto ids = *fast->render(scene, frame, {FrameOutput::TriangleIds}).triangleIds;
+  const auto referenceIds = *reference->render(scene, frame, {FrameOutput::TriangleIds}).triangleIds;
   long triangles = 0;
   for (std::size_t i = 0; i < ids.size(); ++i) {
     triangles += ids[i] != referenceIds[i];
