@@ -27,6 +27,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -46,11 +47,8 @@
 #include "gl/gl_renderer.h"
 #include "image/png.h"
 #include "pipeline/frame_inputs.h"
-#include "pipeline/bump_map.h"
-#include "pipeline/displacement.h"
-#include "scene/environment_map.h"
+#include "pipeline/frame_spine.h"
 #include "scene/load_scene.h"
-#include "pipeline/scene_additions.h"
 #include "render/stage.h"
 #include "settings/settings_json.h"
 
@@ -134,22 +132,21 @@ Case readCase(const fs::path& file) {
   return c;
 }
 
-// The case's scene, displaced and with the environment map as its settings
-// say (an "assets:" file name there is read from the assets folder, as scenes are).
-Scene sceneOf(Case& c, const std::string& assets) {
+// The case's frame from the spine (pipeline/frame_spine.h): its scene with the
+// maps, volume and particles its settings add (an "assets:" file name there
+// is read from the assets folder, as scenes are), and the settings it is
+// built with (the camera the sprites face resolved).
+PreparedFrame frameOf(Case& c, const std::string& assets) {
   const std::string assimp = "assimp:", local = "assets:";
   const auto resolve = [&](const std::string& name) { return name.rfind(local, 0) == 0 ? assets + "/" + name.substr(local.size()) : name; };
-  Scene scene = c.scene.rfind(assimp, 0) == 0 ? loadScene(std::string(FACET_ASSIMP_MODELS) + "/" + c.scene.substr(assimp.size()))
-                                               : loadScene(resolve(c.scene));
+  const std::string path =
+      c.scene.rfind(assimp, 0) == 0 ? std::string(FACET_ASSIMP_MODELS) + "/" + c.scene.substr(assimp.size()) : resolve(c.scene);
   c.settings.environment.map = resolve(c.settings.environment.map);
   c.settings.material.displacementMap = resolve(c.settings.material.displacementMap);
   c.settings.material.bumpMap = resolve(c.settings.material.bumpMap);
-  useDisplacement(scene, c.settings.material);
-  useBumpMap(scene, c.settings.material);
-  useEnvironment(scene, c.settings.environment);
-  SceneAdditions added;  // a volume's iso-surface or splats, particles (resolving the camera the sprites face)
-  c.settings = addVolumeAndParticles(scene, c.settings, added);
-  return scene;
+  PreparedFrame prepared = FrameSpine(std::make_shared<const Scene>(loadScene(path))).frame(c.settings);
+  c.settings = prepared.settings;
+  return prepared;
 }
 
 // The bar of a case: every byte equal, or the case's allowance.
@@ -249,8 +246,9 @@ int main(int argc, char** argv) {
     std::vector<ReportCase> report;
     ReportFolder reportFolder((fs::path(outDir) / "report").string());
     for (Case& c : cases) {
-      const Scene scene = sceneOf(c, assetsDir);
-      const FrameInputs frame = buildFrameInputs(scene, c.settings);
+      const PreparedFrame prepared = frameOf(c, assetsDir);
+      const Scene& scene = *prepared.scene;
+      const FrameInputs& frame = prepared.inputs;
       const DiffThresholds thresholds = thresholdsOf(c);
       const auto glStart = std::chrono::steady_clock::now();
       const Image glImage = renderStage(*gl, scene, frame, c.stage).image;
