@@ -73,13 +73,13 @@ class FrameSpine {
   // Frames of another loaded scene from now on; the files read stay.
   void setLoaded(std::shared_ptr<const Scene> loaded);
 
-  // The frame of `asked`, its camera moved by `orbit` from where `asked`
-  // puts it (about the scene with its volume, whose box an auto camera
-  // frames). Throws facet::Error naming the key or file at fault, in the
+  // The frame of `asked` at its time (asked.time: the animation's and the
+  // particles'), its camera moved by `orbit` from where `asked` puts it
+  // (about the scene with its volume, whose box an auto camera frames). Throws facet::Error naming the key or file at fault, in the
   // order of the steps: the displacement map, the bump map, the environment
   // map, the volume, the sprites, then the frame's inputs.
   PreparedFrame frame(const RenderSettings& asked, const CameraOrbit& orbit = {});
-  // The same without the inputs: what `facet info` describes.
+  // The same without the inputs: what `facet info` describes and `facet bench` times.
   FrameScene scene(const RenderSettings& asked, const CameraOrbit& orbit = {});
 
   // The next frame makes its scenes anew from the files already read: what `facet bench` times.
