@@ -23,6 +23,7 @@
 #include "image/png.h"
 #include "image/png_text.h"
 #include "inputs_hash.h"
+#include "pipeline/frame_spine.h"
 #include "render/stage.h"
 #include "scene/load_scene.h"
 #include "settings/settings_files.h"
@@ -103,10 +104,12 @@ class NamedFilesDigests {
 // What one worker thread keeps between jobs.
 struct Worker {
   std::map<std::string, std::unique_ptr<Renderer>> renderers;  // by backend, made on first use
-  // The last scene as prepared for a frame, reused when the next job has the
-  // same scene and settings (a GL renderer then keeps its buffers too).
+  // The spine of the last job's scene: the files its settings name are read
+  // once for the jobs after it (pipeline/frame_spine.h).
+  std::optional<FrameSpine> spine;
+  // The last frame prepared, reused when the next job has the same scene
+  // and settings (a GL renderer then keeps its buffers too).
   std::string preparedKey;
-  std::unique_ptr<Scene> preparedScene;
   std::optional<PreparedFrame> prepared;
 
   Renderer& renderer(const std::string& backend, int threads) {
@@ -159,15 +162,17 @@ void runJob(const BatchJob& job, const BatchOptions& options, SceneCache& scenes
     const std::string key = job.scene + '\n' + settingsText;
     if (!worker.prepared || worker.preparedKey != key) {
       worker.prepared.reset();
-      worker.preparedScene = std::make_unique<Scene>(loaded->scene);  // the additions change the scene: a copy of the cached one
-      worker.prepared = prepareFrame(*worker.preparedScene, asked, options.cpuThreads);
+      const std::shared_ptr<const Scene> scene(loaded, &loaded->scene);
+      if (!worker.spine) worker.spine.emplace(scene, options.cpuThreads);
+      else if (worker.spine->loaded() != scene) worker.spine->setLoaded(scene);
+      worker.prepared = worker.spine->frame(asked);
       worker.preparedKey = key;
     }
 #if FACET_HAVE_GL
-    if (job.backend == "gl") refuseCpuOnlyFrame(worker.prepared->frame);
+    if (job.backend == "gl") refuseCpuOnlyFrame(worker.prepared->inputs);
 #endif
     Renderer& renderer = worker.renderer(job.backend, options.cpuThreads);
-    const RenderResult result = renderStage(renderer, *worker.preparedScene, worker.prepared->frame, Stage{});
+    const RenderResult result = renderStage(renderer, *worker.prepared->scene, worker.prepared->inputs, Stage{});
     const std::string folder = fs::path(job.output).parent_path().string();
     std::error_code ec;
     if (!folder.empty()) fs::create_directories(folder, ec);  // a failure shows when writing

@@ -232,7 +232,9 @@ class LeanGlRenderer final : public Renderer {
            (sampling_ == LeanSampling::EverySample ? "" : ", anti-aliasing by MSAA shading once a pixel");
   }
 
-  RenderResult render(const Scene& scene, const FrameInputs& frame) override {
+  // The image alone: the stages are facet's backends' to draw.
+  RenderResult render(const Scene& scene, const FrameInputs& frame, const FrameOutputs& asked) override {
+    refuseUndrawn(asked, {FrameOutput::Image});
     if (const std::string why = leanUnsupported(scene, frame); !why.empty()) throw Error("lean: no minimal program for this scene (" + why + ")");
     context_->makeCurrent();  // the gl column's context may be current
     RenderResult result;
@@ -277,9 +279,6 @@ class LeanGlRenderer final : public Renderer {
   }
 
   void forgetShadowMaps() override { mapsDrawn_ = {}; }
-
-  std::vector<std::uint32_t> visibleTriangles(const Scene&, const FrameInputs&) override { throw notDrawn("triangle-id"); }
-  std::vector<std::uint32_t> fragmentCounts(const Scene&, const FrameInputs&) override { throw notDrawn("overdraw"); }
 
  private:
   void upload(const Scene& scene) {

@@ -11,7 +11,7 @@
 #include "common/atomic_file.h"
 #include "common/error.h"
 #include "common/stopwatch.h"
-#include "pipeline/frame_inputs.h"
+#include "pipeline/frame_spine.h"
 
 namespace facet {
 namespace {
@@ -80,8 +80,8 @@ struct PointTimes {
   std::vector<std::string> failures;  // empty where it drew
 };
 
-PointTimes timePoint(const BenchScene& b, std::vector<std::unique_ptr<Renderer>>& renderers, int warmup, int frames) {
-  const FrameInputs frame = buildFrameInputs(b.scene, b.settings);
+PointTimes timePoint(BenchScene b, std::vector<std::unique_ptr<Renderer>>& renderers, int warmup, int frames) {
+  const PreparedFrame prepared = FrameSpine(std::make_shared<const Scene>(std::move(b.scene))).frame(b.settings);
   PointTimes t{std::vector<double>(renderers.size(), NAN), std::vector<std::string>(renderers.size())};
   std::vector<std::vector<double>> ms(renderers.size());
   const auto draw = [&](std::size_t r, bool timed) {
@@ -89,7 +89,7 @@ PointTimes timePoint(const BenchScene& b, std::vector<std::unique_ptr<Renderer>>
     try {
       renderers[r]->forgetShadowMaps();  // each frame draws its maps: the lights axis is their cost
       const auto start = Clock::now();
-      RenderResult drawn = renderers[r]->render(b.scene, frame);
+      RenderResult drawn = renderers[r]->render(*prepared.scene, prepared.inputs);
       if (timed) ms[r].push_back(millisecondsSince(start));
       renderers[r]->recycle(std::move(drawn.image));  // the next frame's storage, as bench's scenes do
     } catch (const Error& e) {
@@ -236,10 +236,10 @@ int runSweep(const SweepOptions& options, const SweepRun& run) {
   std::vector<std::string> failures;
   for (std::size_t i = 0; i < points.size(); ++i) {
     const SweepPoint& p = points[i];
-    const BenchScene b = sceneOf(p);
+    BenchScene b = sceneOf(p);
     triangles[i] = static_cast<double>(b.scene.triangleCount());
     xs[i] = p.axis == "triangles" ? triangles[i] : p.axis == "pixels" ? p.width * static_cast<double>(p.height) / 1e6 : p.spotLights;
-    const PointTimes t = timePoint(b, renderers, warmup, frames);
+    const PointTimes t = timePoint(std::move(b), renderers, warmup, frames);
     ms[i] = t.medianMs;
     const std::string size = std::to_string(p.width) + "x" + std::to_string(p.height);
     std::printf("%-9s %-9s %9.0f %9s %-16s", p.axis.c_str(), p.name.c_str(), triangles[i], size.c_str(), lightsOf(p).c_str());

@@ -51,7 +51,7 @@
 #include "ray/ray_renderer.h"
 #include "image/png.h"
 #include "pipeline/frame_inputs.h"
-#include "pipeline/scene_additions.h"
+#include "pipeline/frame_spine.h"
 #include "vocabulary/limits.h"
 #if FACET_HAVE_GL
 #include "bench_lean_gl.h"
@@ -155,25 +155,23 @@ int runChildMode(const BenchOptions& o, int width, int height) {
   const std::size_t colon = o.child.rfind(':');
   const std::string backend = o.child.substr(colon + 1);
   BenchScene b = o.sweep.enabled ? sweepPointScene(o.sweep, o.child.substr(0, colon)) : makeBenchScene(o.child.substr(0, colon), width, height);
-  SceneAdditions added;
-  b.settings = addVolumeAndParticles(b.scene, b.settings, added, o.threads);
-  const FrameInputs frame = buildFrameInputs(b.scene, b.settings);
-  if (skips(backend, b.scene, frame)) return 1;
+  const PreparedFrame frame = FrameSpine(std::make_shared<const Scene>(std::move(b.scene)), o.threads).frame(b.settings);
+  if (skips(backend, *frame.scene, frame.inputs)) return 1;
   std::unique_ptr<Renderer> renderer = makeBackend(backend, o.threads);
-  for (int i = 0; i < std::max(1, o.warmup + 1); ++i) (void)renderer->render(b.scene, frame);
+  for (int i = 0; i < std::max(1, o.warmup + 1); ++i) (void)renderer->render(*frame.scene, frame.inputs);
   return 0;
 }
 
 int runCallgrindMode(const BenchOptions& o, int width, int height) {
-  const BenchScene b = makeBenchScene(o.scenes.front(), width, height);
-  const FrameInputs frame = buildFrameInputs(b.scene, b.settings);
+  BenchScene b = makeBenchScene(o.scenes.front(), width, height);
+  const PreparedFrame frame = FrameSpine(std::make_shared<const Scene>(std::move(b.scene)), o.threads).frame(b.settings);
   std::unique_ptr<Renderer> renderer = makeBackend(o.backends.front(), o.threads);
-  for (int i = 0; i < o.warmup; ++i) renderer->recycle(renderer->render(b.scene, frame).image);
+  for (int i = 0; i < o.warmup; ++i) renderer->recycle(renderer->render(*frame.scene, frame.inputs).image);
   CALLGRIND_ZERO_STATS;
   CALLGRIND_START_INSTRUMENTATION;
   for (int i = 0; i < o.frames; ++i) {
     if (!o.keepShadowMaps) renderer->forgetShadowMaps();
-    renderer->recycle(renderer->render(b.scene, frame).image);
+    renderer->recycle(renderer->render(*frame.scene, frame.inputs).image);
   }
   CALLGRIND_STOP_INSTRUMENTATION;
   std::printf("callgrind: %s on %s, %d frame(s) instrumented\n", o.scenes.front().c_str(), o.backends.front().c_str(), o.frames);
@@ -240,33 +238,32 @@ Command addBenchCommand(CLI::App& app) {
     for (std::size_t sceneIndex = 0; sceneIndex < o->scenes.size(); ++sceneIndex) {
       const std::string& name = o->scenes[sceneIndex];
       BenchScene b = makeBenchScene(name, width, height);
-      // What the settings add (particles, a volume's mesh or sprites), timed over the frames as its own stage.
-      // The first run reads the volume (kept for the others) and is not timed.
+      // The frame from the spine: its first run reads the volume (kept for the others) and is not timed.
+      FrameSpine spine(std::make_shared<const Scene>(std::move(b.scene)), o->threads);
+      const PreparedFrame prepared = spine.frame(b.settings);
+      const Scene& scene = *prepared.scene;
+      const FrameInputs& frame = prepared.inputs;
+      // What the settings add (particles, a volume's mesh or sprites), made anew and timed over the frames as its own stage.
       std::vector<double> adding;
-      SceneAdditions added;
-      Scene base = b.scene;
-      const RenderSettings asked = b.settings;
-      for (int i = 0; i <= o->frames; ++i) {
-        b.scene = base;
+      for (int i = 0; i < o->frames; ++i) {
+        spine.forgetScenes();
         const auto start = Clock::now();
-        b.settings = addVolumeAndParticles(b.scene, asked, added, o->threads);
-        if (i > 0) adding.push_back(millisecondsSince(start));
-        base.volume = b.scene.volume;
+        (void)spine.scene(b.settings);
+        adding.push_back(millisecondsSince(start));
       }
-      const FrameInputs frame = buildFrameInputs(b.scene, b.settings);
       std::vector<std::string> skipped(renderers.size());
       std::vector<char> skip(renderers.size(), 0);
       for (std::size_t r = 0; r < renderers.size(); ++r) {
-        skipped[r] = skipNote(o->backends[r], b.scene, frame);
+        skipped[r] = skipNote(o->backends[r], scene, frame);
         skip[r] = !skipped[r].empty();
       }
-      const double triangles = static_cast<double>(b.scene.triangleCount());
+      const double triangles = static_cast<double>(scene.triangleCount());
       std::vector<std::vector<double>> ms(renderers.size()), upload(renderers.size());
       // Each backend's passes in the order it runs them, with their times over the frames: where its frame goes.
       std::vector<std::vector<std::pair<std::string, std::vector<double>>>> passes(renderers.size());
       std::vector<RenderResult> last(renderers.size());
       for (std::size_t r = 0; r < renderers.size(); ++r)
-        for (int i = 0; i < o->warmup && !skip[r]; ++i) renderers[r]->recycle(renderers[r]->render(b.scene, frame).image);
+        for (int i = 0; i < o->warmup && !skip[r]; ++i) renderers[r]->recycle(renderers[r]->render(scene, frame).image);
       for (int i = 0; i < o->frames; ++i)
         for (std::size_t r = 0; r < renderers.size(); ++r) {
           if (skip[r]) continue;
@@ -274,7 +271,7 @@ Command addBenchCommand(CLI::App& app) {
           // Every column draws into its previous frame's image, as a loop of frames does (Renderer::recycle).
           renderers[r]->recycle(std::move(last[r].image));
           const auto start = Clock::now();
-          last[r] = renderers[r]->render(b.scene, frame);
+          last[r] = renderers[r]->render(scene, frame);
           ms[r].push_back(millisecondsSince(start));
           double up = 0;
           for (const PassTiming& t : last[r].timings) {
@@ -296,7 +293,7 @@ Command addBenchCommand(CLI::App& app) {
         if (o->backends[r] == "gl") glMedian = summarize(ms[r]).median;
         if (o->backends[r] == "lean") leanMedian = summarize(ms[r]).median;
       }
-      printAdditions(added, summarize(adding).median, frame);
+      printAdditions(prepared.added, summarize(adding).median, frame);
       for (std::size_t r = 0; r < renderers.size(); ++r) {
         if (skip[r]) {
           std::printf("  %s\n", skipped[r].c_str());
@@ -337,7 +334,7 @@ Command addBenchCommand(CLI::App& app) {
       for (const char* narrower : {"cpu4", "cpu8"})
         if (const RenderResult *cpu = drawn("cpu"), *other = drawn(narrower); cpu && other)
           std::printf("  %s vs cpu: %s\n", narrower, other->image == cpu->image ? "the same image, byte for byte" : "DIFFERENT images");
-      if (std::find(o->backends.begin(), o->backends.end(), "ray") != o->backends.end()) printRayRates(b.scene, frame, o->threads, o->frames);
+      if (std::find(o->backends.begin(), o->backends.end(), "ray") != o->backends.end()) printRayRates(scene, frame, o->threads, o->frames);
       std::fflush(stdout);
     }
 

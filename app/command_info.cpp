@@ -1,4 +1,4 @@
-// facet info: what a scene holds, as the renderers will see it.
+// facet info: what a scene holds, as the renderers will see it (with what the settings add: pipeline/frame_spine.h).
 #include <algorithm>
 #include <cstdio>
 #include <memory>
@@ -10,8 +10,8 @@
 #include "commands.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "pipeline/frame_spine.h"
 #include "pipeline/material_coefficients.h"
-#include "pipeline/scene_additions.h"
 #include "scene/gltf_writer.h"
 #include "scene/load_scene.h"
 
@@ -93,15 +93,15 @@ Command addInfoCommand(CLI::App& app) {
   return [options, isosurface]() {
     if (!options->output.empty()) checkOutputFile(options->output, {options->scenePath, options->settingsPath});
     if (!isosurface->empty()) checkOutputFile(*isosurface, {options->scenePath, options->settingsPath, options->output});
-    Scene scene = loadScene(options->scenePath);
-    SceneAdditions added;
-    const RenderSettings settings = addVolumeAndParticles(scene, settingsFor(*options, scene), added);
-    const std::string report = describe(scene, settings, added);
+    const auto loaded = std::make_shared<const Scene>(loadScene(options->scenePath));
+    const FrameScene frame = FrameSpine(loaded).scene(settingsFor(*options, *loaded));
+    const Scene& scene = *frame.scene;
+    const std::string report = describe(scene, frame.settings, frame.added);
     if (!isosurface->empty()) {
-      if (!added.isosurface) throw UsageError("--write-isosurface: the scene has no iso-surface (give a volume and --set volume.mode=isosurface)");
+      if (!frame.added.isosurface) throw UsageError("--write-isosurface: the scene has no iso-surface (give a volume and --set volume.mode=isosurface)");
       const auto at = std::find_if(scene.meshes.begin(), scene.meshes.end(), [](const Mesh& m) { return m.name == "isosurface"; });
       if (at == scene.meshes.end()) throw Error("--write-isosurface: the iso-surface is empty at volume.isoValue");
-      writeMeshGltf(*at, scene.volume.worldFromVolume, settings.volume.isoColor, *isosurface);
+      writeMeshGltf(*at, scene.volume.worldFromVolume, frame.settings.volume.isoColor, *isosurface);
     }
     std::fputs(report.c_str(), stdout);
     if (!options->output.empty()) {

@@ -32,11 +32,10 @@
 #include "image/png.h"
 #include "pipeline/camera_orbit.h"
 #include "pipeline/frame_inputs.h"
-#include "pipeline/view_setup.h"
+#include "pipeline/frame_spine.h"
 #include "ray/ray_renderer.h"
 #include "render/stage.h"
 #include "scene/load_scene.h"
-#include "pipeline/scene_additions.h"
 #include "vocabulary/limits.h"
 #if FACET_HAVE_GL
 #include "gl/gl_renderer.h"
@@ -140,51 +139,34 @@ Command addRenderCommand(CLI::App& app) {
       notThese.insert(notThese.end(), outputs.begin(), outputs.end());
       for (const std::string& report : reports) checkOutputFile(report, notThese);
     }
-    Scene scene = loadScene(options->common.scenePath);
-    // The camera moves are applied below, after the volume's box joins the
+    const auto loaded = std::make_shared<const Scene>(loadScene(options->common.scenePath));
+    // The camera moves are the spine's, made after the volume's box joins the
     // scene: the auto camera frames it, and sprites face the moved camera.
     CommonOptions unmoved = options->common;
     unmoved.orbit = CameraOrbit{};
-    const RenderSettings asked = settingsFor(unmoved, scene);
-    addMaterialMaps(scene, asked);
+    const RenderSettings asked = settingsFor(unmoved, *loaded);
+    FrameSpine spine(loaded, options->threads);
     // Frame k of a turntable: the asked move, turned a further k/N of a circle about camera.up.
     const auto orbitOf = [&](int k) {
       CameraOrbit orbit = options->common.orbit;
       orbit.azimuthDeg += 360.0 * k / frames;
       return orbit;
     };
-    std::optional<Scene> beforeSprites;  // the scene to add sprites to again, facing a moved camera
-    if ((options->common.orbit.moves() || frames > 1) && addsSprites(scene, asked)) beforeSprites = scene;
-    SceneAdditions added;
-    const RenderSettings settings = addVolumeAndParticles(scene, asked, added, options->threads);
-    for (const std::string& warning : scene.warnings) std::fprintf(stderr, "warning: %s: %s\n", scene.source.c_str(), warning.c_str());
-    const CameraSettings unmovedCamera = resolveCamera(scene, settings);  // what a frame without moves is drawn from
-    // The settings of frame k (with sprites, its scene too: they are added again facing its camera).
-    const auto settingsOf = [&](int k) -> RenderSettings {
-      const CameraOrbit orbit = orbitOf(k);
-      if (!orbit.moves()) return settings;
-      RenderSettings moved = beforeSprites ? asked : settings;
-      moved.camera = orbitCamera(unmovedCamera, orbit);
-      if (!beforeSprites) return moved;
-      scene = *beforeSprites;
-      SceneAdditions again;
-      return addVolumeAndParticles(scene, moved, again, options->threads);
-    };
     std::set<std::string> warned;  // a turntable's frames warn of the same things once
-    const auto buildFrame = [&](const RenderSettings& frameSettings) {
-      FrameInputs built = buildFrameInputs(scene, frameSettings);
-      for (const std::string& warning : built.warnings)
-        if (warned.insert(warning).second) std::fprintf(stderr, "warning: %s: %s\n", scene.source.c_str(), warning.c_str());
-      checkStage(built, stage);
-      return built;
+    const auto prepare = [&](int k) {
+      PreparedFrame prepared = spine.frame(asked, orbitOf(k));
+      for (const std::string& warning : prepared.warnings)
+        if (warned.insert(warning).second) std::fprintf(stderr, "warning: %s: %s\n", prepared.scene->source.c_str(), warning.c_str());
+      checkStage(prepared.inputs, stage);
+      return prepared;
     };
-    RenderSettings frameSettings = settingsOf(0);
-    FrameInputs frame = buildFrame(frameSettings);
+    PreparedFrame frame = prepare(0);
 #if FACET_HAVE_GL
-    if (options->backend == "gl") refuseCpuOnlyFrame(frame);  // before the driver is loaded
+    if (options->backend == "gl") refuseCpuOnlyFrame(frame.inputs);  // before the driver is loaded
 #endif
-    if (probe && ((*probe)[0] >= frame.width || (*probe)[1] >= frame.height))
-      throw UsageError("--probe " + options->probe + ": outside the " + std::to_string(frame.width) + "x" + std::to_string(frame.height) + " frame");
+    if (probe && ((*probe)[0] >= frame.inputs.width || (*probe)[1] >= frame.inputs.height))
+      throw UsageError("--probe " + options->probe + ": outside the " + std::to_string(frame.inputs.width) + "x" + std::to_string(frame.inputs.height) +
+                       " frame");
     ProgressBar progress(frames > 1 ? "ray tracing " + std::to_string(frames) + " frames" : "ray tracing");  // drawn on a terminal only
     int frameIndex = 0;
     // Where the time to the first PNG goes besides the passes: reading the scene, the renderer's start-up (GL: the context), the PNG.
@@ -194,27 +176,26 @@ Command addRenderCommand(CLI::App& app) {
     std::unique_ptr<Renderer> renderer =
         makeRenderer(*options, [&progress, &frameIndex, frames](double done) { progress.update((frameIndex + done) / frames); });
     const double startingUp = millisecondsSince(startup);
-    const FrameInputs first = frame;  // the report's figures
+    const FrameInputs first = frame.inputs;  // the report's figures
+    const SceneAdditions added = frame.added;
     RenderResult result;
     std::vector<double> frameTimes;
     std::vector<std::optional<DiffResult>> shadowDiffs;
     double written = 0;
     for (frameIndex = 0; frameIndex < frames; ++frameIndex) {
-      if (frameIndex > 0) {
-        frameSettings = settingsOf(frameIndex);
-        frame = buildFrame(frameSettings);
-      }
+      if (frameIndex > 0) frame = prepare(frameIndex);
+      const Scene& scene = *frame.scene;
       const auto drawing = std::chrono::steady_clock::now();
       try {
-        result = renderStage(*renderer, scene, frame, stage);
+        result = renderStage(*renderer, scene, frame.inputs, stage);
       } catch (const OutOfMemory&) {
         throw;
       } catch (const std::bad_alloc&) {
-        throw OutOfMemory("rendering " + scene.source + " (" + std::to_string(frame.width) + "x" + std::to_string(frame.height) + ")");
+        throw OutOfMemory("rendering " + scene.source + " (" + std::to_string(frame.inputs.width) + "x" + std::to_string(frame.inputs.height) + ")");
       }
       std::optional<DiffResult> shadowDiff;
       if (!reports.empty()) {
-        const FrameInputs cast = buildFrameInputs(scene, rayCastingOf(frameSettings));
+        const FrameInputs cast = buildFrameInputs(scene, rayCastingOf(frame.settings));
         const Image rays = makeRayRenderer(options->threads)->render(scene, cast).image;
         // One level is rounding (the same attributes, rounded differently); more is the shadow map.
         DiffThresholds overOneLevel;
@@ -231,10 +212,11 @@ Command addRenderCommand(CLI::App& app) {
     progress.finish();  // the bar's line cleared before the report
     const double total = millisecondsSince(start);
 
+    const Scene& scene = *frame.scene;
     std::printf("rendered %s: %s, %dx%d, %s shading, %s, shadows %s\n", scene.source.c_str(), countOf(scene.triangleCount(), "triangle").c_str(),
                 first.width, first.height, std::string(kShadingModeNames[static_cast<std::size_t>(first.shading)]).c_str(),
                 countOf(first.lights.size(), "light").c_str(), first.shadowLayerCount > 0 ? "on" : "off");
-    if (added.particles) std::printf("particles: %s at time %g s\n", countOf(added.particles, "sprite").c_str(), static_cast<double>(settings.time));
+    if (added.particles) std::printf("particles: %s at time %g s\n", countOf(added.particles, "sprite").c_str(), static_cast<double>(asked.time));
     if (added.splats) std::printf("volume: %s (splatting)\n", countOf(added.splats, "splat").c_str());
     if (added.isosurface)
       std::printf("volume: %s (marching cubes)\n", countOf(added.isoTriangles, "iso-surface triangle").c_str());
@@ -268,12 +250,12 @@ Command addRenderCommand(CLI::App& app) {
       std::printf("%d images written, %s to %s\n", frames, outputs.front().c_str(), outputs.back().c_str());
     }
     if (probe) {
-      const int x = (*probe)[0], y = frame.height - 1 - (*probe)[1];
+      const int x = (*probe)[0], y = frame.inputs.height - 1 - (*probe)[1];
       if (stage.kind == StageKind::Image) {
         const Rgba8 drawn = result.image.at(x, y);
         std::printf("probe: %s drew %d %d %d\n", options->backend.c_str(), drawn.r, drawn.g, drawn.b);
       }
-      for (const std::string& line : describeProbe(probePixel(scene, frame, x, y))) std::printf("probe: %s\n", line.c_str());
+      for (const std::string& line : describeProbe(probePixel(scene, frame.inputs, x, y))) std::printf("probe: %s\n", line.c_str());
     }
     return 0;
   };

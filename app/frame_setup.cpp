@@ -3,28 +3,11 @@
 #include "common/error.h"
 #include "cpu/cpu_renderer.h"
 #include "cpu/reference/reference_renderer.h"
-#include "pipeline/bump_map.h"
-#include "pipeline/displacement.h"
-#include "scene/environment_map.h"
 #if FACET_HAVE_GL
 #include "gl/gl_renderer.h"
 #endif
 
 namespace facet {
-
-void addMaterialMaps(Scene& scene, const RenderSettings& asked) {
-  useDisplacement(scene, asked.material);
-  useBumpMap(scene, asked.material);
-  useEnvironment(scene, asked.environment);
-}
-
-PreparedFrame prepareFrame(Scene& scene, const RenderSettings& asked, int threads) {
-  addMaterialMaps(scene, asked);
-  PreparedFrame prepared;
-  prepared.settings = addVolumeAndParticles(scene, asked, prepared.added, threads);
-  prepared.frame = buildFrameInputs(scene, prepared.settings);
-  return prepared;
-}
 
 std::unique_ptr<Renderer> makeBackend(const std::string& backend, const std::string& context, int threads, RenderProgress progress) {
   if (backend == "cpu") return makeCpuRenderer(threads);

@@ -19,15 +19,16 @@ void PixelPick::pick(ViewFrame& view, int x, int y) {
   try {
     p.cpu = probePixel(*drawn.scene, drawn.frame, x, y);
     const std::size_t pixel = static_cast<std::size_t>(y) * static_cast<std::size_t>(drawn.frame.width) + static_cast<std::size_t>(x);
-    p.glTriangle = view.glRenderer().visibleTriangles(*drawn.scene, drawn.frame)[pixel];
+    p.glTriangle = (*view.glRenderer().render(*drawn.scene, drawn.frame, {FrameOutput::TriangleIds}).triangleIds)[pixel];
     view.invalidate();  // the triangle ids went through OpenGL's framebuffers
     const Image gl = view.glImage();
     if (!gl.empty()) p.glColor = gl.at(x, y);
     if (p.cpu.covered) {
       const SingleTriangle single = singleTriangle(*drawn.scene, drawn.frame, p.cpu.triangle);
-      const std::vector<std::uint32_t> counts = view.cpuRenderer().fragmentCounts(single.scene, single.frame);
-      const std::vector<std::uint32_t> kept = view.cpuRenderer().visibleTriangles(*drawn.scene, drawn.frame);
-      p.glCoversTheSame = view.glRenderer().fragmentCounts(single.scene, single.frame) == counts;
+      Renderer& cpu = view.cpuRenderer();
+      const std::vector<std::uint32_t> counts = *cpu.render(single.scene, single.frame, {FrameOutput::FragmentCounts}).fragmentCounts;
+      const std::vector<std::uint32_t> kept = *cpu.render(*drawn.scene, drawn.frame, {FrameOutput::TriangleIds}).triangleIds;
+      p.glCoversTheSame = view.glRenderer().render(single.scene, single.frame, {FrameOutput::FragmentCounts}).fragmentCounts == counts;
       for (std::size_t i = 0; i < counts.size(); ++i) p.covered += counts[i] != 0, p.kept += counts[i] != 0 && kept[i] == p.cpu.triangle;
       p.coverage = coverageImage(counts, kept, p.cpu.triangle, drawn.frame.width, drawn.frame.height);
     }

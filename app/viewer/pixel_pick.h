@@ -45,7 +45,7 @@ class PixelPick {
     std::uint64_t version = 0;
     int width = 0, height = 0;           // of the frame it was picked in
     PixelProbe cpu;                      // the CPU backend's answer, with every term
-    std::uint32_t glTriangle = 0;        // what OpenGL kept there (Renderer::visibleTriangles)
+    std::uint32_t glTriangle = 0;        // what OpenGL kept there (FrameOutput::TriangleIds)
     std::optional<Rgba8> glColor;        // what OpenGL drew there (none: OpenGL cannot draw the frame)
     // The picked triangle's coverage (pipeline/triangle_coverage.h): pixel centres covered and kept, by the CPU;
     // whether OpenGL covers the same ones.

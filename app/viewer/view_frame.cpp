@@ -7,19 +7,10 @@
 
 #include "common/error.h"
 #include "cpu/cpu_renderer.h"
-#include "pipeline/bump_map.h"
-#include "pipeline/displacement.h"
-#include "pipeline/scene_additions.h"
-#include "scene/environment_map.h"
 #include "settings/settings_json.h"
 
 namespace facet::viewer {
 namespace {
-
-// Whether the settings or the scene add a volume or particles to the frame.
-bool hasAdditions(const Scene& scene, const RenderSettings& settings) {
-  return !settings.volume.file.empty() || !scene.volume.file.empty() || !settings.particles.empty() || !scene.emitters.empty();
-}
 
 bool isSoftwareRasterizer(const std::string& glRenderer) {
   return glRenderer.find("llvmpipe") != std::string::npos || glRenderer.find("softpipe") != std::string::npos;
@@ -41,22 +32,6 @@ std::string ViewFrame::backendLine(FrameBackend backend) const {
   return "3D view by " + shown + (softwareGl_ ? ": auto, OpenGL here is a software rasterizer" : ": auto, OpenGL here has a GPU");
 }
 
-std::shared_ptr<const Scene> ViewFrame::sceneFor(const ViewerState& state) {
-  const std::string displacement = displacementKey(state.settings.material);
-  const auto matches = [&](const Scene& s) {
-    return s.environment.path == state.settings.environment.map && s.displacement == displacement && s.bumpMapPath == state.settings.material.bumpMap;
-  };
-  if (matches(*state.scene)) return state.scene;
-  if (withEnvironment_ && environmentBase_ == state.scene && matches(*withEnvironment_)) return withEnvironment_;
-  auto copy = std::make_shared<Scene>(*state.scene);
-  useDisplacement(*copy, state.settings.material);
-  useBumpMap(*copy, state.settings.material);
-  useEnvironment(*copy, state.settings.environment);
-  environmentBase_ = state.scene;
-  withEnvironment_ = copy;
-  return copy;
-}
-
 bool ViewFrame::drawIfChanged(const ViewerState& state, bool preview, bool force) {
   RenderSettings settings = state.settings;
   const int divisor = preview ? std::clamp(state.dragPreview, 1, kMaxDragPreview) : 1;
@@ -68,25 +43,18 @@ bool ViewFrame::drawIfChanged(const ViewerState& state, bool preview, bool force
   if (std::exchange(redraw_, false)) force = true;
   if (key == drawn_.key && !force) return false;
   try {
-    std::shared_ptr<const Scene> scene = sceneFor(state);
-    if (hasAdditions(*scene, settings)) {
-      // A copy with the volume and this time's particles, facing this frame's camera; the volume is read once.
-      auto added = std::make_shared<Scene>(*scene);
-      if (volume_) added->volume = *volume_;
-      SceneAdditions counts;
-      settings = addVolumeAndParticles(*added, settings, counts);
-      volume_ = std::make_shared<Scene::PlacedVolume>(added->volume);
-      scene = added;
-    }
-    FrameInputs frame = buildFrameInputs(*scene, settings);
+    // The spine keeps the files it read and the scenes it made while the settings name the same; sprites face each frame's camera.
+    if (!spine_) spine_.emplace(state.scene);
+    else if (spine_->loaded() != state.scene) spine_->setLoaded(state.scene);
+    PreparedFrame prepared = spine_->frame(settings);
     Renderer& renderer = onCpu ? *cpuRenderer_ : static_cast<Renderer&>(glRenderer_);
-    RenderResult result = renderer.render(*scene, frame);
+    RenderResult result = renderer.render(*prepared.scene, prepared.inputs);
     drawn_.milliseconds = 0;
     for (const PassTiming& t : result.timings)
       if (t.pass != "read-back") drawn_.milliseconds += t.milliseconds;
     if (key != drawn_.key || drawn_.version == 0) ++drawn_.version;
-    drawn_.scene = scene;
-    drawn_.frame = std::move(frame);
+    drawn_.scene = std::move(prepared.scene);
+    drawn_.frame = std::move(prepared.inputs);
     renderer.recycle(std::exchange(drawn_.image, std::move(result.image)));  // the last frame's storage holds the next
     drawn_.onCpu = onCpu;
     drawn_.preview = divisor > 1;

@@ -5,11 +5,13 @@
 // the part of the window beside the panel.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "gl/gl_renderer.h"
 #include "image/image.h"
 #include "pipeline/frame_inputs.h"
+#include "pipeline/frame_spine.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
 #include "viewer/image_texture.h"
@@ -68,9 +70,6 @@ class ViewFrame {
   void blit(int windowWidth, int windowHeight, ViewRect view) const;
 
  private:
-  // The viewer's scene with the settings' displacement, bump map and environment map, copied once per change of them.
-  std::shared_ptr<const Scene> sceneFor(const ViewerState& state);
-
   const gl::GlFunctions& gl_;
   WindowGlRenderer& glRenderer_;
   std::unique_ptr<Renderer> cpuRenderer_;
@@ -80,9 +79,9 @@ class ViewFrame {
   bool redraw_ = false;      // invalidate()
   Image glImage_;            // glImage()'s, for drawn_.version
   std::uint64_t glImageVersion_ = 0;
-  std::shared_ptr<const Scene> environmentBase_, withEnvironment_;
-  // The volume the last frame read (pipeline/scene_additions.h), kept so that the next reads it no more.
-  std::shared_ptr<const Scene::PlacedVolume> volume_;
+  // What the frames are drawn from (pipeline/frame_spine.h), over the scenes the viewer loads: the files
+  // the settings name (the maps, the volume) are read once, the sprites added again for each frame.
+  std::optional<FrameSpine> spine_;
 };
 
 }  // namespace facet::viewer

@@ -1,6 +1,6 @@
 #pragma once
 // The depth-complexity view (renderer/PIPELINE.md, section 6, "Depth
-// complexity"): Renderer::fragmentCounts as figures and as an image, so that
+// complexity"): FrameOutput::FragmentCounts as figures and as an image, so that
 // a student sees why the z-buffer's cost follows the projected area drawn,
 // not the pixels shown.
 #include <cstdint>

@@ -42,7 +42,21 @@ class CpuRenderer final : public Renderer {
     return "cpu rasterizer, " + countOf(pool_.size(), "thread") + ", " + std::to_string(buffers_.lanes) + " lanes";
   }
 
-  RenderResult render(const Scene& scene, const FrameInputs& frame) override {
+  // Each output asked from passes of its own, in FrameOutput order.
+  RenderResult render(const Scene& scene, const FrameInputs& frame, const FrameOutputs& asked) override {
+    RenderResult result = asked.has(FrameOutput::Image) ? drawImage(scene, frame) : RenderResult{};
+    if (asked.has(FrameOutput::TriangleIds)) result.triangleIds = visibleTriangles(scene, frame);
+    if (asked.has(FrameOutput::FragmentCounts)) result.fragmentCounts = fragmentCounts(scene, frame);
+    if (asked.has(FrameOutput::Depth)) result.depth = depthBuffer(scene, frame);
+    if (asked.has(FrameOutput::ShadowMaps)) result.shadowMaps = shadowMaps(scene, frame);
+    if (asked.has(FrameOutput::Normals)) result.normals = normals(scene, frame);
+    return result;
+  }
+
+  void forgetShadowMaps() override { mapsDrawn_ = {}; }
+
+ private:
+  RenderResult drawImage(const Scene& scene, const FrameInputs& frame) {
     check_(scene, frame);
     RenderResult result;
     cpu::prepareFrame(pool_, buffers_, scene, frame);
@@ -107,20 +121,20 @@ class CpuRenderer final : public Renderer {
     return result;
   }
 
-  std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) override {
+  std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) {
     return perPixel(scene, frame, [&](std::vector<std::uint32_t>& ids, ColorBuffer& unused) {
       cpu::litPass(pool_, buffers_, scene, frame, maps_, unused, {.triangleIds = &ids});
     });
   }
 
-  std::vector<std::uint32_t> fragmentCounts(const Scene& scene, const FrameInputs& frame) override {
+  std::vector<std::uint32_t> fragmentCounts(const Scene& scene, const FrameInputs& frame) {
     return perPixel(scene, frame, [&](std::vector<std::uint32_t>& counts, ColorBuffer& unused) {
       cpu::litPass(pool_, buffers_, scene, frame, maps_, unused, {.fragmentCounts = &counts});
     });
   }
 
   // The lit pass of the frame at the pixel centres (one pass, whatever its samples), keeping its z-buffer.
-  std::vector<float> depthBuffer(const Scene& scene, const FrameInputs& frame) override {
+  std::vector<float> depthBuffer(const Scene& scene, const FrameInputs& frame) {
     check_(scene, frame);
     cpu::prepareFrame(pool_, buffers_, scene, frame);
     RenderResult maps;
@@ -130,7 +144,7 @@ class CpuRenderer final : public Renderer {
     return buffers_.depth;
   }
 
-  ShadowMapTexels shadowMaps(const Scene& scene, const FrameInputs& frame) override {
+  ShadowMapTexels shadowMaps(const Scene& scene, const FrameInputs& frame) {
     check_(scene, frame);
     if (frame.shadowLayerCount == 0) return {};
     cpu::prepareFrame(pool_, buffers_, scene, frame);
@@ -139,9 +153,7 @@ class CpuRenderer final : public Renderer {
     return {maps_.size, maps_.layers, {maps_.depth.begin(), maps_.depth.end()}};
   }
 
-  void forgetShadowMaps() override { mapsDrawn_ = {}; }
-
-  std::vector<glm::vec4> normals(const Scene& scene, const FrameInputs& frame) override {
+  std::vector<glm::vec4> normals(const Scene& scene, const FrameInputs& frame) {
     const FrameInputs drawn = normalsFrame(frame);
     check_(scene, drawn);
     cpu::prepareFrame(pool_, buffers_, scene, drawn);  // no shadow pass: the frame has no lights
@@ -150,7 +162,6 @@ class CpuRenderer final : public Renderer {
     return {color_.data(), color_.data() + static_cast<std::size_t>(drawn.width) * static_cast<std::size_t>(drawn.height)};
   }
 
- private:
   // A lit pass that writes one value per pixel instead of the image: `pass(values, unusedColorBuffer)`
   // after the vertex positions and the shadow maps (the vertex stage of Gouraud reads them).
   template <class Pass>

@@ -33,13 +33,13 @@ void shadowPass(ThreadPool& pool, FrameBuffers& buffers, const Scene& scene, con
 
 // What a lit pass writes besides the image, or in its place.
 struct LitPassOutput {
-  // Which triangle each pixel keeps (Renderer::visibleTriangles; width ×
+  // Which triangle each pixel keeps (FrameOutput::TriangleIds; width ×
   // height, bottom row first), in place of the colour buffer, which is left alone.
   std::vector<std::uint32_t>* triangleIds = nullptr;
-  // The fragments each pixel receives before any test (Renderer::fragmentCounts;
+  // The fragments each pixel receives before any test (FrameOutput::FragmentCounts;
   // width × height, bottom row first, zeroed by the caller), and nothing else.
   std::vector<std::uint32_t>* fragmentCounts = nullptr;
-  // The normals stage (Renderer::normals, a frame from pipeline/stage_frames.h's
+  // The normals stage (FrameOutput::Normals, a frame from pipeline/stage_frames.h's
   // normalsFrame): (N, 1) in place of each opaque pixel's colour, in a colour
   // buffer the caller cleared to 0; no lines, points or blended triangles.
   bool normals = false;

@@ -59,10 +59,10 @@ PixelProbe probePixel(const Scene& scene, const FrameInputs& frame, int x, int y
   PixelProbe probe;
   probe.x = x;
   probe.y = y;
-  const std::unique_ptr<Renderer> renderer = makeCpuRenderer(1);
   const std::size_t pixel = static_cast<std::size_t>(y) * static_cast<std::size_t>(frame.width) + static_cast<std::size_t>(x);
-  probe.triangle = renderer->visibleTriangles(scene, frame)[pixel];
-  probe.drawn = renderer->render(scene, frame).image.at(x, y);
+  const RenderResult drawn = makeCpuRenderer(1)->render(scene, frame, {FrameOutput::Image, FrameOutput::TriangleIds});
+  probe.triangle = (*drawn.triangleIds)[pixel];
+  probe.drawn = drawn.image.at(x, y);
   probe.covered = probe.triangle != 0;
   if (!probe.covered) return probe;
 

@@ -46,7 +46,7 @@ struct ProbedLight {
 struct PixelProbe {
   int x = 0, y = 0;                // the pixel, from the bottom left as Image stores it
   bool covered = false;            // a triangle covers it (else the background)
-  std::uint32_t triangle = 0;      // as Renderer::visibleTriangles numbers it: 1 + the frame's triangle index
+  std::uint32_t triangle = 0;      // as FrameOutput::TriangleIds numbers it: 1 + the frame's triangle index
   int instance = 0;                // into FrameInputs::instances
   std::uint32_t meshTriangle = 0;  // the triangle within its mesh
   glm::vec3 weights{0.0f};         // perspective-correct barycentric weights of the pixel centre (sum 1)

@@ -57,23 +57,23 @@ class GlFrameRenderer {
   // them, read into `storage` (resized: a recycled image keeps its memory).
   Image readImage(Image storage = {}) const;
 
-  // Which triangle each pixel keeps (Renderer::visibleTriangles): the lit
+  // Which triangle each pixel keeps (FrameOutput::TriangleIds): the lit
   // pass's geometry, culling and z-buffer, writing ids instead of colours.
   std::vector<std::uint32_t> drawTriangleIds(const Scene& scene, const FrameInputs& frame);
 
-  // The depth complexity (Renderer::fragmentCounts): every triangle the lit
+  // The depth complexity (FrameOutput::FragmentCounts): every triangle the lit
   // pass draws, culled alike, with no depth test, each fragment adding 1 to
   // a 32-bit float (exact to 2^24).
   std::vector<std::uint32_t> drawFragmentCounts(const FrameInputs& frame);
 
   // The lit pass's z-buffer after the frame drawn at the pixel centres
-  // (Renderer::depthBuffer): its DEPTH_COMPONENT32F attachment read as float.
+  // (FrameOutput::Depth): its DEPTH_COMPONENT32F attachment read as float.
   std::vector<float> drawDepth(const Scene& scene, const FrameInputs& frame);
 
-  // Pass 1's depth array texture (Renderer::shadowMaps), drawn unless it holds this frame's maps already.
+  // Pass 1's depth array texture (FrameOutput::ShadowMaps), drawn unless it holds this frame's maps already.
   ShadowMapTexels readShadowMaps(const Scene& scene, const FrameInputs& frame);
 
-  // The normals stage (Renderer::normals): normalsFrame's lit pass with the
+  // The normals stage (FrameOutput::Normals): normalsFrame's lit pass with the
   // FACET_NORMAL_OUTPUT programs, opaque triangles only, read back as float.
   std::vector<glm::vec4> drawNormals(const Scene& scene, const FrameInputs& frame);
 

@@ -19,50 +19,29 @@ class GlFrames {
  public:
   explicit GlFrames(const gl::GetProcAddress& getProcAddress) : frameRenderer_(getProcAddress) {}
 
+  // The outputs asked, each from passes of its own in FrameOutput order.
   // `storage`: the renderer's recycled image, whose storage the read-back fills.
-  RenderResult render(const Scene& scene, const FrameInputs& frame, Image storage) {
+  RenderResult render(const Scene& scene, const FrameInputs& frame, const FrameOutputs& asked, Image storage) {
     check_(scene, frame);
     RenderResult result;
     Clock::time_point start = Clock::now();
-    if (upload(scene)) result.timings.push_back({kSceneUploadPass, millisecondsSince(start)});
-    for (PassTiming& timing : frameRenderer_.drawFrame(scene, frame)) result.timings.push_back(std::move(timing));
-    start = Clock::now();
-    result.image = frameRenderer_.readImage(std::move(storage));
-    result.timings.push_back({"read-back", millisecondsSince(start)});
+    const bool uploaded = upload(scene);
+    if (asked.has(FrameOutput::Image)) {  // the image's timings: the upload, its passes, the read-back
+      if (uploaded) result.timings.push_back({kSceneUploadPass, millisecondsSince(start)});
+      for (PassTiming& timing : frameRenderer_.drawFrame(scene, frame)) result.timings.push_back(std::move(timing));
+      start = Clock::now();
+      result.image = frameRenderer_.readImage(std::move(storage));
+      result.timings.push_back({"read-back", millisecondsSince(start)});
+    }
+    if (asked.has(FrameOutput::TriangleIds)) result.triangleIds = frameRenderer_.drawTriangleIds(scene, frame);
+    if (asked.has(FrameOutput::FragmentCounts)) result.fragmentCounts = frameRenderer_.drawFragmentCounts(frame);
+    if (asked.has(FrameOutput::Depth)) result.depth = frameRenderer_.drawDepth(scene, frame);
+    if (asked.has(FrameOutput::ShadowMaps)) result.shadowMaps = frameRenderer_.readShadowMaps(scene, frame);
+    if (asked.has(FrameOutput::Normals)) result.normals = frameRenderer_.drawNormals(scene, frame);
     return result;
   }
 
   void forgetShadowMaps() { frameRenderer_.forgetShadowMaps(); }
-
-  std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) {
-    check_(scene, frame);
-    upload(scene);
-    return frameRenderer_.drawTriangleIds(scene, frame);
-  }
-
-  std::vector<std::uint32_t> fragmentCounts(const Scene& scene, const FrameInputs& frame) {
-    check_(scene, frame);
-    upload(scene);
-    return frameRenderer_.drawFragmentCounts(frame);
-  }
-
-  std::vector<float> depthBuffer(const Scene& scene, const FrameInputs& frame) {
-    check_(scene, frame);
-    upload(scene);
-    return frameRenderer_.drawDepth(scene, frame);
-  }
-
-  ShadowMapTexels shadowMaps(const Scene& scene, const FrameInputs& frame) {
-    check_(scene, frame);
-    upload(scene);
-    return frameRenderer_.readShadowMaps(scene, frame);
-  }
-
-  std::vector<glm::vec4> normals(const Scene& scene, const FrameInputs& frame) {
-    check_(scene, frame);
-    upload(scene);
-    return frameRenderer_.drawNormals(scene, frame);
-  }
 
   gl::GlFrameRenderer& frameRenderer() { return frameRenderer_; }
   const gl::GlFrameRenderer& frameRenderer() const { return frameRenderer_; }
@@ -100,37 +79,12 @@ class HeadlessGlRenderer final : public Renderer {
     return "gl: " + frames_->frameRenderer().rendererName() + " via " + std::string(context_->name());
   }
 
-  RenderResult render(const Scene& scene, const FrameInputs& frame) override {
+  RenderResult render(const Scene& scene, const FrameInputs& frame, const FrameOutputs& asked) override {
     context_->makeCurrent();  // another renderer of this process may have made its own current
-    return frames_->render(scene, frame, recycledImage());
+    return frames_->render(scene, frame, asked, asked.has(FrameOutput::Image) ? recycledImage() : Image());
   }
 
   void forgetShadowMaps() override { frames_->forgetShadowMaps(); }
-
-  std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) override {
-    context_->makeCurrent();
-    return frames_->visibleTriangles(scene, frame);
-  }
-
-  std::vector<std::uint32_t> fragmentCounts(const Scene& scene, const FrameInputs& frame) override {
-    context_->makeCurrent();
-    return frames_->fragmentCounts(scene, frame);
-  }
-
-  std::vector<float> depthBuffer(const Scene& scene, const FrameInputs& frame) override {
-    context_->makeCurrent();
-    return frames_->depthBuffer(scene, frame);
-  }
-
-  ShadowMapTexels shadowMaps(const Scene& scene, const FrameInputs& frame) override {
-    context_->makeCurrent();
-    return frames_->shadowMaps(scene, frame);
-  }
-
-  std::vector<glm::vec4> normals(const Scene& scene, const FrameInputs& frame) override {
-    context_->makeCurrent();
-    return frames_->normals(scene, frame);
-  }
 
  private:
   std::unique_ptr<gl::HeadlessContext> context_;
@@ -142,15 +96,10 @@ class CurrentContextGlRenderer final : public WindowGlRenderer {
   explicit CurrentContextGlRenderer(const gl::GetProcAddress& getProcAddress) : frames_(getProcAddress) {}
 
   std::string description() const override { return "gl: " + frames_.frameRenderer().rendererName() + " in the window's context"; }
-  RenderResult render(const Scene& scene, const FrameInputs& frame) override { return frames_.render(scene, frame, recycledImage()); }
-  void forgetShadowMaps() override { frames_.forgetShadowMaps(); }
-  std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) override {
-    return frames_.visibleTriangles(scene, frame);
+  RenderResult render(const Scene& scene, const FrameInputs& frame, const FrameOutputs& asked) override {
+    return frames_.render(scene, frame, asked, asked.has(FrameOutput::Image) ? recycledImage() : Image());
   }
-  std::vector<std::uint32_t> fragmentCounts(const Scene& scene, const FrameInputs& frame) override { return frames_.fragmentCounts(scene, frame); }
-  std::vector<float> depthBuffer(const Scene& scene, const FrameInputs& frame) override { return frames_.depthBuffer(scene, frame); }
-  ShadowMapTexels shadowMaps(const Scene& scene, const FrameInputs& frame) override { return frames_.shadowMaps(scene, frame); }
-  std::vector<glm::vec4> normals(const Scene& scene, const FrameInputs& frame) override { return frames_.normals(scene, frame); }
+  void forgetShadowMaps() override { frames_.forgetShadowMaps(); }
   unsigned framebuffer() const override { return frames_.frameRenderer().framebuffer(); }
   const std::string& rendererName() const override { return frames_.frameRenderer().rendererName(); }
 

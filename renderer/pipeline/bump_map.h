@@ -1,16 +1,18 @@
 #pragma once
 // Bump mapping (renderer/PIPELINE.md, section 8): the height map a scene's
-// frames bend their normals by, loaded once with the scene, and the
-// tangents its textured meshes need for it.
+// frames bend their normals by, and the tangents its textured meshes need
+// for it; a step of the frame's spine (pipeline/frame_spine.h).
+#include <string>
+
+#include "image/image.h"
 #include "scene/scene.h"
-#include "settings/render_settings.h"
 
 namespace facet {
 
-// Makes scene.bumpMap the height map `material.bumpMap` names (a greyscale
-// PNG, refused naming the key and the file otherwise), and gives every mesh
-// with TEXCOORD_0 and no tangents computed ones, priced against the scene
-// budget first; nothing for an empty name. Renews the scene's identity.
-void useBumpMap(Scene& scene, const MaterialOverrides& material);
+// Makes scene.bumpMap `heights`, the greyscale map `path` names
+// (pipeline/displacement.h reads it), and gives every mesh with TEXCOORD_0
+// and no tangents computed ones, priced against the scene budget first
+// (refused naming material.bumpMap and the mesh). Renews the scene's identity.
+void useBumpMap(Scene& scene, const std::string& path, const Image& heights);
 
 }  // namespace facet

@@ -131,16 +131,4 @@ std::string displacementKey(const MaterialOverrides& material) {
   return material.displacementMap + numbers;
 }
 
-void useDisplacement(Scene& scene, const MaterialOverrides& material) {
-  if (material.displacementMap.empty()) return;
-  if (!scene.displacement.empty()) throw Error("material.displacementMap: the scene is already displaced (" + scene.displacement + ")");
-  try {
-    displaceMeshes(scene, loadHeightMap(material.displacementMap), material.displacementScale, material.displacementSubdivisions);
-  } catch (const Error& e) {
-    const std::string what = e.what();
-    throw Error(what.rfind("material.", 0) == 0 ? what : "material.displacementMap: " + what);
-  }
-  scene.displacement = displacementKey(material);
-}
-
 }  // namespace facet

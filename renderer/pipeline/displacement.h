@@ -1,7 +1,8 @@
 #pragma once
 // Displacement mapping (renderer/PIPELINE.md, section 8): every textured mesh
 // subdivided, its vertices moved along their normals by a height map, and
-// its normals recomputed, once, before either backend draws.
+// its normals recomputed, once, before either backend draws: a step of the
+// frame's spine (pipeline/frame_spine.h).
 #include <string>
 
 #include "image/image.h"
@@ -21,11 +22,7 @@ double heightAt(const Image& heights, double s, double t);
 // made, when the triangles would not fit the scene budget.
 void displaceMeshes(Scene& scene, const Image& heights, float scale, int subdivisions);
 
-// The key a scene's displacement was made with: the three settings, or "" for none.
+// The key a scene's displacement was made with (Scene::displacement): the three settings, or "" for none.
 std::string displacementKey(const MaterialOverrides& material);
-
-// Displaces a freshly loaded `scene` as `material` says (nothing for an empty
-// map name) and records the key in scene.displacement; errors name the setting.
-void useDisplacement(Scene& scene, const MaterialOverrides& material);
 
 }  // namespace facet

@@ -76,15 +76,15 @@ FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings)
   f.windowFromNdc = viewportMatrix(f.width, f.height);
 
   if (displacementKey(settings.material) != scene.displacement)
-    throw Error("material.displacementMap: the scene's meshes were not displaced with these settings (useDisplacement displaces them)");
+    throw Error("material.displacementMap: the scene's meshes were not displaced with these settings (FrameSpine displaces them)");
   if (settings.material.bumpMap != scene.bumpMapPath)
-    throw Error("material.bumpMap: '" + settings.material.bumpMap + "' is not the scene's loaded bump map (useBumpMap loads it)");
+    throw Error("material.bumpMap: '" + settings.material.bumpMap + "' is not the scene's loaded bump map (FrameSpine loads it)");
   if (!scene.bumpMapPath.empty() && interpolatesNormals(settings.shading)) {
     f.bump.map = &scene.bumpMap;
     f.bump.scale = settings.material.bumpScale;
   }
   if (settings.environment.map != scene.environment.path)
-    throw Error("environment.map: '" + settings.environment.map + "' is not the scene's loaded map (useEnvironment loads it)");
+    throw Error("environment.map: '" + settings.environment.map + "' is not the scene's loaded map (FrameSpine loads it)");
   if (!scene.environment.empty()) {
     FrameInputs::Environment& e = f.environment;
     e.map = &scene.environment;

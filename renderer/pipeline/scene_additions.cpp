@@ -39,17 +39,6 @@ Image gaussianFootprint() {
   return image;
 }
 
-// The volume of the settings, read once per file and resolution.
-void readVolume(Scene& scene, const VolumeSettings& settings, const std::string& file) {
-  const std::string key = file + "@" + std::to_string(settings.resolution);
-  if (scene.volume.data && scene.volume.key == key) return;
-  if (settings.resolution < kMinMarschnerLobbResolution || settings.resolution > kMaxMarschnerLobbResolution)
-    throw Error("settings key 'volume.resolution': " + std::to_string(settings.resolution) + " is outside " +
-                std::to_string(kMinMarschnerLobbResolution) + " to " + std::to_string(kMaxMarschnerLobbResolution));
-  scene.volume.data = std::make_shared<const Volume>(loadVolume(file, settings.resolution));
-  scene.volume.key = key;
-}
-
 // The mean of the finite samples: the default iso value, which separates a
 // scan's tissue from its background far better than the middle of the range
 // (one bright voxel moves that), and is 0.5 for the Marschner-Lobb signal.
@@ -151,41 +140,42 @@ glm::mat4 worldFromVolume(const Volume& volume, const VolumeSettings& settings) 
          glm::translate(glm::mat4(1.0f), -0.5f * extent);
 }
 
+Volume readVolume(const VolumeSettings& settings, const std::string& file) {
+  if (settings.resolution < kMinMarschnerLobbResolution || settings.resolution > kMaxMarschnerLobbResolution)
+    throw Error("settings key 'volume.resolution': " + std::to_string(settings.resolution) + " is outside " +
+                std::to_string(kMinMarschnerLobbResolution) + " to " + std::to_string(kMaxMarschnerLobbResolution));
+  return loadVolume(file, settings.resolution);
+}
+
+void placeVolume(Scene& scene, std::shared_ptr<const Volume> volume, const VolumeSettings& settings, SceneAdditions& added) {
+  scene.volume.data = std::move(volume);
+  scene.volume.worldFromVolume = worldFromVolume(*scene.volume.data, settings);
+  scene.volume.transfer = parseTransferFunction(settings.transfer, scene.volume.data->minValue, scene.volume.data->maxValue);
+  if (settings.mode == VolumeMode::Isosurface) {
+    addIsosurface(scene, settings, added);
+    return;
+  }
+  const glm::vec3 extent = scene.volume.data->extent();
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::vec3 p((corner & 1) ? extent.x : 0.0f, (corner & 2) ? extent.y : 0.0f, (corner & 4) ? extent.z : 0.0f);
+    scene.unmeshed.include(glm::vec3(scene.volume.worldFromVolume * glm::vec4(p, 1.0f)));
+  }
+  scene.identity.renew();
+  added.rayCastVolume = settings.mode == VolumeMode::Raycast;
+}
+
 bool addsSprites(const Scene& scene, const RenderSettings& settings) {
   const bool volume = !settings.volume.file.empty() || !scene.volume.file.empty();
   return !settings.particles.empty() || !scene.emitters.empty() || (volume && settings.volume.mode == VolumeMode::Splat);
 }
 
-RenderSettings addVolumeAndParticles(Scene& scene, const RenderSettings& settings, SceneAdditions& added, int threads) {
-  added = {};
-  const VolumeSettings& vs = settings.volume;
-  const std::string file = vs.file.empty() ? scene.volume.file : vs.file;
-  const bool sprites = addsSprites(scene, settings);
-  if (!file.empty()) {
-    readVolume(scene, vs, file);
-    scene.volume.worldFromVolume = worldFromVolume(*scene.volume.data, vs);
-    scene.volume.transfer = parseTransferFunction(vs.transfer, scene.volume.data->minValue, scene.volume.data->maxValue);
-    if (vs.mode == VolumeMode::Isosurface) {
-      addIsosurface(scene, vs, added);
-    } else {
-      const glm::vec3 extent = scene.volume.data->extent();
-      for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 p((corner & 1) ? extent.x : 0.0f, (corner & 2) ? extent.y : 0.0f, (corner & 4) ? extent.z : 0.0f);
-        scene.unmeshed.include(glm::vec3(scene.volume.worldFromVolume * glm::vec4(p, 1.0f)));
-      }
-      scene.identity.renew();
-      added.rayCastVolume = vs.mode == VolumeMode::Raycast;
-    }
-  }
-  if (!sprites) return settings;
-  const RenderSettings resolved = materialize(scene, settings, true, true);
-  if (!file.empty() && vs.mode == VolumeMode::Splat) {
-    const std::vector<Sprite> voxels = splats(scene, vs);
-    addSprites(scene, voxels, resolved.camera, gaussianFootprint(), SpriteBlending::Over, true, "splats");
+void addSplatsAndParticles(Scene& scene, const RenderSettings& settings, const CameraSettings& camera, SceneAdditions& added, int threads) {
+  if (scene.volume.data && settings.volume.mode == VolumeMode::Splat) {
+    const std::vector<Sprite> voxels = splats(scene, settings.volume);
+    addSprites(scene, voxels, camera, gaussianFootprint(), SpriteBlending::Over, true, "splats");
     added.splats = voxels.size();
   }
-  added.particles = addParticles(scene, settings, resolved.camera, threads);
-  return resolved;
+  added.particles = addParticles(scene, settings, camera, threads);
 }
 
 }  // namespace facet

@@ -4,6 +4,8 @@
 // cubes' iso-surface, as splats, or as the box ray casting fills; and the
 // particles of every emitter at settings.time, as sprites.
 #include <cstdint>
+#include <memory>
+#include <string>
 
 #include "scene/scene.h"
 #include "settings/render_settings.h"
@@ -22,17 +24,26 @@ struct SceneAdditions {
 // side), turned by `rotation` about the box's centre, which is moved to `center`.
 glm::mat4 worldFromVolume(const Volume& volume, const VolumeSettings& settings);
 
-// Adds what the settings ask for to `scene` and returns the settings the
-// frame is built with: when sprites are added, the camera and lights
-// resolved first (on the scene and its volume's box, not the particles)
-// and switched to manual, so that the sprites face the frame's camera.
-// Throws facet::Error naming the key or file at fault; `threads` runs the
-// particles' integration (0: one per core).
-RenderSettings addVolumeAndParticles(Scene& scene, const RenderSettings& settings, SceneAdditions& added, int threads = 0);
+// The steps of the frame's spine (pipeline/frame_spine.h), each on a scene
+// the spine made, never on the loaded one.
 
-// Whether addVolumeAndParticles adds sprites (particles, splats): they face
-// the camera they were added for, so a frame from another camera adds them
-// anew to the scene as it was before.
+// The volume `file` names, read at `settings.resolution` (the builtin's
+// samples a side). Throws facet::Error naming the key or the file.
+Volume readVolume(const VolumeSettings& settings, const std::string& file);
+
+// Places `volume` in `scene` as `settings` say: marching cubes' iso-surface
+// as a mesh, or the box that ray casting or splats fill counted in its
+// bounds. Throws facet::Error naming the key (volume.transfer).
+void placeVolume(Scene& scene, std::shared_ptr<const Volume> volume, const VolumeSettings& settings, SceneAdditions& added);
+
+// Whether the frame adds sprites (particles, splats): they face the camera
+// they were added for, so each frame adds its own.
 bool addsSprites(const Scene& scene, const RenderSettings& settings);
+
+// The splats of the volume `scene` holds (volume.mode = splat) and the
+// particles of every emitter at settings.time, added to `scene` as sprites
+// facing `camera`. Throws facet::Error naming the key or file at fault;
+// `threads` runs the particles' integration (0: one per core).
+void addSplatsAndParticles(Scene& scene, const RenderSettings& settings, const CameraSettings& camera, SceneAdditions& added, int threads);
 
 }  // namespace facet

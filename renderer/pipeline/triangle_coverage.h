@@ -3,7 +3,7 @@
 // triangle): the pixel centres it covers after clipping and culling, by the
 // backends' own rasterizer, and which of them it keeps after the z-buffer.
 // It is drawn as a frame of its own: a scene holding only that triangle,
-// placed by its instance's TM, whose Renderer::fragmentCounts is 1 exactly
+// placed by its instance's TM, whose FrameOutput::FragmentCounts is 1 exactly
 // where the triangle covers a pixel centre (renderer/PIPELINE.md, section
 // 6, "Depth complexity"); both backends draw it, so their coverage of any
 // triangle can be compared.
@@ -21,7 +21,7 @@ struct SingleTriangle {
   FrameInputs frame;
 };
 
-// Triangle `triangle` of the frame (numbered as Renderer::visibleTriangles: 1 + its index in the frame's triangle list) alone.
+// Triangle `triangle` of the frame (numbered as FrameOutput::TriangleIds: 1 + its index in the frame's triangle list) alone.
 // Throws facet::Error for a number the frame does not have.
 SingleTriangle singleTriangle(const Scene& scene, const FrameInputs& frame, std::uint32_t triangle);
 

@@ -39,7 +39,19 @@ class RayRenderer final : public Renderer {
 
   std::string description() const override { return "ray tracer, " + countOf(static_cast<std::size_t>(pool_.size()), "thread"); }
 
-  RenderResult render(const Scene& scene, const FrameInputs& frame) override {
+  // The image and the stages a rasterizer also reports (triangle ids, fragment counts); no z-buffer, maps or normals.
+  RenderResult render(const Scene& scene, const FrameInputs& frame, const FrameOutputs& asked) override {
+    refuseUndrawn(asked, {FrameOutput::Image, FrameOutput::TriangleIds, FrameOutput::FragmentCounts});
+    RenderResult result = asked.has(FrameOutput::Image) ? drawImage(scene, frame) : RenderResult{};
+    if (asked.has(FrameOutput::TriangleIds))
+      result.triangleIds = perPixel(scene, frame, [](const RayTracer& tracer, int x, int y) { return tracer.visibleTriangle(x, y); });
+    if (asked.has(FrameOutput::FragmentCounts))
+      result.fragmentCounts = perPixel(scene, frame, [](const RayTracer& tracer, int x, int y) { return tracer.surfacesCrossed(x, y); });
+    return result;
+  }
+
+ private:
+  RenderResult drawImage(const Scene& scene, const FrameInputs& frame) {
     if (frame.areaAveraged)
       throw Error("settings key 'antialiasing.pattern': area is the CPU rasterizer's exact coverage; the ray tracer samples grid or jittered");
     if (frame.volume.placed)
@@ -105,15 +117,6 @@ class RayRenderer final : public Renderer {
     return result;
   }
 
-  std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) override {
-    return perPixel(scene, frame, [](const RayTracer& tracer, int x, int y) { return tracer.visibleTriangle(x, y); });
-  }
-
-  std::vector<std::uint32_t> fragmentCounts(const Scene& scene, const FrameInputs& frame) override {
-    return perPixel(scene, frame, [](const RayTracer& tracer, int x, int y) { return tracer.surfacesCrossed(x, y); });
-  }
-
- private:
   // The frame checked, and its primitives and BVH: kept when the scene and its instances are those of the last frame.
   const TracedScene& prepare(const Scene& scene, const FrameInputs& frame, bool spheres, RenderResult& result) {
     check_(scene, frame);

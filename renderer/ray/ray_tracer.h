@@ -59,7 +59,7 @@ class RayTracer {
   glm::vec4 pixel(int px, int py, glm::vec2 offset, PathSampler& sampler, RayStatistics& statistics) const;
 
   // The triangle the pixel's primary ray keeps: 0 for none, else 1 + its
-  // index in the frame (Renderer::visibleTriangles); a blended surface keeps none.
+  // index in the frame (FrameOutput::TriangleIds); a blended surface keeps none.
   std::uint32_t visibleTriangle(int px, int py) const;
   // How many surfaces the pixel's primary ray crosses between N and F, the culled ones left out (depth complexity).
   std::uint32_t surfacesCrossed(int px, int py) const;

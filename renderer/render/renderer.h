@@ -1,8 +1,15 @@
 #pragma once
-// The interface both backends implement: a Scene and its FrameInputs in, an
-// Image out. Backends consume FrameInputs; they never compute a matrix.
+// The interface every backend implements: a Scene, its FrameInputs and the
+// outputs asked in; the image and those outputs out. Backends consume
+// FrameInputs; they never compute a matrix.
+#include <array>
+#include <bitset>
+#include <cstddef>
 #include <cstdint>
+#include <initializer_list>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -26,7 +33,7 @@ struct PassTiming {
 inline constexpr char kSceneUploadPass[] = "scene upload";
 inline constexpr char kShaderCompilePass[] = "shader compile + link";
 
-// Pass 1's output of a frame (Renderer::shadowMaps): every shadow map, one
+// Pass 1's output of a frame (RenderResult::shadowMaps): every shadow map, one
 // layer per light face in FrameLight::shadowLayer order (the lights in
 // order; a point light's faces +x, -x, +y, -y, +z, -z).
 struct ShadowMapTexels {
@@ -35,10 +42,55 @@ struct ShadowMapTexels {
   std::vector<float> texels;  // layer after layer, each bottom row first; window z, 1 where nothing was drawn
 };
 
+// What a frame can give (renderer/PIPELINE.md, section 6, "Stages"), in the
+// manner of a renderer's AOVs: the image, and the raw data that render/stage.h
+// pictures. A render call draws only the outputs it is asked for.
+enum class FrameOutput { Image, TriangleIds, FragmentCounts, Depth, ShadowMaps, Normals, Count };
+// The name a backend refuses each by ("the depth stage is not drawn by ..."): its stage's.
+inline constexpr std::array<std::string_view, static_cast<std::size_t>(FrameOutput::Count)> kFrameOutputNames = {
+    "image", "triangle-id", "overdraw", "depth", "shadow-map", "normals"};
+static_assert(!kFrameOutputNames.back().empty(), "a name for every FrameOutput");
+
+// A set of outputs: what a render call asks for (the image alone unless
+// told otherwise), or what a backend draws.
+class FrameOutputs {
+ public:
+  FrameOutputs() : FrameOutputs({FrameOutput::Image}) {}
+  FrameOutputs(std::initializer_list<FrameOutput> outputs);
+  bool has(FrameOutput output) const { return set_.test(static_cast<std::size_t>(output)); }
+
+ private:
+  std::bitset<static_cast<std::size_t>(FrameOutput::Count)> set_;
+};
+
+// One render call's outputs: the image and each of the others when asked,
+// none otherwise. Every per-pixel output is width × height values, bottom
+// row first.
 struct RenderResult {
-  Image image;                      // RGBA8, bottom row first, sRGB-encoded
+  Image image;                      // RGBA8, bottom row first, sRGB-encoded; empty unless asked
   std::vector<PassTiming> timings;  // in the order the passes ran
   std::vector<std::string> notes;   // figures of the frame a backend reports (the scanline z-buffer's depth memory)
+
+  // Which triangle each pixel keeps after the z-buffer, for tests that hold
+  // two backends' coverage together: 0 for the background, else 1 + the
+  // triangle's index in the frame (instances in FrameInputs order, each
+  // mesh's triangles in order; the pieces of a clipped triangle keep its index).
+  std::optional<std::vector<std::uint32_t>> triangleIds;
+  // The depth complexity (renderer/PIPELINE.md, section 6, "Depth
+  // complexity"): how many triangle fragments each pixel received from the
+  // rasterizer, before any depth or alpha test, after clipping and culling.
+  std::optional<std::vector<std::uint32_t>> fragmentCounts;
+  // The lit pass's z-buffer after the frame, at the pixel centres (the
+  // samples of anti-aliasing are not drawn): window z, the value the LESS
+  // test kept (lines and points included), 1 where nothing was drawn.
+  std::optional<std::vector<float>> depth;
+  // The frame's shadow maps as pass 1 draws them (the maps a renderer keeps
+  // across frames, pipeline/shadow_pass_key.h, when they are this frame's).
+  std::optional<ShadowMapTexels> shadowMaps;
+  // The normal each pixel is shaded with (renderer/PIPELINE.md, section 6,
+  // "Stages"), at the pixel centres: (N, 1), world space; (0, 0, 0, 0)
+  // where no opaque triangle was kept.
+  std::optional<std::vector<glm::vec4>> normals;
 };
 
 class Renderer {
@@ -46,40 +98,13 @@ class Renderer {
   virtual ~Renderer() = default;
   // What renders: "cpu (2 threads)", "gl: llvmpipe (LLVM 15.0.6, 256 bits), 4.5 (Core Profile) Mesa 22.3.6 via osmesa".
   virtual std::string description() const = 0;
-  // Throws facet::Error when the frame cannot be rendered.
-  virtual RenderResult render(const Scene& scene, const FrameInputs& frame) = 0;
-
-  // Which triangle each pixel of the frame keeps after the z-buffer, for
-  // tests that hold two backends' coverage together: width × height values,
-  // bottom row first, 0 for the background, else 1 + the triangle's index in
-  // the frame (instances in FrameInputs order, each mesh's triangles in
-  // order; the pieces of a clipped triangle keep its index).
-  virtual std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) = 0;
-
-  // The frame's depth complexity (renderer/PIPELINE.md, section 6, "Depth
-  // complexity"): how many triangle fragments each pixel received from the
-  // rasterizer, before any depth or alpha test, after clipping and culling.
-  // width × height counts, bottom row first.
-  virtual std::vector<std::uint32_t> fragmentCounts(const Scene& scene, const FrameInputs& frame) = 0;
-
-  // The stages of a frame (renderer/PIPELINE.md, section 6, "Stages"; the
-  // viewer's and `render --output-stage`'s pictures of them come from
-  // render/stage.h). A backend that does not draw one throws facet::Error
-  // naming the stage and itself: the ray tracer and the readable reference
-  // keep these defaults.
-  //
-  // The lit pass's z-buffer after the frame, at the pixel centres (the
-  // samples of anti-aliasing are not drawn): width × height window z, bottom
-  // row first, the value the LESS test kept (lines and points included), 1
-  // where nothing was drawn.
-  virtual std::vector<float> depthBuffer(const Scene& /*scene*/, const FrameInputs& /*frame*/) { throw notDrawn("depth"); }
-  // The frame's shadow maps as pass 1 draws them (the maps a renderer keeps
-  // across frames, pipeline/shadow_pass_key.h, when they are this frame's).
-  virtual ShadowMapTexels shadowMaps(const Scene& /*scene*/, const FrameInputs& /*frame*/) { throw notDrawn("shadow-map"); }
-  // The normal each pixel is shaded with (renderer/PIPELINE.md, section 6,
-  // "Stages"), at the pixel centres: width × height (N, 1), world space,
-  // bottom row first; (0, 0, 0, 0) where no opaque triangle was kept.
-  virtual std::vector<glm::vec4> normals(const Scene& /*scene*/, const FrameInputs& /*frame*/) { throw notDrawn("normals"); }
+  // The outputs `asked` names, each from the frame's own passes (the image's
+  // timings and notes when it is asked). A backend that does not draw one
+  // of them throws facet::Error naming its stage and the backend before it
+  // draws anything (the ray tracer and the readable reference draw the
+  // image, triangle ids and fragment counts); facet::Error too when the
+  // frame cannot be rendered.
+  virtual RenderResult render(const Scene& scene, const FrameInputs& frame, const FrameOutputs& asked = {}) = 0;
 
   // Forgets the shadow maps kept from earlier frames (pipeline/shadow_pass_key.h):
   // the next frame draws its maps, as a one-frame `facet render` does. What
@@ -94,7 +119,9 @@ class Renderer {
   void recycle(Image&& image) { spare_ = std::move(image); }
 
  protected:
-  Error notDrawn(const std::string& stage) const { return Error("the " + stage + " stage is not drawn by " + description()); }
+  // Throws the error that names the first output `asked` holds and `drawn`
+  // (what this backend draws) does not: "the depth stage is not drawn by ...".
+  void refuseUndrawn(const FrameOutputs& asked, const FrameOutputs& drawn) const;
   // The recycled image (empty if none): a frame's storage, which the
   // backend sizes (Image::resize) and then writes every pixel of.
   Image recycledImage() { return std::exchange(spare_, Image()); }

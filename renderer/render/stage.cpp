@@ -163,7 +163,7 @@ RenderResult renderStage(Renderer& renderer, const Scene& scene, const FrameInpu
       return result;
     }
     case StageKind::Overdraw: {
-      const std::vector<std::uint32_t> counts = renderer.fragmentCounts(scene, frame);
+      const std::vector<std::uint32_t> counts = *renderer.render(scene, frame, {FrameOutput::FragmentCounts}).fragmentCounts;
       result.timings.push_back({"fragment counts", millisecondsSince(start)});
       const DepthComplexity complexity = depthComplexityOf(counts);
       result.image = depthComplexityImage(counts, frame.width, frame.height);
@@ -175,7 +175,7 @@ RenderResult renderStage(Renderer& renderer, const Scene& scene, const FrameInpu
       return result;
     }
     case StageKind::Depth: {
-      const std::vector<float> depth = renderer.depthBuffer(scene, frame);
+      const std::vector<float> depth = *renderer.render(scene, frame, {FrameOutput::Depth}).depth;
       result.timings.push_back({"lit pass + depth read-back", millisecondsSince(start)});
       result.image = depthImage(depth, frame.width, frame.height);
       const DepthRange range = depthRangeOf(depth.data(), depth.size());
@@ -184,7 +184,7 @@ RenderResult renderStage(Renderer& renderer, const Scene& scene, const FrameInpu
       return result;
     }
     case StageKind::ShadowMap: {
-      const ShadowMapTexels maps = renderer.shadowMaps(scene, frame);
+      const ShadowMapTexels maps = *renderer.render(scene, frame, {FrameOutput::ShadowMaps}).shadowMaps;
       result.timings.push_back({"shadow maps + read-back", millisecondsSince(start)});
       int downsample = 1;
       result.image = shadowMapImage(maps, downsample);
@@ -216,7 +216,7 @@ RenderResult renderStage(Renderer& renderer, const Scene& scene, const FrameInpu
       return result;
     }
     case StageKind::Normals: {
-      const std::vector<glm::vec4> normals = renderer.normals(scene, frame);
+      const std::vector<glm::vec4> normals = *renderer.render(scene, frame, {FrameOutput::Normals}).normals;
       result.timings.push_back({"normals pass + read-back", millisecondsSince(start)});
       result.image = normalsImage(normals, frame.width, frame.height);
       std::size_t drawn = 0;

@@ -4,8 +4,9 @@
 // the normals, and the frame lit by one light. `facet render --output-stage
 // NAME` writes one; a viewer lists what a frame can show (stageNames). The
 // list, the names and the pictures are here, once; the backends give the raw
-// data (Renderer::fragmentCounts, depthBuffer, shadowMaps, normals), and
-// light-N is a frame of its own (pipeline/stage_frames.h) rendered as any.
+// data (Renderer::render's outputs: fragment counts, depth, shadow maps,
+// normals), and light-N is a frame of its own (pipeline/stage_frames.h)
+// rendered as any.
 #include <array>
 #include <cstddef>
 #include <string>
@@ -76,16 +77,16 @@ DepthRange depthRangeOf(const float* depth, std::size_t count);
 // 0 for z = 1 (and for NaN, which the z-buffer never keeps).
 std::uint8_t depthGrey(float z, const DepthRange& range);
 
-// Renderer::depthBuffer as greys (width × height, bottom row first).
+// RenderResult::depth as greys (width × height, bottom row first).
 Image depthImage(const std::vector<float>& depth, int width, int height);
 
-// Renderer::shadowMaps as one strip: the layers side by side in layer order,
+// RenderResult::shadowMaps as one strip: the layers side by side in layer order,
 // each S×S and stretched over its own range, unless layers × S would pass
 // kMaxImageSide: then each layer keeps every `downsample`-th texel in x and
 // y (nearest), the smallest whole factor that fits. downsample: 1 when kept whole.
 Image shadowMapImage(const ShadowMapTexels& maps, int& downsample);
 
-// Renderer::normals as RGB = (N + 1)/2 in 8 bits, floor(255·c + 0.5) of c
+// RenderResult::normals as RGB = (N + 1)/2 in 8 bits, floor(255·c + 0.5) of c
 // clamped to [0, 1] (NaN to 0), alpha 255; black (alpha 255) where w = 0.
 Image normalsImage(const std::vector<glm::vec4>& normals, int width, int height);
 

@@ -99,18 +99,4 @@ EnvironmentMap environmentMapOf(Image strip, const std::string& path) {
 
 EnvironmentMap loadEnvironmentMap(const std::string& path) { return environmentMapOf(readPng(path), path); }
 
-void useEnvironment(Scene& scene, const EnvironmentSettings& settings) {
-  if (settings.map == scene.environment.path) return;
-  if (settings.map.empty()) {
-    scene.environment = EnvironmentMap{};
-  } else {
-    try {
-      scene.environment = loadEnvironmentMap(settings.map);
-    } catch (const Error& e) {
-      throw Error(std::string("environment.map: ") + e.what());
-    }
-  }
-  scene.identity.renew();
-}
-
 }  // namespace facet

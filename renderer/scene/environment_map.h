@@ -1,11 +1,11 @@
 #pragma once
 // The environment (reflection) map of renderer/PIPELINE.md, section 8: a
-// cube map read from one PNG of six square faces side by side, loaded once
-// with the scene, as the settings name it.
+// cube map read from one PNG of six square faces side by side, as the
+// settings name it (pipeline/frame_spine.h reads it once and puts it in the
+// frame's scene).
 #include <string>
 
 #include "scene/scene.h"
-#include "settings/render_settings.h"
 
 namespace facet {
 
@@ -16,10 +16,5 @@ EnvironmentMap environmentMapOf(Image strip, const std::string& path);
 // The cube map in `path`: refused with a line naming the file when it does
 // not decode or is not 6N × N.
 EnvironmentMap loadEnvironmentMap(const std::string& path);
-
-// Makes scene.environment the map `settings.map` names (none for an empty
-// name), loading it only when the name changed; renews the scene's identity
-// when the map changes. Errors name the key: "environment.map: sky.png: ...".
-void useEnvironment(Scene& scene, const EnvironmentSettings& settings);
 
 }  // namespace facet

@@ -70,7 +70,7 @@ Scene loadScene(const std::string& path) {
     scene.emitters.push_back(fountain);
     return scene;
   }
-  if (isVolumeName(path)) {  // a volume on its own, in an empty scene (pipeline/scene_additions.h reads it)
+  if (isVolumeName(path)) {  // a volume on its own, in an empty scene (pipeline/frame_spine.h reads it)
     Scene scene;
     scene.source = path;
     scene.files = {path};

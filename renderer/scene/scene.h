@@ -227,12 +227,11 @@ struct Scene {
   SceneAnimation animation;
   // Particle emitters glTF nodes place (extras.facet_particles), drawn with the settings' own.
   std::vector<Emitter> emitters;
-  // The settings' volume once read (pipeline/scene_additions.h): its samples,
+  // The settings' volume once read (pipeline/frame_spine.h): its samples,
   // where it sits and its transfer function; ray casting draws it from here.
   struct PlacedVolume {
     std::string file;                    // the scene's own: a volume named as the scene (load_scene.h); volume.file replaces it
     std::shared_ptr<const Volume> data;  // null: none
-    std::string key;                     // the file and resolution it was read with
     glm::mat4 worldFromVolume{1.0f};     // the volume's model space (samples at (i, j, k)·spacing) to world
     TransferFunction transfer;
   } volume;

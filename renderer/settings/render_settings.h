@@ -143,6 +143,8 @@ struct VolumeSettings {
   float splatRadius = 1.5f;           // splat: the footprint's radius, in voxel spacings (a Gaussian of σ = radius / 3)
   std::optional<float> isoValue;      // isosurface: the value in the data's units; null: the mean of the data
   glm::vec3 isoColor{0.9f, 0.85f, 0.75f};  // isosurface: the mesh's base colour, linear RGB
+
+  friend bool operator==(const VolumeSettings&, const VolumeSettings&) = default;
 };
 
 struct RenderSettings {

@@ -2,12 +2,12 @@
 // case: a scene, the settings that differ from the defaults, and what the
 // case is for) is rendered by the OpenGL backend (headless, llvmpipe) and by
 // the CPU reference. The two must keep the same triangle at every pixel
-// (Renderer::visibleTriangles) and write the same bytes
+// (FrameOutput::TriangleIds) and write the same bytes
 // (renderer/compare/backend_agreement.h), and both must equal the committed
 // CPU golden. Every z-buffer case is also drawn by the CPU's scanline
 // z-buffer (hsr = scanline), which must keep the same triangle and write the
 // same bytes as the CPU's z-buffer, and the two backends' depth complexity
-// (Renderer::fragmentCounts) must be equal at every pixel. A case may allow a measured difference only by naming it:
+// (FrameOutput::FragmentCounts) must be equal at every pixel. A case may allow a measured difference only by naming it:
 //   "allow": {"maxDifference": LEVELS, "maxPixels": N, "reason": "why"}
 // A case may name a stage of the frame (render/stage.h) instead of the image:
 //   "stage": "depth" | "shadow-map" | "normals" | "light-N" | "overdraw"
@@ -27,7 +27,9 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -45,11 +47,8 @@
 #include "gl/gl_renderer.h"
 #include "image/png.h"
 #include "pipeline/frame_inputs.h"
-#include "pipeline/bump_map.h"
-#include "pipeline/displacement.h"
-#include "scene/environment_map.h"
+#include "pipeline/frame_spine.h"
 #include "scene/load_scene.h"
-#include "pipeline/scene_additions.h"
 #include "render/stage.h"
 #include "settings/settings_json.h"
 
@@ -133,22 +132,21 @@ Case readCase(const fs::path& file) {
   return c;
 }
 
-// The case's scene, displaced and with the environment map as its settings
-// say (an "assets:" file name there is read from the assets folder, as scenes are).
-Scene sceneOf(Case& c, const std::string& assets) {
+// The case's frame from the spine (pipeline/frame_spine.h): its scene with the
+// maps, volume and particles its settings add (an "assets:" file name there
+// is read from the assets folder, as scenes are), and the settings it is
+// built with (the camera the sprites face resolved).
+PreparedFrame frameOf(Case& c, const std::string& assets) {
   const std::string assimp = "assimp:", local = "assets:";
   const auto resolve = [&](const std::string& name) { return name.rfind(local, 0) == 0 ? assets + "/" + name.substr(local.size()) : name; };
-  Scene scene = c.scene.rfind(assimp, 0) == 0 ? loadScene(std::string(FACET_ASSIMP_MODELS) + "/" + c.scene.substr(assimp.size()))
-                                               : loadScene(resolve(c.scene));
+  const std::string path =
+      c.scene.rfind(assimp, 0) == 0 ? std::string(FACET_ASSIMP_MODELS) + "/" + c.scene.substr(assimp.size()) : resolve(c.scene);
   c.settings.environment.map = resolve(c.settings.environment.map);
   c.settings.material.displacementMap = resolve(c.settings.material.displacementMap);
   c.settings.material.bumpMap = resolve(c.settings.material.bumpMap);
-  useDisplacement(scene, c.settings.material);
-  useBumpMap(scene, c.settings.material);
-  useEnvironment(scene, c.settings.environment);
-  SceneAdditions added;  // a volume's iso-surface or splats, particles (resolving the camera the sprites face)
-  c.settings = addVolumeAndParticles(scene, c.settings, added);
-  return scene;
+  PreparedFrame prepared = FrameSpine(std::make_shared<const Scene>(loadScene(path))).frame(c.settings);
+  c.settings = prepared.settings;
+  return prepared;
 }
 
 // The bar of a case: every byte equal, or the case's allowance.
@@ -186,15 +184,28 @@ long bitMismatches(const std::vector<T>& a, const std::vector<T>& b) {
 
 // The stage's data from both backends, bit for bit: window z, shadow-map texels, normals. 0 for the other stages.
 long stageDataMismatches(Stage stage, Renderer& gl, Renderer& cpu, const Scene& scene, const FrameInputs& frame) {
+  const auto both = [&](FrameOutput output) { return std::pair(gl.render(scene, frame, {output}), cpu.render(scene, frame, {output})); };
   switch (stage.kind) {
-    case StageKind::Depth: return bitMismatches(gl.depthBuffer(scene, frame), cpu.depthBuffer(scene, frame));
-    case StageKind::Normals: return bitMismatches(gl.normals(scene, frame), cpu.normals(scene, frame));
+    case StageKind::Depth: {
+      const auto [a, b] = both(FrameOutput::Depth);
+      return bitMismatches(*a.depth, *b.depth);
+    }
+    case StageKind::Normals: {
+      const auto [a, b] = both(FrameOutput::Normals);
+      return bitMismatches(*a.normals, *b.normals);
+    }
     case StageKind::ShadowMap: {
-      const ShadowMapTexels a = gl.shadowMaps(scene, frame), b = cpu.shadowMaps(scene, frame);
+      const auto [drawnA, drawnB] = both(FrameOutput::ShadowMaps);
+      const ShadowMapTexels &a = *drawnA.shadowMaps, &b = *drawnB.shadowMaps;
       return a.size != b.size || a.layers != b.layers ? static_cast<long>(std::max(a.texels.size(), b.texels.size()) + 1) : bitMismatches(a.texels, b.texels);
     }
     default: return 0;
   }
+}
+
+// Which triangle each pixel keeps, as `renderer` draws the frame.
+std::vector<std::uint32_t> trianglesOf(Renderer& renderer, const Scene& scene, const FrameInputs& frame) {
+  return *renderer.render(scene, frame, {FrameOutput::TriangleIds}).triangleIds;
 }
 
 }  // namespace
@@ -235,8 +246,9 @@ int main(int argc, char** argv) {
     std::vector<ReportCase> report;
     ReportFolder reportFolder((fs::path(outDir) / "report").string());
     for (Case& c : cases) {
-      const Scene scene = sceneOf(c, assetsDir);
-      const FrameInputs frame = buildFrameInputs(scene, c.settings);
+      const PreparedFrame prepared = frameOf(c, assetsDir);
+      const Scene& scene = *prepared.scene;
+      const FrameInputs& frame = prepared.inputs;
       const DiffThresholds thresholds = thresholdsOf(c);
       const auto glStart = std::chrono::steady_clock::now();
       const Image glImage = renderStage(*gl, scene, frame, c.stage).image;
@@ -245,7 +257,7 @@ int main(int argc, char** argv) {
       const Image cpuImage = renderStage(*cpu, scene, frame, c.stage).image;
       const double msCpu = millisecondsSince(cpuStart);
       long covered = 0;
-      const long mismatches = triangleMismatches(gl->visibleTriangles(scene, frame), cpu->visibleTriangles(scene, frame), covered);
+      const long mismatches = triangleMismatches(trianglesOf(*gl, scene, frame), trianglesOf(*cpu, scene, frame), covered);
       const long dataMismatches = stageDataMismatches(c.stage, *gl, *cpu, scene, frame);
       if (covered == 0) {  // lines, points and blended surfaces keep no triangle: what they drew is what differs from the frame without them
         FrameInputs empty = frame;
@@ -288,7 +300,7 @@ int main(int argc, char** argv) {
         const FrameInputs rowFrame = buildFrameInputs(scene, rows);
         const Image rowImage = renderStage(*cpu, scene, rowFrame, c.stage).image;
         long unused = 0;
-        long differing = triangleMismatches(cpu->visibleTriangles(scene, rowFrame), cpu->visibleTriangles(scene, frame), unused);
+        long differing = triangleMismatches(trianglesOf(*cpu, scene, rowFrame), trianglesOf(*cpu, scene, frame), unused);
         if (rowImage.width() != cpuImage.width() || rowImage.height() != cpuImage.height()) differing += 1;
         else
           for (int y = 0; y < cpuImage.height(); ++y)
@@ -302,7 +314,8 @@ int main(int argc, char** argv) {
       // The depth complexity: the same fragment count at every pixel.
       long countMismatches = 0;
       {
-        const auto glCounts = gl->fragmentCounts(scene, frame), cpuCounts = cpu->fragmentCounts(scene, frame);
+        const auto glCounts = *gl->render(scene, frame, {FrameOutput::FragmentCounts}).fragmentCounts;
+        const auto cpuCounts = *cpu->render(scene, frame, {FrameOutput::FragmentCounts}).fragmentCounts;
         for (std::size_t i = 0; i < glCounts.size(); ++i) countMismatches += glCounts[i] != cpuCounts[i];
         countsEqual += countMismatches == 0 ? 1 : 0;
       }

@@ -40,8 +40,8 @@ Renders renderBoth(const Scene& scene, const RenderSettings& settings) {
   r.gl = glRenderer().render(scene, frame).image;
   const auto cpu = makeCpuRenderer(2);
   r.cpu = cpu->render(scene, frame).image;
-  r.glTriangles = glRenderer().visibleTriangles(scene, frame);
-  r.cpuTriangles = cpu->visibleTriangles(scene, frame);
+  r.glTriangles = *glRenderer().render(scene, frame, {FrameOutput::TriangleIds}).triangleIds;
+  r.cpuTriangles = *cpu->render(scene, frame, {FrameOutput::TriangleIds}).triangleIds;
   r.background = encodePixel(frame.background);
   return r;
 }

@@ -73,9 +73,9 @@ TEST_CASE("depth: a surface in front of the ground has a smaller window z than t
   for (const auto& [name, renderer] : kBackends) {
     const std::string backend = name;
     CAPTURE(backend);
-    const std::vector<float> full = renderer().depthBuffer(scene, frame);
-    const std::vector<float> ground = renderer().depthBuffer(scene, groundOnly(frame));
-    const std::vector<std::uint32_t> kept = renderer().visibleTriangles(scene, frame);
+    const std::vector<float> full = *renderer().render(scene, frame, {FrameOutput::Depth}).depth;
+    const std::vector<float> ground = *renderer().render(scene, groundOnly(frame), {FrameOutput::Depth}).depth;
+    const std::vector<std::uint32_t> kept = *renderer().render(scene, frame, {FrameOutput::TriangleIds}).triangleIds;
     REQUIRE(full.size() == kept.size());
     long inFront = 0, misordered = 0, drawnMismatch = 0;
     for (std::size_t i = 0; i < full.size(); ++i) {
@@ -99,7 +99,7 @@ TEST_CASE("depth: window z grows with the eye depth of what a pixel shows") {
   for (const auto& [name, renderer] : kBackends) {
     const std::string backend = name;
     CAPTURE(backend);
-    const std::vector<float> depth = renderer().depthBuffer(scene, frame);
+    const std::vector<float> depth = *renderer().render(scene, frame, {FrameOutput::Depth}).depth;
     // The ground's pixels in the middle column: up the image is farther from the eye (the camera looks down on it).
     float last = 0.0f;
     int rows = 0;
@@ -142,12 +142,12 @@ TEST_CASE("shadow-map: the default scene's point light holds the objects' silhou
   for (const auto& [name, renderer] : kBackends) {
     const std::string backend = name;
     CAPTURE(backend);
-    const ShadowMapTexels maps = renderer().shadowMaps(scene, frame);
+    const ShadowMapTexels maps = *renderer().render(scene, frame, {FrameOutput::ShadowMaps}).shadowMaps;
     REQUIRE(maps.size == 256);
     REQUIRE(maps.layers == 6);
     REQUIRE(maps.texels.size() == 6 * perLayer);
-    const ShadowMapTexels ground = renderer().shadowMaps(scene, groundCasts);
-    const ShadowMapTexels none = renderer().shadowMaps(scene, noneCasts);
+    const ShadowMapTexels ground = *renderer().render(scene, groundCasts, {FrameOutput::ShadowMaps}).shadowMaps;
+    const ShadowMapTexels none = *renderer().render(scene, noneCasts, {FrameOutput::ShadowMaps}).shadowMaps;
     long nearer = 0, farther = 0, drawn = 0;
     std::array<long, 6> silhouette{};
     for (std::size_t i = 0; i < maps.texels.size(); ++i) {
@@ -177,13 +177,13 @@ TEST_CASE("shadow-map: reading the maps keeps them, and the next frame of the sa
     const std::string backend = name;
     CAPTURE(backend);
     const std::unique_ptr<Renderer> renderer = make();
-    const ShadowMapTexels first = renderer->shadowMaps(scene, frame);
+    const ShadowMapTexels first = *renderer->render(scene, frame, {FrameOutput::ShadowMaps}).shadowMaps;
     const RenderResult result = renderer->render(scene, frame);
     bool kept = false;
     for (const PassTiming& t : result.timings) kept = kept || t.pass == shadowPassName(frame, true);
     CHECK(kept);
     CHECK(result.image == make()->render(scene, frame).image);  // the kept maps are the frame's
-    CHECK(renderer->shadowMaps(scene, frame).texels == first.texels);
+    CHECK(renderer->render(scene, frame, {FrameOutput::ShadowMaps}).shadowMaps->texels == first.texels);
   }
 }
 
@@ -201,7 +201,7 @@ TEST_CASE("normals: the centre pixel of a sphere faces the eye") {
       const std::string backend = name;
     CAPTURE(backend);
       CAPTURE(static_cast<int>(mode));
-      const std::vector<glm::vec4> normals = renderer().normals(scene, frame);
+      const std::vector<glm::vec4> normals = *renderer().render(scene, frame, {FrameOutput::Normals}).normals;
       const glm::vec4 N = normals[pixelIndex(frame, frame.width / 2, frame.height / 2)];
       CHECK(N.w == 1.0f);
       CHECK(std::abs(glm::length(glm::vec3(N)) - 1.0f) < 1e-5f);
@@ -240,7 +240,7 @@ TEST_CASE("normals: a back face drawn shows -N") {
       const std::string backend = name;
       CAPTURE(backend);
       CAPTURE(static_cast<int>(mode));
-      const glm::vec4 N = renderer().normals(scene, frame)[pixelIndex(frame, frame.width / 2, frame.height / 2)];
+      const glm::vec4 N = (*renderer().render(scene, frame, {FrameOutput::Normals}).normals)[pixelIndex(frame, frame.width / 2, frame.height / 2)];
       CHECK(N.w == 1.0f);
       CHECK(N.x < -0.99f);  // the outward normal there is +x
     }
@@ -270,7 +270,7 @@ TEST_CASE("light-0 of a one-light frame and the frame without lights add up to t
       const Image full = renderer().render(scene, frame).image;
       const Image alone = renderStage(renderer(), scene, frame, parseStage("light-0")).image;
       const Image ambient = renderer().render(scene, unlit).image;
-      const std::vector<std::uint32_t> kept = renderer().visibleTriangles(scene, frame);
+      const std::vector<std::uint32_t> kept = *renderer().render(scene, frame, {FrameOutput::TriangleIds}).triangleIds;
       int worst = 0;
       long covered = 0, darker = 0, brighter = 0;
       for (int y = 0; y < frame.height; ++y)
@@ -315,7 +315,8 @@ TEST_CASE("light-N: one light of two, its shadow maps first, the frame's other k
   for (const CourseMaterial& m : alone.materials) CHECK(m.emissive == glm::vec3(0.0f));
   CHECK(alone.instances.size() == frame.instances.size());
   // Its maps are those the two-light frame draws for that light: layers 1-6 there.
-  const ShadowMapTexels both = cpuRenderer().shadowMaps(scene, frame), one = cpuRenderer().shadowMaps(scene, alone);
+  const ShadowMapTexels both = *cpuRenderer().render(scene, frame, {FrameOutput::ShadowMaps}).shadowMaps;
+  const ShadowMapTexels one = *cpuRenderer().render(scene, alone, {FrameOutput::ShadowMaps}).shadowMaps;
   const std::size_t perLayer = static_cast<std::size_t>(both.size) * static_cast<std::size_t>(both.size);
   REQUIRE(both.layers == 7);
   CHECK(std::vector<float>(both.texels.begin() + static_cast<std::ptrdiff_t>(perLayer), both.texels.end()) == one.texels);
@@ -352,9 +353,9 @@ TEST_CASE("the ray tracer and the readable reference refuse what they do not dra
   const Scene scene = loadScene("builtin:cube");
   const FrameInputs frame = buildFrameInputs(scene, sized(16, 12));
   const std::unique_ptr<Renderer> ray = makeRayRenderer(1), reference = makeReferenceRenderer();
-  CHECK_THROWS_WITH_AS(ray->depthBuffer(scene, frame), ("the depth stage is not drawn by " + ray->description()).c_str(), Error);
-  CHECK_THROWS_WITH_AS(ray->shadowMaps(scene, frame), ("the shadow-map stage is not drawn by " + ray->description()).c_str(), Error);
-  CHECK_THROWS_WITH_AS(reference->normals(scene, frame), ("the normals stage is not drawn by " + reference->description()).c_str(), Error);
+  CHECK_THROWS_WITH_AS(ray->render(scene, frame, {FrameOutput::Depth}), ("the depth stage is not drawn by " + ray->description()).c_str(), Error);
+  CHECK_THROWS_WITH_AS(ray->render(scene, frame, {FrameOutput::ShadowMaps}), ("the shadow-map stage is not drawn by " + ray->description()).c_str(), Error);
+  CHECK_THROWS_WITH_AS(reference->render(scene, frame, {FrameOutput::Normals}), ("the normals stage is not drawn by " + reference->description()).c_str(), Error);
   CHECK_THROWS_WITH_AS(renderStage(*ray, scene, frame, parseStage("depth")), doctest::Contains("the depth stage is not drawn by ray tracer"), Error);
   CHECK(renderStage(*ray, scene, frame, parseStage("light-0")).image.width() == 16);  // light-N is a frame: every backend draws it
 }

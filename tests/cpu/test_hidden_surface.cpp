@@ -38,7 +38,7 @@ Scene sceneOf(Mesh mesh) {
 
 std::vector<std::uint32_t> idsOf(const Scene& scene, RenderSettings s, HiddenSurface hsr, int threads = 2) {
   s.hsr = hsr;
-  return makeCpuRenderer(threads)->visibleTriangles(scene, buildFrameInputs(scene, s));
+  return *makeCpuRenderer(threads)->render(scene, buildFrameInputs(scene, s), {FrameOutput::TriangleIds}).triangleIds;
 }
 
 // A triangle soup in the top-down view's box: random triangles at random

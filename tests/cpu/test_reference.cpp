@@ -3,14 +3,15 @@
 // visibility first, four-lane Phong): the same image and the same triangle at
 // every pixel, in every shading mode, with and without shadows and culling,
 // textured, clipped by the near plane, at a size no tile divides.
+#include <memory>
 #include <string>
 
 #include <doctest/doctest.h>
 
 #include "cpu/cpu_renderer.h"
 #include "cpu/reference/reference_renderer.h"
-#include "pipeline/bump_map.h"
 #include "pipeline/frame_inputs.h"
+#include "pipeline/frame_spine.h"
 #include "scene/default_scene.h"
 #include "scene/load_scene.h"
 
@@ -39,7 +40,8 @@ void compare(const Scene& scene, const RenderSettings& s, const std::string& wha
   long pixels = 0, drawn = 0;
   for (int y = 0; y < a.height(); ++y)
     for (int x = 0; x < a.width(); ++x) pixels += a.at(x, y) == b.at(x, y) ? 0 : 1;
-  const auto ids = fast->visibleTriangles(scene, frame), referenceIds = reference->visibleTriangles(scene, frame);
+  const auto ids = *fast->render(scene, frame, {FrameOutput::TriangleIds}).triangleIds;
+  const auto referenceIds = *reference->render(scene, frame, {FrameOutput::TriangleIds}).triangleIds;
   long triangles = 0;
   for (std::size_t i = 0; i < ids.size(); ++i) {
     triangles += ids[i] != referenceIds[i];
@@ -93,11 +95,10 @@ TEST_CASE("the fast CPU renderer equals the one-triangle reference: pbr, normal,
     for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong, ShadingMode::Pbr})
       compare(scene, settings(mode, true, true), std::string(name) + " " + std::string(kShadingModeNames[static_cast<std::size_t>(mode)]));
   }
-  Scene bump = loadScene(std::string(FACET_ASSETS) + "/bump.gltf");
   RenderSettings bumped = settings(ShadingMode::Phong, true, true);
   bumped.material.bumpMap = std::string(FACET_ASSETS) + "/displacement/height.png";
-  useBumpMap(bump, bumped.material);
-  compare(bump, bumped, "bump.gltf");
+  const FrameScene bump = FrameSpine(std::make_shared<const Scene>(loadScene(std::string(FACET_ASSETS) + "/bump.gltf"))).scene(bumped);
+  compare(*bump.scene, bumped, "bump.gltf");
   const Scene scene = makeDefaultScene();
   RenderSettings procedural = settings(ShadingMode::Phong, true, true);
   procedural.material.procedural = Procedural::Checker;

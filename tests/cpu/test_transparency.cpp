@@ -157,8 +157,8 @@ TEST_CASE("transparency: blended triangles keep no pixel in the triangle-id pass
   addSquare(scene, 0.0f, 0.0f, 0.0f, 2.0f, {0.2f, 0.2f, 0.2f}, 1.0f, AlphaMode::Opaque);
   addSquare(scene, 1.0f, 0.0f, 0.0f, 1.0f, {1, 0, 0}, 0.5f, AlphaMode::Blend);
   const FrameInputs frame = buildFrameInputs(scene, unlit());
-  const std::vector<std::uint32_t> ids = makeCpuRenderer(2)->visibleTriangles(scene, frame);
-  const std::vector<std::uint32_t> counts = makeCpuRenderer(2)->fragmentCounts(scene, frame);
+  const std::vector<std::uint32_t> ids = *makeCpuRenderer(2)->render(scene, frame, {FrameOutput::TriangleIds}).triangleIds;
+  const std::vector<std::uint32_t> counts = *makeCpuRenderer(2)->render(scene, frame, {FrameOutput::FragmentCounts}).fragmentCounts;
   const std::size_t middle = static_cast<std::size_t>(kSize / 2) * kSize + kSize / 2;
   CHECK((ids[middle] == 1 || ids[middle] == 2));  // the ground's triangles, 1-based
   CHECK(counts[middle] == 2);

@@ -5,7 +5,9 @@
 // triangles, lines and points), every blending equation's storage of the
 // background, and the z-buffer read back after it.
 #include <cstdint>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <doctest/doctest.h>
@@ -13,8 +15,8 @@
 #include "gl/frame_renderer.h"
 #include "gl_test_support.h"
 #include "pipeline/frame_inputs.h"
+#include "pipeline/frame_spine.h"
 #include "scene/default_scene.h"
-#include "scene/environment_map.h"
 #include "scene/load_scene.h"
 
 using namespace facet;
@@ -82,12 +84,13 @@ TEST_CASE("a frame nothing blends or averages, encoded as drawn, has the bytes a
   };
   for (const Variation& variation : variations) {
     CAPTURE(std::string(variation.name));
-    Scene scene = makeDefaultScene();
-    addLinesAndPoints(scene);
+    Scene loaded = makeDefaultScene();
+    addLinesAndPoints(loaded);
     RenderSettings settings = test::smallSettings();
     variation.apply(settings);
-    useEnvironment(scene, settings.environment);
-    const FrameInputs frame = buildFrameInputs(scene, settings);
+    const PreparedFrame prepared = FrameSpine(std::make_shared<const Scene>(std::move(loaded))).frame(settings);
+    const Scene& scene = *prepared.scene;
+    const FrameInputs& frame = prepared.inputs;
     frames.uploadScene(scene);
 
     const std::vector<PassTiming> plainPasses = frames.drawFrame(scene, frame, Encoding::ByResolve);

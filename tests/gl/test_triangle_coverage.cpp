@@ -21,8 +21,8 @@ TEST_CASE("one triangle's coverage: both backends cover the same pixel centres, 
   settings.shadows.enabled = false;
   const FrameInputs frame = buildFrameInputs(scene, settings);
   const std::unique_ptr<Renderer> gl = makeGlRenderer(GlContextKind::OsMesa), cpu = makeCpuRenderer(2);
-  const std::vector<std::uint32_t> kept = cpu->visibleTriangles(scene, frame);
-  CHECK(gl->visibleTriangles(scene, frame) == kept);
+  const std::vector<std::uint32_t> kept = *cpu->render(scene, frame, {FrameOutput::TriangleIds}).triangleIds;
+  CHECK(*gl->render(scene, frame, {FrameOutput::TriangleIds}).triangleIds == kept);
   // Triangles the frame shows, each with some pixels: the ground's (large, partly hidden) and small ones of the objects.
   std::vector<std::uint32_t> chosen;
   for (std::size_t pixel = 0; pixel < kept.size() && chosen.size() < 12; pixel += 977)
@@ -32,8 +32,8 @@ TEST_CASE("one triangle's coverage: both backends cover the same pixel centres, 
   for (const std::uint32_t triangle : chosen) {
     CAPTURE(triangle);
     const SingleTriangle single = singleTriangle(scene, frame, triangle);
-    const std::vector<std::uint32_t> counts = cpu->fragmentCounts(single.scene, single.frame);
-    CHECK(gl->fragmentCounts(single.scene, single.frame) == counts);
+    const std::vector<std::uint32_t> counts = *cpu->render(single.scene, single.frame, {FrameOutput::FragmentCounts}).fragmentCounts;
+    CHECK(*gl->render(single.scene, single.frame, {FrameOutput::FragmentCounts}).fragmentCounts == counts);
     int covered = 0, keptHere = 0, keptOutside = 0;
     for (std::size_t pixel = 0; pixel < counts.size(); ++pixel) {
       CHECK(counts[pixel] <= 1);  // one triangle: one fragment at most
@@ -51,12 +51,12 @@ TEST_CASE("one triangle's coverage: both backends cover the same pixel centres, 
   shown.erase(std::unique(shown.begin(), shown.end()), shown.end());
   for (std::size_t i = 1; i < shown.size() && hiddenSomewhere == 0; ++i) {
     const SingleTriangle single = singleTriangle(scene, frame, shown[i]);
-    const std::vector<std::uint32_t> counts = cpu->fragmentCounts(single.scene, single.frame);
+    const std::vector<std::uint32_t> counts = *cpu->render(single.scene, single.frame, {FrameOutput::FragmentCounts}).fragmentCounts;
     int covered = 0, keptHere = 0;
     for (std::size_t pixel = 0; pixel < counts.size(); ++pixel) covered += counts[pixel] != 0, keptHere += counts[pixel] != 0 && kept[pixel] == shown[i];
     if (covered > keptHere) {
       ++hiddenSomewhere;
-      CHECK(gl->fragmentCounts(single.scene, single.frame) == counts);
+      CHECK(*gl->render(single.scene, single.frame, {FrameOutput::FragmentCounts}).fragmentCounts == counts);
     }
   }
   CHECK(hiddenSomewhere > 0);

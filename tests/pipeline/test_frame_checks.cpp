@@ -78,7 +78,7 @@ TEST_CASE("a frame that does not fit its scene is refused before a backend draws
   CHECK_THROWS_WITH_AS(makeCpuRenderer(1)->render(scene, bad), "frame instance 0: mesh 3 is not in the scene", Error);
   bad = frame;
   bad.instances[0].material = 9;
-  CHECK_THROWS_WITH_AS(makeCpuRenderer(1)->visibleTriangles(scene, bad), "frame instance 0: material 9 is not in the frame", Error);
+  CHECK_THROWS_WITH_AS(makeCpuRenderer(1)->render(scene, bad, {FrameOutput::TriangleIds}), "frame instance 0: material 9 is not in the frame", Error);
   bad = frame;
   bad.width = 0;
   CHECK_THROWS_WITH_AS(checkFrame(scene, bad), "image size 0x24: each side must be in [1, 16384]", Error);

@@ -62,7 +62,8 @@ Agreement agreementOf(const Scene& scene, const RenderSettings& s, int bound) {
   const FrameInputs frame = buildFrameInputs(scene, s);
   const auto raster = makeCpuRenderer(2);
   const auto traced = makeRayRenderer(2);
-  const std::vector<std::uint32_t> a = raster->visibleTriangles(scene, frame), b = traced->visibleTriangles(scene, frame);
+  const std::vector<std::uint32_t> a = *raster->render(scene, frame, {FrameOutput::TriangleIds}).triangleIds;
+  const std::vector<std::uint32_t> b = *traced->render(scene, frame, {FrameOutput::TriangleIds}).triangleIds;
   const Image imageA = raster->render(scene, frame).image, imageB = traced->render(scene, frame).image;
   Agreement g;
   for (int y = 0; y < frame.height; ++y)

@@ -24,7 +24,17 @@ class ReferenceRenderer final : public Renderer {
  public:
   std::string description() const override { return "cpu reference, one triangle at a time (renderer/cpu/reference)"; }
 
-  RenderResult render(const Scene& scene, const FrameInputs& frame) override {
+  // The image, triangle ids and fragment counts; the other stages are the fast renderer's.
+  RenderResult render(const Scene& scene, const FrameInputs& frame, const FrameOutputs& asked) override {
+    refuseUndrawn(asked, {FrameOutput::Image, FrameOutput::TriangleIds, FrameOutput::FragmentCounts});
+    RenderResult result = asked.has(FrameOutput::Image) ? drawImage(scene, frame) : RenderResult{};
+    if (asked.has(FrameOutput::TriangleIds)) result.triangleIds = visibleTriangles(scene, frame);
+    if (asked.has(FrameOutput::FragmentCounts)) result.fragmentCounts = fragmentCounts(scene, frame);
+    return result;
+  }
+
+ private:
+  RenderResult drawImage(const Scene& scene, const FrameInputs& frame) {
     check_(scene, frame);
     if (frame.volume.placed)
       throw Error("settings key 'volume.mode': raycast is drawn by the CPU backend (--backend cpu); the readable reference draws splat and isosurface");
@@ -50,7 +60,7 @@ class ReferenceRenderer final : public Renderer {
     return result;
   }
 
-  std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) override {
+  std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) {
     check_(scene, frame);
     refuseHiddenSurface(frame);
     std::vector<std::uint32_t> ids(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 0u);
@@ -60,7 +70,7 @@ class ReferenceRenderer final : public Renderer {
     return ids;
   }
 
-  std::vector<std::uint32_t> fragmentCounts(const Scene& scene, const FrameInputs& frame) override {
+  std::vector<std::uint32_t> fragmentCounts(const Scene& scene, const FrameInputs& frame) {
     check_(scene, frame);
     std::vector<std::uint32_t> counts(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 0u);
     Target target = targetOf(frame);
@@ -69,7 +79,6 @@ class ReferenceRenderer final : public Renderer {
     return counts;
   }
 
- private:
   FrameCheck check_;
 
   static Target targetOf(const FrameInputs& frame) {
