@@ -27,58 +27,44 @@ class ReferenceRenderer final : public Renderer {
   // The image, triangle ids and fragment counts; the other stages are the fast renderer's.
   RenderResult render(const Scene& scene, const FrameInputs& frame, const FrameOutputs& asked) override {
     refuseUndrawn(asked, {FrameOutput::Image, FrameOutput::TriangleIds, FrameOutput::FragmentCounts});
-    RenderResult result = asked.has(FrameOutput::Image) ? drawImage(scene, frame) : RenderResult{};
-    if (asked.has(FrameOutput::TriangleIds)) result.triangleIds = visibleTriangles(scene, frame);
-    if (asked.has(FrameOutput::FragmentCounts)) result.fragmentCounts = fragmentCounts(scene, frame);
+    check_(scene, frame);
+    if (asked.has(FrameOutput::Image) || asked.has(FrameOutput::TriangleIds)) refuseHiddenSurface(frame);
+    if (asked.has(FrameOutput::Image) && frame.volume.placed)
+      throw Error("settings key 'volume.mode': raycast is drawn by the CPU backend (--backend cpu); the readable reference draws splat and isosurface");
+    if (asked.has(FrameOutput::Image) && frame.areaAveraged)
+      throw Error("settings key 'antialiasing.pattern': area-weighted averaging is the CPU backend's (--backend cpu); the reference samples pixel centres");
+    const auto start = std::chrono::steady_clock::now();
+    const ShadowMaps maps = shadowPass(scene, frame);  // Gouraud lights its vertices with them, whatever is asked
+    RenderResult result;
+    if (asked.has(FrameOutput::Image)) {
+      ColorBuffer color(frame.width, frame.height, glm::vec4(0.0f));
+      for (int y = 0; y < frame.height; ++y)
+        for (int x = 0; x < frame.width; ++x) color.at(x, y) = backgroundPixel(frame, x, y);
+      Target target = targetOf(frame);
+      target.color = &color;
+      litPass(scene, frame, maps, target, Drawn::Opaque);
+      linePass(scene, frame, target);
+      litPass(scene, frame, maps, target, Drawn::Blended);
+      // The resolve, one pixel at a time.
+      result.image = Image(frame.width, frame.height);
+      for (int y = 0; y < frame.height; ++y)
+        for (int x = 0; x < frame.width; ++x) result.image.at(x, y) = encodePixel(unstored(color.at(x, y), frame.blending));
+      result.timings.push_back({"both passes", millisecondsSince(start)});
+    }
+    if (asked.has(FrameOutput::TriangleIds)) {
+      Target target = targetOf(frame);
+      target.ids = &result.triangleIds.emplace(target.depth.size(), 0u);
+      litPass(scene, frame, maps, target, Drawn::Opaque);  // blended triangles keep no pixel
+    }
+    if (asked.has(FrameOutput::FragmentCounts)) {
+      Target target = targetOf(frame);
+      target.counts = &result.fragmentCounts.emplace(target.depth.size(), 0u);
+      litPass(scene, frame, maps, target, Drawn::All);
+    }
     return result;
   }
 
  private:
-  RenderResult drawImage(const Scene& scene, const FrameInputs& frame) {
-    check_(scene, frame);
-    if (frame.volume.placed)
-      throw Error("settings key 'volume.mode': raycast is drawn by the CPU backend (--backend cpu); the readable reference draws splat and isosurface");
-    if (frame.areaAveraged)
-      throw Error("settings key 'antialiasing.pattern': area-weighted averaging is the CPU backend's (--backend cpu); the reference samples pixel centres");
-    refuseHiddenSurface(frame);
-    const auto start = std::chrono::steady_clock::now();
-    const ShadowMaps maps = shadowPass(scene, frame);
-    ColorBuffer color(frame.width, frame.height, glm::vec4(0.0f));
-    for (int y = 0; y < frame.height; ++y)
-      for (int x = 0; x < frame.width; ++x) color.at(x, y) = backgroundPixel(frame, x, y);
-    Target target = targetOf(frame);
-    target.color = &color;
-    litPass(scene, frame, maps, target, Drawn::Opaque);
-    linePass(scene, frame, target);
-    litPass(scene, frame, maps, target, Drawn::Blended);
-    // The resolve, one pixel at a time.
-    RenderResult result;
-    result.image = Image(frame.width, frame.height);
-    for (int y = 0; y < frame.height; ++y)
-      for (int x = 0; x < frame.width; ++x) result.image.at(x, y) = encodePixel(unstored(color.at(x, y), frame.blending));
-    result.timings.push_back({"both passes", millisecondsSince(start)});
-    return result;
-  }
-
-  std::vector<std::uint32_t> visibleTriangles(const Scene& scene, const FrameInputs& frame) {
-    check_(scene, frame);
-    refuseHiddenSurface(frame);
-    std::vector<std::uint32_t> ids(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 0u);
-    Target target = targetOf(frame);
-    target.ids = &ids;
-    litPass(scene, frame, shadowPass(scene, frame), target, Drawn::Opaque);  // blended triangles keep no pixel
-    return ids;
-  }
-
-  std::vector<std::uint32_t> fragmentCounts(const Scene& scene, const FrameInputs& frame) {
-    check_(scene, frame);
-    std::vector<std::uint32_t> counts(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 0u);
-    Target target = targetOf(frame);
-    target.counts = &counts;
-    litPass(scene, frame, shadowPass(scene, frame), target, Drawn::All);
-    return counts;
-  }
-
   FrameCheck check_;
 
   static Target targetOf(const FrameInputs& frame) {
