@@ -1,5 +1,5 @@
 # facet bench's lean column draws the picture the CPU rasterizer draws
-# (app/bench_lean_gl.cpp): its own shader maths, so not byte for byte, but
+# (bench/bench_lean_gl.cpp): its own shader maths, so not byte for byte, but
 # close. Defines: FACET, OUT (a folder, made afresh).
 #
 # Measured at 320x180 (Mesa 22.3.6 llvmpipe): mean difference 0.119 levels

@@ -13,7 +13,7 @@ string(REPLACE "|" ";" backends "${BACKENDS}")
 file(REMOVE "${PLOT}")
 facet_run_command(COMMAND ${command} EXPECT 0)
 
-# The quick sweep's points (app/bench_sweep.cpp), axis by axis.
+# The quick sweep's points (bench/bench_sweep.cpp), axis by axis.
 set(points triangles=80 triangles=1k triangles=10k triangles=100k
   pixels=40x30 pixels=80x60 pixels=160x120 pixels=320x240 pixels=640x480
   lights=1 lights=2 lights=4 lights=8)
