@@ -1,5 +1,6 @@
 #include "ray/traced_scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
