@@ -225,6 +225,7 @@ int main(int argc, char** argv) {
 
     auto gl = makeGlRenderer(context == "egl" ? GlContextKind::Egl : GlContextKind::OsMesa);
     auto cpu = makeCpuRenderer(0);
+    const LineEndTest lineEnds = lineEndTestOf(gl->description());  // the CPU's segment ends follow this llvmpipe's
     std::printf("OpenGL: %s\nCPU:    %s\n\n", gl->description().c_str(), cpu->description().c_str());
     std::printf("%-34s %9s %9s %9s %5s %7s %8s %9s  %s\n", "case", "size", "triangle", "differing", "max", "golden", "scanline", "ms gl/cpu",
                 "verdict");
@@ -236,7 +237,8 @@ int main(int argc, char** argv) {
     ReportFolder reportFolder((fs::path(outDir) / "report").string());
     for (Case& c : cases) {
       const Scene scene = sceneOf(c, assetsDir);
-      const FrameInputs frame = buildFrameInputs(scene, c.settings);
+      FrameInputs frame = buildFrameInputs(scene, c.settings);
+      frame.lineEnds = lineEnds;
       const DiffThresholds thresholds = thresholdsOf(c);
       const auto glStart = std::chrono::steady_clock::now();
       const Image glImage = renderStage(*gl, scene, frame, c.stage).image;
