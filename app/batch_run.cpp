@@ -1,5 +1,6 @@
 #include "batch_run.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <filesystem>

@@ -47,7 +47,7 @@ namespace {
 struct RenderOptions {
   CommonOptions common;
   std::string backend = "gl";
-  std::string context = "osmesa";
+  std::string context = "auto";
   int threads = 0;
   std::string stage = "image";  // render/stage.h: image, overdraw, depth, shadow-map, normals or light-N
   std::string shadowReport;     // a heat map of the frame against ray casting (renderer/PIPELINE.md, section 10)
@@ -93,11 +93,12 @@ Command addRenderCommand(CLI::App& app) {
                    "the builtin's), {backend}, {frame} or {n} (the frame from 0, padded to the digits of the last), {frame:W} (W digits), "
                    "{{ and }} for braces");
   command->add_option("--backend", options->backend,
-                      "gl (OpenGL, headless on llvmpipe), cpu (the CPU rasterizer), reference (the CPU rasterizer's one-triangle-at-a-time "
+                      "gl (OpenGL, headless on llvmpipe), auto (gl when a driver loads, cpu otherwise), cpu (the CPU rasterizer), reference (the CPU rasterizer's one-triangle-at-a-time "
                       "reference: the same image, slowly) or ray (the ray tracer: shadow rays, reflection, refraction)")
-      ->check(CLI::IsMember({"gl", "cpu", "reference", "ray"}));
-  command->add_option("--context", options->context, "headless OpenGL context for --backend gl: osmesa or egl")
-      ->check(CLI::IsMember({"osmesa", "egl"}));
+      ->check(CLI::IsMember({"gl", "auto", "cpu", "reference", "ray"}));
+  command->add_option("--context", options->context,
+                      "headless OpenGL context for --backend gl: auto (EGL surfaceless, OSMesa where EGL cannot start), egl or osmesa")
+      ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
   command->add_option("--threads", options->threads, "CPU backend and ray tracer threads (0: one per core)")->check(wholeNumberIn(0, kMaxThreads));
   command->add_option("--output-stage", options->stage,
                       "what to write (renderer/PIPELINE.md, section 6, \"Stages\"): image (the frame); overdraw (the depth complexity: "
@@ -163,6 +164,13 @@ Command addRenderCommand(CLI::App& app) {
     PreparedFrame frame = prepare(0);
 #if FACET_HAVE_GL
     if (options->backend == "gl") refuseCpuOnlyFrame(frame.inputs);  // before the driver is loaded
+    if (options->backend == "auto") {
+      try {
+        refuseCpuOnlyFrame(frame.inputs);
+      } catch (const Error&) {
+        options->backend = "cpu";  // a frame only the CPU rasterizer draws
+      }
+    }
 #endif
     if (probe && ((*probe)[0] >= frame.inputs.width || (*probe)[1] >= frame.inputs.height))
       throw UsageError("--probe " + options->probe + ": outside the " + std::to_string(frame.inputs.width) + "x" + std::to_string(frame.inputs.height) +
@@ -213,16 +221,16 @@ Command addRenderCommand(CLI::App& app) {
     const double total = millisecondsSince(start);
 
     const Scene& scene = *frame.scene;
-    std::printf("rendered %s: %s, %dx%d, %s shading, %s, shadows %s\n", scene.source.c_str(), countOf(scene.triangleCount(), "triangle").c_str(),
+    std::printf("rendered %s: %s, %dx%d, %s shading, %s, shadows %s; %s\n", scene.source.c_str(), countOf(scene.triangleCount(), "triangle").c_str(),
                 first.width, first.height, std::string(kShadingModeNames[static_cast<std::size_t>(first.shading)]).c_str(),
-                countOf(first.lights.size(), "light").c_str(), first.shadowLayerCount > 0 ? "on" : "off");
+                countOf(first.lights.size(), "light").c_str(), first.shadowLayerCount > 0 ? "on" : "off", renderer->description().c_str());
     if (added.particles) std::printf("particles: %s at time %g s\n", countOf(added.particles, "sprite").c_str(), static_cast<double>(asked.time));
     if (added.splats) std::printf("volume: %s (splatting)\n", countOf(added.splats, "splat").c_str());
     if (added.isosurface)
       std::printf("volume: %s (marching cubes)\n", countOf(added.isoTriangles, "iso-surface triangle").c_str());
     std::printf("backend: %s\n", renderer->description().c_str());
     std::printf("  %-28s %9.2f ms\n", kSceneInputsLine, loading);
-    std::printf("  %-28s %9.2f ms\n", options->backend == "gl" ? kGlStartupLine : kRendererStartupLine, startingUp);
+    std::printf("  %-28s %9.2f ms\n", renderer->description().starts_with("gl:") ? kGlStartupLine : kRendererStartupLine, startingUp);
     const auto printShadowReport = [](const DiffResult& diff, const std::string& path) {
       std::printf("shadow report: %lld pixels differ from ray casting, %lld by more than 1 level, at most %d; heat map written to %s\n",
                   static_cast<long long>(diff.differingPixels), static_cast<long long>(diff.failingPixels), diff.maxDifference, path.c_str());

@@ -9,19 +9,47 @@
 
 namespace facet {
 
+namespace {
+
+// --context auto: EGL surfaceless first (Mesa 25.1 and later have no
+// OSMesa), OSMesa where EGL cannot start. When neither loads, one line says
+// why each did not and what renders without a driver.
+std::unique_ptr<Renderer> makeGlBackend(const std::string& context) {
+#if FACET_HAVE_GL
+  if (context == "egl") return makeGlRenderer(GlContextKind::Egl);
+  if (context == "osmesa") return makeGlRenderer(GlContextKind::OsMesa);
+  if (context != "auto") throw Error("--context '" + context + "': expected auto, egl or osmesa");
+  std::string egl;
+  try {
+    return makeGlRenderer(GlContextKind::Egl);
+  } catch (const Error& e) {
+    egl = e.what();
+  }
+  try {
+    return makeGlRenderer(GlContextKind::OsMesa);
+  } catch (const Error& e) {
+    throw Error("--backend gl: no OpenGL driver loads (EGL: " + egl + "; OSMesa: " + e.what() + "); --backend cpu renders without one");
+  }
+#else
+  (void)context;
+  throw Error("--backend gl: this build has no OpenGL backend (configured with FACET_BUILD_GL=OFF); --backend cpu renders without one");
+#endif
+}
+
+}  // namespace
+
 std::unique_ptr<Renderer> makeBackend(const std::string& backend, const std::string& context, int threads, RenderProgress progress) {
   if (backend == "cpu") return makeCpuRenderer(threads);
   if (backend == "reference") return makeReferenceRenderer();
   if (backend == "ray") return makeRayRenderer(threads, std::move(progress));
-#if FACET_HAVE_GL
-  GlContextKind kind = GlContextKind::OsMesa;
-  if (context == "egl") kind = GlContextKind::Egl;
-  else if (context != "osmesa") throw Error("--context '" + context + "': expected osmesa or egl");
-  return makeGlRenderer(kind);
-#else
-  (void)context;
-  throw Error("--backend gl: this build has no OpenGL backend (configured with FACET_BUILD_GL=OFF)");
-#endif
+  if (backend == "auto") {
+    try {
+      return makeGlBackend(context);
+    } catch (const Error&) {
+      return makeCpuRenderer(threads);  // no driver loads: the CPU rasterizer draws the same image
+    }
+  }
+  return makeGlBackend(context);
 }
 
 }  // namespace facet

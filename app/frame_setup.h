@@ -9,9 +9,11 @@
 
 namespace facet {
 
-// The renderer `backend` names (gl, cpu, reference, ray); `context` is gl's
-// (osmesa or egl), `threads` the CPU backend's and ray tracer's (0: one per
-// core). Throws facet::Error for gl in a build without it.
+// The renderer `backend` names (gl, cpu, reference, ray, or auto: gl when a
+// driver loads, cpu otherwise); `context` is gl's (auto: EGL, else OSMesa;
+// egl; osmesa), `threads` the CPU backend's and ray tracer's (0: one per
+// core). Throws facet::Error for gl when no driver loads or the build has
+// none.
 std::unique_ptr<Renderer> makeBackend(const std::string& backend, const std::string& context, int threads, RenderProgress progress = {});
 
 }  // namespace facet

@@ -17,8 +17,10 @@
 #include "ray/traced_scene.h"
 #include "scene/memory_budget.h"
 
-#if FACET_HAVE_EMBREE
+#if FACET_HAVE_EMBREE == 3
 #include <embree3/rtcore.h>
+#elif FACET_HAVE_EMBREE == 4
+#include <embree4/rtcore.h>
 #endif
 
 namespace facet {
@@ -137,22 +139,30 @@ class EmbreePeer {
 
   // The primitive hit (facet's numbering), or -1.
   long intersect(const ray::Ray& r) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
     RTCRayHit h;
     set(h.ray, r);
     h.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     h.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+#if FACET_HAVE_EMBREE == 3
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
     rtcIntersect1(scene_, &context, &h);
+#else
+    rtcIntersect1(scene_, &h);  // Embree 4 dropped the context argument (its arguments struct is optional)
+#endif
     if (h.hit.geomID == RTC_INVALID_GEOMETRY_ID) return -1;
     return h.hit.geomID == 0 ? static_cast<long>(h.hit.primID) : static_cast<long>(triangles_ + h.hit.primID);
   }
   bool occluded(const ray::Ray& r) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
     RTCRay ray;
     set(ray, r);
+#if FACET_HAVE_EMBREE == 3
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
     rtcOccluded1(scene_, &context, &ray);
+#else
+    rtcOccluded1(scene_, &ray);
+#endif
     return ray.tfar < 0.0f;
   }
 

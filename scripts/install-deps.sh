@@ -1,7 +1,16 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages facet builds, tests and runs with.
-# Idempotent: it asks apt only for what dpkg says is missing.
+# Installs the Debian packages facet builds, tests and runs with, on Debian 12
+# (bookworm) or 13 (trixie): the few names that differ are picked from
+# /etc/os-release. Idempotent: it asks apt only for what dpkg says is missing.
 set -euo pipefail
+
+# shellcheck disable=SC1091
+. /etc/os-release
+case "${VERSION_ID:-}" in
+  12) clang_rt=libclang-rt-14-dev ;;  # bookworm's clang 14 ships its runtimes under a versioned name
+  13) clang_rt=libclang-rt-dev ;;     # trixie's default clang (19) has an unversioned one
+  *) echo "install-deps: Debian 12 or 13 expected, /etc/os-release says '${PRETTY_NAME:-unknown}'" >&2; exit 1 ;;
+esac
 
 packages=(
   build-essential cmake pkg-config
@@ -21,8 +30,8 @@ packages=(
   zlib1g-dev             # zlib: PNG writing (image/png.cpp), and the gzFile type of teem's gzip stream, which the NRRD reader closes itself
   libnifti2-dev          # NIfTI-1 volumes (the NIfTI group's niftiio)
   python3-nibabel        # a small anatomical MRI (nibabel/tests/data/anatomical.nii) the volume tests read
-  libembree-dev          # Intel Embree 3: the peer facet bench measures the ray tracer's BVH against
-  clang libclang-rt-14-dev  # libFuzzer and its sanitizer runtimes (scripts/fuzz.sh)
+  libembree-dev          # Intel Embree (3 on Debian 12, 4 on 13): the peer facet bench measures the ray tracer's BVH against
+  clang "$clang_rt"       # libFuzzer and its sanitizer runtimes (scripts/fuzz.sh)
   help2man               # the man page, written from facet --help (packaging/man_page.sh)
   python3-yaml           # the test that reads the README's Kubernetes Job (tests/cli/batch_docs.py)
   python3-junitparser    # a JUnit consumer: the test that reads facet batch's report with it (tests/cli/junit_consumer.py)

@@ -23,7 +23,7 @@ void addSegment(const ClipVertex& a, const ClipVertex& b, const WindowVertex& wi
   WindowVertex clippedA, clippedB;
   if (!clipSegment(a, b, windowA, windowB, halfWidth, halfHeight, 3, clippedA, clippedB)) return;
   DrawnLine drawn{{}, baseColor};
-  if (setUpSegment(lineVertex(clippedA), lineVertex(clippedB), frame.width, frame.height, drawn.raster)) out.push_back(drawn);
+  if (setUpSegment(lineVertex(clippedA), lineVertex(clippedB), frame.width, frame.height, frame.lineEnds, drawn.raster)) out.push_back(drawn);
 }
 
 void addPoint(const ClipVertex& v, const WindowVertex& window, const FrameInputs& frame, glm::vec3 baseColor, std::vector<DrawnLine>& out) {

@@ -50,7 +50,7 @@ bool boxAxis(std::int64_t lo, std::int64_t hi, int size, int adj, int& first, in
 
 }  // namespace
 
-bool setUpSegment(const LineVertex& a, const LineVertex& b, int width, int height, RasterLine& out) {
+bool setUpSegment(const LineVertex& a, const LineVertex& b, int width, int height, LineEndTest ends, RasterLine& out) {
   for (const LineVertex* v : {&a, &b})
     if (!(std::fabs(v->x) < kGridLimit && std::fabs(v->y) < kGridLimit)) return false;
   const float dx = a.x - b.x, dy = a.y - b.y;
@@ -86,9 +86,14 @@ bool setUpSegment(const LineVertex& a, const LineVertex& b, int width, int heigh
     }
     planeDx *= 1.0f + dydx * dydx;
     planeDy = 0.0f;
-    // Move the ends whose pixel the plain quad would get wrong.
-    // Would the plain quad draw them? (Mesa 22.3's test, by the signs of the offsets from the pixel centres.)
-    const bool willDrawStart = sign(-x1diff) != sign(dx), willDrawEnd = sign(x2diff) == sign(-dx) || x2diff == 0.0f;
+    // Move the ends whose pixel the plain quad would get wrong. Would the
+    // plain quad draw them? Mesa 22.3 by the signs of the offsets from the
+    // pixel centres; Mesa 25.0 by the quad's edge each end is on (with GL's
+    // fill convention, bottom_edge_rule = 0: a left end is drawn when
+    // x·diff > 0, a right one when ≤ 0). Only an offset of 0 tells them apart.
+    const bool mesa22 = ends == LineEndTest::Mesa22;
+    const bool willDrawStart = mesa22 ? sign(-x1diff) != sign(dx) : (dx < 0.0f ? x1diff <= 0.0f : x1diff > 0.0f);
+    const bool willDrawEnd = mesa22 ? sign(x2diff) == sign(-dx) || x2diff == 0.0f : (dx < 0.0f ? x2diff > 0.0f : x2diff <= 0.0f);
     if (dx < 0.0f) {
       std::swap(v1, v2);
       if (willDrawStart != drawStart) xOffsetEnd = -x1diff - 0.5f, yOffsetEnd = xOffsetEnd * dydx;
@@ -123,7 +128,10 @@ bool setUpSegment(const LineVertex& a, const LineVertex& b, int width, int heigh
     }
     planeDx = 0.0f;
     planeDy *= 1.0f + dxdy * dxdy;
-    const bool willDrawStart = sign(y1diff) == sign(dy), willDrawEnd = sign(-y2diff) == sign(dy) || y2diff == 0.0f;
+    // As x-major: Mesa 25.0 by the bottom or top edge each end is on.
+    const bool mesa22 = ends == LineEndTest::Mesa22;
+    const bool willDrawStart = mesa22 ? sign(y1diff) == sign(dy) : (dy > 0.0f ? y1diff > 0.0f : y1diff <= 0.0f);
+    const bool willDrawEnd = mesa22 ? sign(-y2diff) == sign(dy) || y2diff == 0.0f : (dy > 0.0f ? y2diff <= 0.0f : y2diff > 0.0f);
     if (dy > 0.0f) {
       std::swap(v1, v2);
       if (willDrawStart != drawStart) yOffsetEnd = -y1diff + 0.5f, xOffsetEnd = yOffsetEnd * dxdy;

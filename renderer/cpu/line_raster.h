@@ -9,9 +9,9 @@
 //
 // A segment of width 1 becomes a parallelogram: its ends on the 1/256 grid,
 // moved along the major axis where the diamond-exit rule says an end pixel
-// is (or is not) drawn and the plain quad would not (or would) draw it, by
-// Mesa 22.3's tests (later releases changed the second), widened by ±1/2
-// pixel across the minor axis. Its
+// is (or is not) drawn and the plain quad would not (or would) draw it (the
+// second test as the llvmpipe held against makes it: LineEndTest), widened
+// by ±1/2 pixel across the minor axis. Its
 // four edges cover a pixel by the triangle rule (triangle_setup.h). Its
 // attributes vary along the major axis only:
 //
@@ -27,6 +27,7 @@
 #include <glm/vec3.hpp>
 
 #include "cpu/plane_equations.h"
+#include "pipeline/frame_inputs.h"
 #include "cpu/triangle_setup.h"
 
 namespace facet::cpu {
@@ -62,7 +63,7 @@ struct DrawnLine {
 
 // Segment a → b in a width × height viewport. False when it covers nothing
 // (zero length, off the viewport, or coordinates too large for the grid).
-bool setUpSegment(const LineVertex& a, const LineVertex& b, int width, int height, RasterLine& out);
+bool setUpSegment(const LineVertex& a, const LineVertex& b, int width, int height, LineEndTest ends, RasterLine& out);
 
 // A point of size 1. False when it covers nothing.
 bool setUpPoint(const LineVertex& v, int width, int height, RasterLine& out);

@@ -111,6 +111,16 @@ class CurrentContextGlRenderer final : public WindowGlRenderer {
 
 std::unique_ptr<Renderer> makeGlRenderer(GlContextKind kind) { return std::make_unique<HeadlessGlRenderer>(kind); }
 
+// Read in Mesa 22.3.6 and 25.0.7 (lp_setup_line.c, try_setup_line); the
+// releases between are taken to have the later test, untested here.
+LineEndTest lineEndTestOf(std::string_view driver) {
+  const std::size_t at = driver.find("Mesa ");
+  if (at == std::string_view::npos) return LineEndTest::Mesa25;
+  int major = 0;
+  for (std::size_t i = at + 5; i < driver.size() && driver[i] >= '0' && driver[i] <= '9'; ++i) major = 10 * major + (driver[i] - '0');
+  return major > 0 && major <= 22 ? LineEndTest::Mesa22 : LineEndTest::Mesa25;
+}
+
 std::unique_ptr<WindowGlRenderer> makeWindowGlRenderer(const gl::GetProcAddress& getProcAddress) {
   return std::make_unique<CurrentContextGlRenderer>(getProcAddress);
 }

@@ -6,8 +6,10 @@
 // (Scene::identity), each frame checked, drawn and read back.
 #include <memory>
 #include <string>
+#include <string_view>
 
 #include "gl/get_proc_address.h"
+#include "pipeline/frame_inputs.h"
 #include "render/renderer.h"
 
 namespace facet {
@@ -17,6 +19,12 @@ enum class GlContextKind { OsMesa, Egl };
 // Creates the context and loads OpenGL; throws facet::Error (library missing,
 // no 4.5 core context).
 std::unique_ptr<Renderer> makeGlRenderer(GlContextKind kind);
+
+// The segment-end test of the llvmpipe a driver string names (a GL_VERSION,
+// or a renderer's description, "... 4.5 (Core Profile) Mesa 22.3.6"): Mesa
+// 22 and older decide by signs, later releases by the quad's edges
+// (pipeline/frame_inputs.h). A string without a Mesa version gets the newest.
+LineEndTest lineEndTestOf(std::string_view driver);
 
 // What OpenGL refuses of a frame (the CPU backend's own algorithms: the
 // scanline z-buffer, area-weighted averaging), naming the key: every draw

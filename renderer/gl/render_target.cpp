@@ -1,5 +1,6 @@
 #include "gl/render_target.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "common/error.h"

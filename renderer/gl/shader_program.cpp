@@ -1,5 +1,6 @@
 #include "gl/shader_program.h"
 
+#include <algorithm>
 #include <vector>
 
 #include "common/error.h"

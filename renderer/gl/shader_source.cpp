@@ -1,5 +1,6 @@
 #include "gl/shader_source.h"
 
+#include <algorithm>
 #include <regex>
 
 #include "common/error.h"

@@ -1,5 +1,6 @@
 #include "image/srgb.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>

@@ -2,12 +2,13 @@
 
 #include <cmath>
 
+#include "math/elementary.h"
 #include "math/matrix_rows.h"
 
 namespace facet {
 
 glm::mat4 perspective(float theta, float aspect, float near, float far) {
-  const float t = std::tan(theta);
+  const float t = elementary::tan(theta);
   const float a = far / (far - near);
   const float b = -near * far / (far - near);
   return fromRows(1, 0, 0, 0,

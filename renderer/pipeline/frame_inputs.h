@@ -41,6 +41,16 @@ struct FrameLight {
   std::array<glm::mat4, 6> shadowFromWorld{};
 };
 
+// How llvmpipe's line set-up decides that the plain quad of a segment
+// already draws an end's pixel (Mesa's lp_setup_line.c, try_setup_line,
+// "Are we already drawing start/end?"): Mesa 22.3 compares the signs of the
+// end's offsets from its pixel centre; Mesa 25.0 asks which edge of the quad
+// the end lies on. They differ only for an end whose offset along the major
+// axis is 0 (renderer/PIPELINE.md, section 6, "Lines and points"). The CPU
+// backend follows the llvmpipe it is held against: gl::lineEndTestOf reads
+// it from the driver's version string.
+enum class LineEndTest { Mesa22, Mesa25 };
+
 struct FrameInputs {
   int width = 0, height = 0;      // pixels
   CameraSettings camera;          // resolved (source = manual)
@@ -51,6 +61,7 @@ struct FrameInputs {
   glm::mat4 clipFromEye{1.0f};    // PM (perspective or parallel)
   glm::mat4 clipFromWorld{1.0f};  // PM·EM
   glm::mat4 windowFromNdc{1.0f};  // window-to-viewport: [-1,1]² -> [0,W]×[0,H], z unchanged
+  LineEndTest lineEnds = LineEndTest::Mesa25;  // the CPU's segment ends: the newest llvmpipe's test unless told which
 
   std::vector<FrameInstance> instances;
   std::vector<CourseMaterial> materials;  // the scene's, then the default material last

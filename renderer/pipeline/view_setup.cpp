@@ -6,6 +6,8 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "math/elementary.h"
+
 namespace facet {
 
 Sphere sceneSphere(const Scene& scene) {
@@ -44,7 +46,7 @@ CameraSettings resolveCamera(const Scene& scene, const RenderSettings& settings)
     camera.projection = c.projection;
     if (c.projection == ProjectionKind::Perspective) {
       // The course's θ is horizontal: tan θ = A_R · tan(yfov / 2).
-      camera.halfAngleDeg = std::clamp(glm::degrees(std::atan(aspect * std::tan(0.5f * c.yfov))), 0.5f, 89.5f);
+      camera.halfAngleDeg = std::clamp(glm::degrees(elementary::atan(aspect * elementary::tan(0.5f * c.yfov))), 0.5f, 89.5f);
     } else {
       camera.parallelWidth = 2.0f * c.ymag * aspect;  // keep the file's vertical extent
     }
@@ -63,8 +65,8 @@ CameraSettings resolveCamera(const Scene& scene, const RenderSettings& settings)
   const glm::vec3 direction = glm::normalize(glm::vec3(1.0f, 0.8f, 1.6f));
   float distance = 0;
   if (camera.projection == ProjectionKind::Perspective) {
-    const float tanTheta = std::tan(glm::radians(camera.halfAngleDeg));
-    const float halfAngle = std::min(std::atan(tanTheta), std::atan(tanTheta / aspect));
+    const float tanTheta = elementary::tan(glm::radians(camera.halfAngleDeg));
+    const float halfAngle = std::min(elementary::atan(tanTheta), elementary::atan(tanTheta / aspect));
     distance = 1.1f * sphere.radius / std::sin(halfAngle);
   } else {
     camera.parallelWidth = 2.2f * sphere.radius * std::max(1.0f, aspect);

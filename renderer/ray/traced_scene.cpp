@@ -1,11 +1,13 @@
 #include "ray/traced_scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "math/elementary.h"
 #include "shading/alpha_mask.h"
 #include "shading/lit_programs.h"
 #include "shading/transform.h"
@@ -117,9 +119,9 @@ glm::vec3 TracedScene::pointOf(const Hit& hit, const Ray& ray) const {
 // with θ = atan2(x, z) in [0, 2π), t = φ/π with φ = acos(y), of the model-space direction.
 glm::vec2 TracedScene::sphereTexcoords(const TracedSphere& s, glm::vec3 P) const {
   const glm::vec3 d = normalize3(glm::vec3(transformPoint(s.modelFromWorld, P)));
-  float theta = std::atan2(d.x, d.z);
+  float theta = elementary::atan2(d.x, d.z);
   if (theta < 0.0f) theta += 2.0f * std::numbers::pi_v<float>;
-  return {theta / (2.0f * std::numbers::pi_v<float>), std::acos(std::clamp(d.y, -1.0f, 1.0f)) / std::numbers::pi_v<float>};
+  return {theta / (2.0f * std::numbers::pi_v<float>), elementary::acos(std::clamp(d.y, -1.0f, 1.0f)) / std::numbers::pi_v<float>};
 }
 
 SurfacePoint TracedScene::surfaceAt(const Hit& hit, const Ray& ray, const RayDifferentials* differentials) const {

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "math/elementary.h"
 #include "math/transforms.h"
 #include "scene/primitives.h"
 
@@ -48,7 +49,7 @@ Scene makeCornellBox() {
   camera.name = "cornell camera";
   camera.eye = {0.0f, 1.0f, 3.9f};
   camera.reference = {0.0f, 1.0f, 0.0f};
-  camera.yfov = 2.0f * std::atan(1.0f / 2.9f);  // the open side, 2 high, 2.9 away, fills the height
+  camera.yfov = 2.0f * elementary::atan(1.0f / 2.9f);  // the open side, 2 high, 2.9 away, fills the height
   camera.near = 0.5f;
   camera.far = 10.0f;
   scene.cameras.push_back(camera);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "math/elementary.h"
 #include "math/transforms.h"
 #include "scene/primitives.h"
 
@@ -41,7 +42,7 @@ Scene makeDefaultScene() {
   camera.reference = {0.0f, 0.45f, 0.0f};
   camera.up = {0.0f, 1.0f, 0.0f};
   // A horizontal half-angle θ of 30° at the default 4:3: tan(yfov/2) = tan θ / A_R.
-  camera.yfov = 2.0f * std::atan(std::tan(30.0f * kDeg) * 3.0f / 4.0f);
+  camera.yfov = 2.0f * elementary::atan(elementary::tan(30.0f * kDeg) * 3.0f / 4.0f);
   camera.near = 0.5f;
   camera.far = 30.0f;
   scene.cameras.push_back(camera);

@@ -1,5 +1,6 @@
 #include "scene/gltf_document_checks.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>

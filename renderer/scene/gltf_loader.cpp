@@ -120,6 +120,28 @@ bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigne
   return false;
 }
 
+// tinygltf 2.9 (Debian 13) asks a file's size before it reads the file, to
+// hold it to its own limit; readWholeFile holds it to kMaxGltfFileBytes and
+// names the problem, so this answers 0 and lets that one check decide.
+[[maybe_unused]] bool fileSizeInBytes(std::size_t* size, std::string*, const std::string&, void*) {
+  *size = 0;
+  return true;
+}
+
+// The callbacks by member name: tinygltf 2.9 added GetFileSizeInBytes (and
+// refuses a null one), which 2.7 (Debian 12) does not have.
+template <typename Callbacks>
+Callbacks folderCallbacks(AssetFolder& folder) {
+  Callbacks c{};
+  c.FileExists = fileExists;
+  c.ExpandFilePath = expandFilePath;
+  c.ReadWholeFile = readWholeFile;
+  c.WriteWholeFile = refuseWrite;
+  if constexpr (requires { c.GetFileSizeInBytes; }) c.GetFileSizeInBytes = fileSizeInBytes;
+  c.user_data = &folder;
+  return c;
+}
+
 // What the image callback works with. tinygltf calls it while it parses,
 // with the model's buffers and bufferViews already read.
 struct ImageLoading {
@@ -1135,7 +1157,7 @@ Scene loadGltfFromMemory(const std::string& bytes, const std::string& path, cons
   AssetFolder folder;
   folder.root = assetFolder;
   tinygltf::TinyGLTF loader;
-  loader.SetFsCallbacks({fileExists, expandFilePath, readWholeFile, refuseWrite, &folder});
+  loader.SetFsCallbacks(folderCallbacks<tinygltf::FsCallbacks>(folder));
   tinygltf::Model model;
   MemoryBudget sceneBudget(kSceneMemoryBudget, "scene budget");
   ImageLoading images;

@@ -236,6 +236,7 @@ int main(int argc, char** argv) {
 
     auto gl = makeGlRenderer(context == "egl" ? GlContextKind::Egl : GlContextKind::OsMesa);
     auto cpu = makeCpuRenderer(0);
+    const LineEndTest lineEnds = lineEndTestOf(gl->description());  // the CPU's segment ends follow this llvmpipe's
     std::printf("OpenGL: %s\nCPU:    %s\n\n", gl->description().c_str(), cpu->description().c_str());
     std::printf("%-34s %9s %9s %9s %5s %7s %8s %9s  %s\n", "case", "size", "triangle", "differing", "max", "golden", "scanline", "ms gl/cpu",
                 "verdict");
@@ -246,7 +247,8 @@ int main(int argc, char** argv) {
     std::vector<ReportCase> report;
     ReportFolder reportFolder((fs::path(outDir) / "report").string());
     for (Case& c : cases) {
-      const PreparedFrame prepared = frameOf(c, assetsDir);
+      PreparedFrame prepared = frameOf(c, assetsDir);
+      prepared.inputs.lineEnds = lineEnds;  // the CPU's segment ends as this llvmpipe draws them
       const Scene& scene = *prepared.scene;
       const FrameInputs& frame = prepared.inputs;
       const DiffThresholds thresholds = thresholdsOf(c);

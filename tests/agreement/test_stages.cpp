@@ -6,6 +6,7 @@
 // faces the eye in the normals; light-0 of a one-light frame and the frame
 // without lights add up to the frame. And the stage list itself: its names,
 // its refusals, its pictures.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>

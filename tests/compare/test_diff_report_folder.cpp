@@ -1,6 +1,7 @@
 // A report folder is complete or absent: a write that fails part way (the
 // disk is full after N files) leaves no new folder and the older report as it
 // was; only a complete report replaces one, and never a folder of other work.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <functional>

@@ -1,4 +1,5 @@
 // Clipping at the near plane and perspective-correct interpolation.
+#include <algorithm>
 #include <cmath>
 
 #include <doctest/doctest.h>

@@ -3,6 +3,7 @@
 // (snapTriangle, then rasterizeBlocks over the 64x64 tiles of the bounding
 // box) is what the hand-checked cases run; a last case holds its block-first
 // walk equal to the plain per-pixel walk of rasterize.h on random triangles.
+#include <algorithm>
 #include <array>
 #include <random>
 #include <set>

@@ -2,6 +2,7 @@
 // microfacet terms integrate as the physics says, the split-sum table holds
 // what the BRDF reflects, a map's irradiance is its cosine integral, and
 // metals tint their reflection while dielectrics do not.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 

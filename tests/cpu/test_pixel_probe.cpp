@@ -1,6 +1,7 @@
 // The picked pixel (cpu/pixel_probe.h): its numbers against the illumination
 // equation written out here, for a pixel of a known triangle, and the colour
 // its terms sum to against the pixel the backend drew.
+#include <algorithm>
 #include <cmath>
 
 #include <doctest/doctest.h>

@@ -1,5 +1,6 @@
 // Procedural textures (renderer/PIPELINE.md, section 8): the checker's
 // parity and the value noise's lattice, range and continuity.
+#include <algorithm>
 #include <cmath>
 
 #include <doctest/doctest.h>

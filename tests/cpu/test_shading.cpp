@@ -1,5 +1,6 @@
 // Lit colours at chosen pixels against the course's illumination equation,
 // written out by hand here (not with the renderer's lighting code).
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 

@@ -2,6 +2,7 @@
 // (loadSettingsFile: the bytes go through a file, so the reading is the
 // same). Every input must end in RenderSettings or a facet::Error. Settings
 // that load must write out as JSON that loads back to the same JSON.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>

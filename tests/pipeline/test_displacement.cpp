@@ -1,6 +1,7 @@
 // Displacement mapping (renderer/PIPELINE.md, section 8): midpoint
 // subdivision that shares each edge's new vertex, P' = P + (s·h)·N, normals
 // from the displaced surface, and the height map's own checks.
+#include <algorithm>
 #include <cmath>
 
 #include <doctest/doctest.h>

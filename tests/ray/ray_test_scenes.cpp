@@ -2,6 +2,7 @@
 // names a scene that can be built again.
 #include "ray_test_scenes.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <limits>

@@ -3,6 +3,7 @@
 // rule, the same tree for any number of workers, the node layout and its
 // invariants, the depth limit, degenerate and oversized inputs, and a closed
 // mesh that no ray through the tree leaks out of.
+#include <algorithm>
 #include <cstring>
 #include <limits>
 #include <random>

@@ -17,6 +17,7 @@
 // the same pixels by the same rules and programs, and is held equal to this one.
 #include "cpu/reference/course_pipeline.h"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
