@@ -18,4 +18,4 @@ ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:strict_string_checks=1" \
 echo "sanitize: LeakSanitizer on the tests that load no GL driver"
 ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1" \
   ctest --test-dir build-sanitize --output-on-failure --parallel "$(nproc)" --timeout 1800 \
-    -E '^(gl\.|viewer\.|stages:|agreement$|pathological|robustness\.|cli\.bench_(small|draws_maps_every_frame|keep_shadow_maps|lean_matches_cpu|sweep_quick)$|cli\.batch_jobs$)'
+    -E '^(gl\.|viewer\.|stages:|agreement(:|\.start$|\.summary$)|pathological|robustness\.|cli\.bench_(small|draws_maps_every_frame|keep_shadow_maps|lean_matches_cpu|sweep_quick)$|cli\.batch_jobs$)'
