@@ -19,10 +19,12 @@ set(FACET_AREAS agreement batch cli common compare cpu fuzz gl image math packag
                 viewer volume)
 
 # facet_doctest(TARGET [PREFIX prefix]): its cases as ctest entries, named
-# PREFIX + the case's name, each labelled by the directory's facet_labels.
+# PREFIX + the case's name, each labelled by the directory's facet_labels;
+# one that skipped a check this host cannot run is reported as skipped
+# (tests/skipped.h).
 function(facet_doctest target)
   cmake_parse_arguments(PARSE_ARGV 1 T "" "PREFIX" "")
-  doctest_discover_tests(${target} TEST_PREFIX "${T_PREFIX}")
+  doctest_discover_tests(${target} TEST_PREFIX "${T_PREFIX}" PROPERTIES SKIP_RETURN_CODE 77)
   set_property(DIRECTORY APPEND PROPERTY FACET_DOCTESTS ${target})
   set_property(TARGET ${target} PROPERTY FACET_TEST_PREFIX "${T_PREFIX}")
 endfunction()
