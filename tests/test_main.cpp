@@ -2,12 +2,18 @@
 // test case fails: ctest runs each case as its own entry
 // (doctest_discover_tests), and an entry whose name the filter no longer
 // matches (a renamed case, a name doctest splits) must not pass silently.
+// A run of one case that passes but skipped a check (skipped.h) exits
+// kSkippedExitCode, which ctest reports as skipped.
 #define DOCTEST_CONFIG_IMPLEMENT
 #include <cstdio>
 
 #include <doctest/doctest.h>
 
+#include "skipped.h"
+
 namespace {
+
+bool anySkipped = false;  // a check was skipped (facet::test::skipped)
 
 // doctest hands listeners the run's statistics and nothing back to main; a
 // file-local counter is how the count gets out.
@@ -33,6 +39,11 @@ REGISTER_LISTENER("case_counter", 1, CaseCounter);
 
 }  // namespace
 
+void facet::test::skipped(const std::string& what) {
+  MESSAGE("skipped: " << what);
+  anySkipped = true;
+}
+
 int main(int argc, char** argv) {
   doctest::Context context(argc, argv);
   const int result = context.run();
@@ -41,5 +52,6 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "doctest: the filters select no test case; a run that tests nothing fails\n");
     return 1;
   }
+  if (result == 0 && anySkipped && casesRun == 1) return facet::test::kSkippedExitCode;
   return result;
 }

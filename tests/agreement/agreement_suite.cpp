@@ -15,12 +15,16 @@
 // of the z-buffer and of the shadow maps, the normals' floats) must be equal
 // bit for bit.
 //
-//   facet_agreement --cases DIR --golden DIR --out DIR [--update-goldens] [--context osmesa|egl]
+//   facet_agreement --cases DIR --golden DIR --out DIR [--case NAME | --summary] [--update-goldens] [--context osmesa|egl]
 //
 // Prints the figures per case and in total (bit-identical cases out of N,
-// the worst pixel), then "N passed, N failed"; writes DIR/gl, DIR/cpu and an
-// HTML report in DIR/report. Exit 0 when every case passes, 1 when one
-// fails, 2 when a case file is wrong.
+// the worst pixel), then "N passed, N failed"; writes OUT/gl, OUT/cpu, each
+// case's figures in OUT/figures and an HTML report in OUT/report. With
+// --case, that case alone and its line: ctest runs each case as its own
+// entry, agreement:NAME, in parallel; then --summary renders nothing and
+// prints the table, the totals and the report from the figures the cases
+// left. Exit 0 when every case run passes, 1 when one fails, 2 when a case
+// file is wrong.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -28,6 +32,7 @@
 #include <cstring>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -208,163 +213,275 @@ std::vector<std::uint32_t> trianglesOf(Renderer& renderer, const Scene& scene, c
   return *renderer.render(scene, frame, {FrameOutput::TriangleIds}).triangleIds;
 }
 
+
+// Where a run reads and writes.
+struct Folders {
+  std::string golden, out, assets;
+  bool update = false;  // write the CPU renders as the goldens
+};
+
+// What the summary needs of a case, which its own run leaves in
+// OUT/figures/NAME.json: ctest runs every case as an entry of its own
+// (agreement:NAME), in its own process, and the summary after them all.
+struct Figures {
+  std::string row;  // the case's line of the table
+  bool pass = false;
+  bool sameTriangle = false;        // the same triangle at every pixel
+  bool countsEqual = false;         // the same fragment count at every pixel
+  std::optional<bool> scanlineSame;  // z-buffer cases: the scanline z-buffer kept the same triangles and bytes
+  std::string gl, cpu;               // the backends' descriptions
+};
+
+fs::path figuresPath(const std::string& out, const std::string& name) { return fs::path(out) / "figures" / (name + ".json"); }
+
+void writeFigures(const std::string& out, const std::string& name, const Figures& f) {
+  nlohmann::json j = {{"row", f.row}, {"pass", f.pass}, {"sameTriangle", f.sameTriangle}, {"countsEqual", f.countsEqual}, {"gl", f.gl}, {"cpu", f.cpu}};
+  j["scanlineSame"] = f.scanlineSame ? nlohmann::json(*f.scanlineSame) : nlohmann::json();
+  writeFileAtomically(figuresPath(out, name).string(), j.dump(1) + "\n");
+}
+
+// The case's figures, or none when its run left none (it did not run, or ended before the end).
+std::optional<Figures> readFigures(const std::string& out, const std::string& name) {
+  const fs::path path = figuresPath(out, name);
+  if (!fs::exists(path)) return std::nullopt;
+  try {
+    const nlohmann::json j = nlohmann::json::parse(readFile(path.string(), 1u << 20));
+    Figures f{j.at("row").get<std::string>(), j.at("pass").get<bool>(), j.at("sameTriangle").get<bool>(), j.at("countsEqual").get<bool>(), {},
+              j.at("gl").get<std::string>(), j.at("cpu").get<std::string>()};
+    if (!j.at("scanlineSame").is_null()) f.scanlineSame = j["scanlineSame"].get<bool>();
+    return f;
+  } catch (const nlohmann::json::exception& e) {
+    throw Error(path.string() + ": not the figures of a case (" + e.what() + ")");
+  }
+}
+
+template <class... Args>
+std::string formatted(const char* format, Args... args) {
+  std::string text(static_cast<std::size_t>(std::snprintf(nullptr, 0, format, args...)), '\0');
+  std::snprintf(text.data(), text.size() + 1, format, args...);
+  return text;
+}
+
+void printHeader(const std::string& gl, const std::string& cpu) {
+  std::printf("OpenGL: %s\nCPU:    %s\n\n", gl.c_str(), cpu.c_str());
+  std::printf("%-34s %9s %9s %9s %5s %7s %8s %9s  %s\n", "case", "size", "triangle", "differing", "max", "golden", "scanline", "ms gl/cpu",
+              "verdict");
+}
+
+// Renders one case with both backends (and the scanline z-buffer), holds
+// them to each other and to the golden, writes OUT/gl/NAME.png,
+// OUT/cpu/NAME.png and the case's figures, and returns them.
+Figures runCase(Case& c, Renderer& gl, Renderer& cpu, const Folders& folders) {
+  PreparedFrame prepared = frameOf(c, folders.assets);
+  prepared.inputs.lineEnds = lineEndTestOf(gl.description());  // the CPU's segment ends as this llvmpipe draws them
+  const Scene& scene = *prepared.scene;
+  const FrameInputs& frame = prepared.inputs;
+  const DiffThresholds thresholds = thresholdsOf(c);
+  const auto glStart = std::chrono::steady_clock::now();
+  const Image glImage = renderStage(gl, scene, frame, c.stage).image;
+  const double msGl = millisecondsSince(glStart);
+  const auto cpuStart = std::chrono::steady_clock::now();
+  const Image cpuImage = renderStage(cpu, scene, frame, c.stage).image;
+  const double msCpu = millisecondsSince(cpuStart);
+  long covered = 0;
+  const long mismatches = triangleMismatches(trianglesOf(gl, scene, frame), trianglesOf(cpu, scene, frame), covered);
+  const long dataMismatches = stageDataMismatches(c.stage, gl, cpu, scene, frame);
+  if (covered == 0) {  // lines, points and blended surfaces keep no triangle: what they drew is what differs from the frame without them
+    FrameInputs empty = frame;
+    empty.instances.clear();
+    empty.paintersOrder.clear();
+    empty.transparentOrder.clear();
+    const Image background = cpu.render(scene, empty).image;
+    for (int y = 0; y < cpuImage.height(); ++y)
+      for (int x = 0; x < cpuImage.width(); ++x) {
+        const Rgba8 a = cpuImage.at(x, y), b = background.at(x, y);
+        covered += a.r != b.r || a.g != b.g || a.b != b.b;
+      }
+  }
+  const std::string glPath = (fs::path(folders.out) / "gl" / (c.name + ".png")).string();
+  const std::string cpuPath = (fs::path(folders.out) / "cpu" / (c.name + ".png")).string();
+  writePng(glPath, glImage);
+  writePng(cpuPath, cpuImage);
+  const DiffResult d = compareImages(cpuImage, glImage, thresholds);
+
+  // Goldens: the CPU render is the reference image of the case; both backends must equal it.
+  const std::string goldenPath = (fs::path(folders.golden) / (c.name + ".png")).string();
+  std::string goldenVerdict = "-";
+  bool goldenOk = true;
+  if (folders.update) {
+    writePng(goldenPath, cpuImage);
+    goldenVerdict = "written";
+  } else {
+    const ComparedFiles cpuVsGolden = compareFiles(c.name, goldenPath, cpuPath, backendAgreement());
+    const ComparedFiles glVsGolden = compareFiles(c.name, goldenPath, glPath, thresholds);
+    goldenOk = passes(cpuVsGolden) && (passes(glVsGolden) || (c.allow && glVsGolden.diffCase.verdict == Verdict::Warn));
+    goldenVerdict = goldenOk ? "ok" : (cpuVsGolden.diffCase.problem.empty() ? "DIFFERS" : "MISSING");
+  }
+
+  Figures f;
+  f.gl = gl.description();
+  f.cpu = cpu.description();
+
+  // The scanline z-buffer (CPU) keeps what the z-buffer keeps: the same triangle and the same bytes at every pixel.
+  std::string scanline = "-";
+  if (c.settings.hsr == HiddenSurface::ZBuffer) {
+    RenderSettings rows = c.settings;
+    rows.hsr = HiddenSurface::Scanline;
+    const FrameInputs rowFrame = buildFrameInputs(scene, rows);
+    const Image rowImage = renderStage(cpu, scene, rowFrame, c.stage).image;
+    long unused = 0;
+    long differing = triangleMismatches(trianglesOf(cpu, scene, rowFrame), trianglesOf(cpu, scene, frame), unused);
+    if (rowImage.width() != cpuImage.width() || rowImage.height() != cpuImage.height()) differing += 1;
+    else
+      for (int y = 0; y < cpuImage.height(); ++y)
+        for (int x = 0; x < cpuImage.width(); ++x) differing += !(rowImage.at(x, y) == cpuImage.at(x, y));
+    f.scanlineSame = differing == 0;
+    scanline = differing == 0 ? "same" : std::to_string(differing);
+  }
+
+  // The depth complexity: the same fragment count at every pixel.
+  long countMismatches = 0;
+  {
+    const auto glCounts = *gl.render(scene, frame, {FrameOutput::FragmentCounts}).fragmentCounts;
+    const auto cpuCounts = *cpu.render(scene, frame, {FrameOutput::FragmentCounts}).fragmentCounts;
+    for (std::size_t i = 0; i < glCounts.size(); ++i) countMismatches += glCounts[i] != cpuCounts[i];
+  }
+
+  f.sameTriangle = mismatches == 0;
+  f.countsEqual = countMismatches == 0;
+  f.pass = mismatches == 0 && covered > 0 && d.status != DiffStatus::Fail && goldenOk && f.scanlineSame.value_or(true) && countMismatches == 0 &&
+           dataMismatches == 0;
+  std::string remark;
+  if (covered == 0) remark = " (nothing drawn)";
+  else if (countMismatches) remark = " (fragment counts differ at " + std::to_string(countMismatches) + " pixels)";
+  else if (dataMismatches) remark = " (" + stageName(c.stage) + ": " + std::to_string(dataMismatches) + " values differ in their bits)";
+  else if (c.stage.kind == StageKind::Depth || c.stage.kind == StageKind::ShadowMap || c.stage.kind == StageKind::Normals)
+    remark = " (stage " + stageName(c.stage) + ", its data bit for bit)";
+  else if (c.stage.kind != StageKind::Image) remark = " (stage " + stageName(c.stage) + ")";
+  else if (c.allow) remark = " (allowed: " + c.allow->reason + ")";
+  const std::string size = std::to_string(cpuImage.width()) + "x" + std::to_string(cpuImage.height());
+  f.row = formatted("%-34s %9s %9ld %9lld %5d %7s %8s %4.0f/%-4.0f %s%s", c.name.c_str(), size.c_str(), mismatches,
+                    static_cast<long long>(d.differingPixels), d.maxDifference, goldenVerdict.c_str(), scanline.c_str(), msGl, msCpu,
+                    f.pass ? "pass" : "FAIL", remark.c_str());
+  writeFigures(folders.out, c.name, f);
+  return f;
+}
+
+// The table of every case that left its figures (unless the run printed
+// its lines as it went), the totals (bit-identical cases out of N, the
+// worst pixel) and the HTML report in OUT/report, from the figures and the
+// PNGs the cases wrote. The cases' verdicts are their own entries' to
+// report; this fails only when it cannot write the report.
+void summarize(const std::vector<Case>& cases, const Folders& folders, bool printRows) {
+  int passed = 0, failed = 0, run = 0, identical = 0, coverageIdentical = 0, scanlineCases = 0, scanlineEqual = 0, countsEqual = 0;
+  std::string worstName = "-", glDescription = "-", cpuDescription = "-";
+  DiffResult worst;
+  std::vector<std::string> notRun;
+  std::vector<ReportCase> report;
+  ReportFolder reportFolder((fs::path(folders.out) / "report").string());
+  bool headed = false;
+  for (const Case& c : cases) {
+    const std::optional<Figures> f = readFigures(folders.out, c.name);
+    if (!f) {
+      notRun.push_back(c.name);
+      continue;
+    }
+    if (printRows && !headed) printHeader(f->gl, f->cpu);
+    headed = true;
+    glDescription = f->gl;
+    cpuDescription = f->cpu;
+    if (printRows) std::printf("%s\n", f->row.c_str());
+    ++run;
+    (f->pass ? passed : failed) += 1;
+    coverageIdentical += f->sameTriangle ? 1 : 0;
+    countsEqual += f->countsEqual ? 1 : 0;
+    scanlineCases += f->scanlineSame ? 1 : 0;
+    scanlineEqual += f->scanlineSame.value_or(false) ? 1 : 0;
+    const DiffThresholds thresholds = thresholdsOf(c);
+    const ComparedFiles pair = compareFiles(c.name, (fs::path(folders.out) / "cpu" / (c.name + ".png")).string(),
+                                            (fs::path(folders.out) / "gl" / (c.name + ".png")).string(), thresholds);
+    if (const std::optional<DiffResult>& d = pair.diffCase.result) {
+      identical += d->differingPixels == 0 ? 1 : 0;
+      if (d->maxDifference > worst.maxDifference || (worstName == "-" && d->differingPixels > 0)) {
+        worstName = c.name;
+        worst = *d;
+      }
+    }
+    report.push_back(reportFolder.writeImages(static_cast<int>(report.size()), pair, thresholds));
+  }
+  ReportContext reportContext;
+  reportContext.expectedSource = "CPU (" + cpuDescription + ")";
+  reportContext.actualSource = "OpenGL (" + glDescription + ")";
+  reportContext.thresholds = backendAgreement();
+  const std::string page = reportFolder.finish(report, reportContext);
+
+  std::printf("\ncases: %d; bit-identical: %d of %d; same triangle at every pixel: %d of %d\n", run, identical, run, coverageIdentical, run);
+  if (!notRun.empty())
+    std::printf("not run: %zu of %zu cases left no figures (their entries did not run, or ended early), the first %s\n", notRun.size(),
+                cases.size(), notRun.front().c_str());
+  std::printf("depth complexity: the same fragment count at every pixel in %d of %d cases\n", countsEqual, run);
+  std::printf("scanline z-buffer (CPU) against the z-buffer: the same triangle and bytes at every pixel in %d of %d cases\n", scanlineEqual,
+              scanlineCases);
+  if (worst.differingPixels == 0) {
+    std::printf("worst pixel: none differs (max difference 0 levels in every case)\n");
+  } else {
+    std::printf("worst pixel: %d levels at (%d, %d) in %s (%s pixels differ there, RMSE %.3f, PSNR %s dB)\n", worst.maxDifference, worst.worst.x,
+                worst.height - 1 - worst.worst.y, worstName.c_str(), formatPixels(worst.differingPixels).c_str(), worst.rmse,
+                formatNumber(worst.psnr).c_str());
+  }
+  std::printf("report: %s\n", page.c_str());
+  std::printf("%d passed, %d failed\n", passed, failed);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"facet agreement suite: OpenGL (llvmpipe) against the CPU reference, and both against the goldens"};
-  std::string casesDir, goldenDir, outDir, assetsDir = FACET_ASSETS, context = "osmesa";
-  bool update = false;
+  std::string casesDir, only, context = "osmesa";
+  Folders folders;
+  folders.assets = FACET_ASSETS;
+  bool summaryOnly = false;
   app.add_option("--cases", casesDir, "folder of case JSON files")->required();
-  app.add_option("--golden", goldenDir, "folder of golden PNGs (CPU renders)")->required();
-  app.add_option("--out", outDir, "folder for renders and the HTML report")->required();
-  app.add_option("--assets", assetsDir, "the folder assets: scenes are read from");
+  app.add_option("--case", only, "run this case alone (CASES/NAME.json) and leave its figures for --summary");
+  app.add_flag("--summary", summaryOnly, "render nothing: the table, totals and report from the figures the cases left in --out");
+  app.add_option("--golden", folders.golden, "folder of golden PNGs (CPU renders)")->required();
+  app.add_option("--out", folders.out, "folder for renders and the HTML report")->required();
+  app.add_option("--assets", folders.assets, "the folder assets: scenes are read from");
   app.add_option("--context", context, "osmesa or egl")->check(CLI::IsMember({"osmesa", "egl"}));
-  app.add_flag("--update-goldens", update, "write the CPU renders as the new goldens instead of comparing with them");
+  app.add_flag("--update-goldens", folders.update, "write the CPU renders as the new goldens instead of comparing with them");
   CLI11_PARSE(app, argc, argv);
 
   try {
     std::vector<fs::path> files;
-    for (const auto& entry : fs::directory_iterator(casesDir))
-      if (entry.path().extension() == ".json") files.push_back(entry.path());
-    std::sort(files.begin(), files.end());
-    if (files.empty()) throw Error(casesDir + ": no case files");
+    if (!only.empty()) {
+      files.push_back(fs::path(casesDir) / (only + ".json"));
+      if (!fs::exists(files.back())) throw Error(files.back().string() + ": no such case");
+    } else {
+      for (const auto& entry : fs::directory_iterator(casesDir))
+        if (entry.path().extension() == ".json") files.push_back(entry.path());
+      std::sort(files.begin(), files.end());
+      if (files.empty()) throw Error(casesDir + ": no case files");
+    }
     std::vector<Case> cases;
     for (const fs::path& file : files) cases.push_back(readCase(file));  // every case file is checked before anything renders
-    fs::create_directories(fs::path(outDir) / "gl");
-    fs::create_directories(fs::path(outDir) / "cpu");
-    fs::create_directories(goldenDir);
+    if (summaryOnly) {
+      summarize(cases, folders, true);
+      return 0;
+    }
+    for (const char* folder : {"gl", "cpu", "figures"}) fs::create_directories(fs::path(folders.out) / folder);
+    fs::create_directories(folders.golden);
 
     auto gl = makeGlRenderer(context == "egl" ? GlContextKind::Egl : GlContextKind::OsMesa);
     auto cpu = makeCpuRenderer(0);
-    const LineEndTest lineEnds = lineEndTestOf(gl->description());  // the CPU's segment ends follow this llvmpipe's
-    std::printf("OpenGL: %s\nCPU:    %s\n\n", gl->description().c_str(), cpu->description().c_str());
-    std::printf("%-34s %9s %9s %9s %5s %7s %8s %9s  %s\n", "case", "size", "triangle", "differing", "max", "golden", "scanline", "ms gl/cpu",
-                "verdict");
-
-    int passed = 0, failed = 0, identical = 0, coverageIdentical = 0, scanlineCases = 0, scanlineEqual = 0, countsEqual = 0;
-    std::string worstName = "-";
-    DiffResult worst;
-    std::vector<ReportCase> report;
-    ReportFolder reportFolder((fs::path(outDir) / "report").string());
+    printHeader(gl->description(), cpu->description());
+    int failed = 0;
     for (Case& c : cases) {
-      PreparedFrame prepared = frameOf(c, assetsDir);
-      prepared.inputs.lineEnds = lineEnds;  // the CPU's segment ends as this llvmpipe draws them
-      const Scene& scene = *prepared.scene;
-      const FrameInputs& frame = prepared.inputs;
-      const DiffThresholds thresholds = thresholdsOf(c);
-      const auto glStart = std::chrono::steady_clock::now();
-      const Image glImage = renderStage(*gl, scene, frame, c.stage).image;
-      const double msGl = millisecondsSince(glStart);
-      const auto cpuStart = std::chrono::steady_clock::now();
-      const Image cpuImage = renderStage(*cpu, scene, frame, c.stage).image;
-      const double msCpu = millisecondsSince(cpuStart);
-      long covered = 0;
-      const long mismatches = triangleMismatches(trianglesOf(*gl, scene, frame), trianglesOf(*cpu, scene, frame), covered);
-      const long dataMismatches = stageDataMismatches(c.stage, *gl, *cpu, scene, frame);
-      if (covered == 0) {  // lines, points and blended surfaces keep no triangle: what they drew is what differs from the frame without them
-        FrameInputs empty = frame;
-        empty.instances.clear();
-        empty.paintersOrder.clear();
-        empty.transparentOrder.clear();
-        const Image background = cpu->render(scene, empty).image;
-        for (int y = 0; y < cpuImage.height(); ++y)
-          for (int x = 0; x < cpuImage.width(); ++x) {
-            const Rgba8 a = cpuImage.at(x, y), b = background.at(x, y);
-            covered += a.r != b.r || a.g != b.g || a.b != b.b;
-          }
-      }
-      const std::string glPath = (fs::path(outDir) / "gl" / (c.name + ".png")).string();
-      const std::string cpuPath = (fs::path(outDir) / "cpu" / (c.name + ".png")).string();
-      writePng(glPath, glImage);
-      writePng(cpuPath, cpuImage);
-      const DiffResult d = compareImages(cpuImage, glImage, thresholds);
-
-      // Goldens: the CPU render is the reference image of the case; both backends must equal it.
-      const std::string goldenPath = (fs::path(goldenDir) / (c.name + ".png")).string();
-      std::string goldenVerdict = "-";
-      bool goldenOk = true;
-      if (update) {
-        writePng(goldenPath, cpuImage);
-        goldenVerdict = "written";
-      } else {
-        const ComparedFiles cpuVsGolden = compareFiles(c.name, goldenPath, cpuPath, backendAgreement());
-        const ComparedFiles glVsGolden = compareFiles(c.name, goldenPath, glPath, thresholds);
-        goldenOk = passes(cpuVsGolden) && (passes(glVsGolden) || (c.allow && glVsGolden.diffCase.verdict == Verdict::Warn));
-        goldenVerdict = goldenOk ? "ok" : (cpuVsGolden.diffCase.problem.empty() ? "DIFFERS" : "MISSING");
-      }
-
-      // The scanline z-buffer (CPU) keeps what the z-buffer keeps: the same triangle and the same bytes at every pixel.
-      std::string scanline = "-";
-      bool scanlineOk = true;
-      if (c.settings.hsr == HiddenSurface::ZBuffer) {
-        RenderSettings rows = c.settings;
-        rows.hsr = HiddenSurface::Scanline;
-        const FrameInputs rowFrame = buildFrameInputs(scene, rows);
-        const Image rowImage = renderStage(*cpu, scene, rowFrame, c.stage).image;
-        long unused = 0;
-        long differing = triangleMismatches(trianglesOf(*cpu, scene, rowFrame), trianglesOf(*cpu, scene, frame), unused);
-        if (rowImage.width() != cpuImage.width() || rowImage.height() != cpuImage.height()) differing += 1;
-        else
-          for (int y = 0; y < cpuImage.height(); ++y)
-            for (int x = 0; x < cpuImage.width(); ++x) differing += !(rowImage.at(x, y) == cpuImage.at(x, y));
-        scanlineOk = differing == 0;
-        scanline = scanlineOk ? "same" : std::to_string(differing);
-        ++scanlineCases;
-        scanlineEqual += scanlineOk ? 1 : 0;
-      }
-
-      // The depth complexity: the same fragment count at every pixel.
-      long countMismatches = 0;
-      {
-        const auto glCounts = *gl->render(scene, frame, {FrameOutput::FragmentCounts}).fragmentCounts;
-        const auto cpuCounts = *cpu->render(scene, frame, {FrameOutput::FragmentCounts}).fragmentCounts;
-        for (std::size_t i = 0; i < glCounts.size(); ++i) countMismatches += glCounts[i] != cpuCounts[i];
-        countsEqual += countMismatches == 0 ? 1 : 0;
-      }
-
-      const bool ok =
-          mismatches == 0 && covered > 0 && d.status != DiffStatus::Fail && goldenOk && scanlineOk && countMismatches == 0 && dataMismatches == 0;
-      (ok ? passed : failed) += 1;
-      identical += d.differingPixels == 0 ? 1 : 0;
-      coverageIdentical += mismatches == 0 ? 1 : 0;
-      if (d.maxDifference > worst.maxDifference || (worstName == "-" && d.differingPixels > 0)) {
-        worstName = c.name;
-        worst = d;
-      }
-      const std::string size = std::to_string(cpuImage.width()) + "x" + std::to_string(cpuImage.height());
-      std::printf("%-34s %9s %9ld %9lld %5d %7s %8s %4.0f/%-4.0f %s%s\n", c.name.c_str(), size.c_str(), mismatches,
-                  static_cast<long long>(d.differingPixels), d.maxDifference, goldenVerdict.c_str(), scanline.c_str(), msGl, msCpu, ok ? "pass" : "FAIL",
-                  covered == 0 ? " (nothing drawn)"
-                  : countMismatches ? (" (fragment counts differ at " + std::to_string(countMismatches) + " pixels)").c_str()
-                  : dataMismatches  ? (" (" + stageName(c.stage) + ": " + std::to_string(dataMismatches) + " values differ in their bits)").c_str()
-                  : c.stage.kind == StageKind::Depth || c.stage.kind == StageKind::ShadowMap || c.stage.kind == StageKind::Normals
-                      ? (" (stage " + stageName(c.stage) + ", its data bit for bit)").c_str()
-                  : c.stage.kind != StageKind::Image ? (" (stage " + stageName(c.stage) + ")").c_str()
-                                    : (c.allow ? " (allowed: " + c.allow->reason + ")" : std::string()).c_str());
-
-      const ComparedFiles pair = compareFiles(c.name, cpuPath, glPath, thresholds);
-      report.push_back(reportFolder.writeImages(static_cast<int>(report.size()), pair, thresholds));
+      const Figures f = runCase(c, *gl, *cpu, folders);
+      std::printf("%s\n", f.row.c_str());
+      std::fflush(stdout);
+      failed += f.pass ? 0 : 1;
     }
-    ReportContext reportContext;
-    reportContext.expectedSource = "CPU (" + cpu->description() + ")";
-    reportContext.actualSource = "OpenGL (" + gl->description() + ")";
-    reportContext.thresholds = backendAgreement();
-    const std::string page = reportFolder.finish(report, reportContext);
-
-    std::printf("\ncases: %zu; bit-identical: %d of %zu; same triangle at every pixel: %d of %zu\n", cases.size(), identical, cases.size(),
-                coverageIdentical, cases.size());
-    std::printf("depth complexity: the same fragment count at every pixel in %d of %zu cases\n", countsEqual, cases.size());
-    std::printf("scanline z-buffer (CPU) against the z-buffer: the same triangle and bytes at every pixel in %d of %d cases\n", scanlineEqual,
-                scanlineCases);
-    if (worst.differingPixels == 0) {
-      std::printf("worst pixel: none differs (max difference 0 levels in every case)\n");
-    } else {
-      std::printf("worst pixel: %d levels at (%d, %d) in %s (%s pixels differ there, RMSE %.3f, PSNR %s dB)\n", worst.maxDifference,
-                  worst.worst.x, worst.height - 1 - worst.worst.y, worstName.c_str(), formatPixels(worst.differingPixels).c_str(), worst.rmse,
-                  formatNumber(worst.psnr).c_str());
-    }
-    std::printf("report: %s\n", page.c_str());
-    std::printf("%d passed, %d failed\n", passed, failed);
+    if (only.empty()) summarize(cases, folders, false);
     return failed == 0 ? 0 : 1;
   } catch (const Error& e) {
     std::fprintf(stderr, "facet_agreement: %s\n", e.what());

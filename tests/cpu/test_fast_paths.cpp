@@ -8,10 +8,12 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <initializer_list>
 #include <iterator>
 #include <limits>
 #include <random>
 #include <set>
+#include <string>
 #include <utility>
 #include <deque>
 #include <vector>
@@ -34,10 +36,23 @@
 #include "pipeline/light_frustum.h"
 #include "scene/default_scene.h"
 #include "math/transforms.h"
+#include "../skipped.h"
 
 using namespace facet;
 
 namespace {
+
+// The lane widths of `wanted` this CPU runs (lane_width.h). Each one it
+// lacks is reported as skipped: its code is built, and a host without
+// AVX2 or AVX-512 must not show its checks as passed.
+std::vector<int> lanesHere(std::initializer_list<int> wanted) {
+  std::vector<int> here;
+  for (const int lanes : wanted) {
+    if (lanes <= widestLanes()) here.push_back(lanes);
+    else test::skipped(std::to_string(lanes) + " lanes: this CPU runs at most " + std::to_string(widestLanes()));
+  }
+  return here;
+}
 
 unsigned formula(float linear) { return levelBySearch(linear); }
 
@@ -156,10 +171,7 @@ long resolveMismatches(const std::vector<glm::vec4>& in, Blending holding, int s
 }  // namespace
 
 TEST_CASE("Resolve: sixteen lanes give the one-pixel rule's bytes near every threshold, across [0, 1], out of range, both holdings, 1 to 4096 samples") {
-  if (widestLanes() < 16) {
-    MESSAGE("this CPU runs " << widestLanes() << " lanes: the sixteen-lane resolve is not built or not run here");
-    return;
-  }
+  if (lanesHere({16}).empty()) return;
   const SrgbTables& t = srgbTables();
   std::vector<float> channels;
   for (int k = 1; k < 256; ++k)  // 40 floats either side of every threshold
@@ -196,7 +208,7 @@ TEST_CASE("Resolve: sixteen lanes give the one-pixel rule's bytes near every thr
 
 #if !defined(__SANITIZE_ADDRESS__)
 TEST_CASE("Resolve: sixteen lanes give every float of [0, 1] the level its thresholds give") {
-  if (widestLanes() < 16) return;
+  if (lanesHere({16}).empty()) return;
   const SrgbTables& t = srgbTables();
   constexpr std::size_t kChunk = 1 << 14;
   std::vector<glm::vec4> in(kChunk);
@@ -252,10 +264,7 @@ TEST_CASE("CPU renderer: the image does not depend on the thread count, nor on t
 
 TEST_CASE("Phong batch: four, eight and sixteen lanes at a time, and twice eight or sixteen, give the bits of illuminate<float>, shade and the sRGB encode, per pixel") {
   INFO("this CPU runs " << widestLanes() << " lanes");
-  std::vector<int> widths{1, 4};
-  for (int wide : {8, 16})
-    if (widestLanes() >= wide) widths.push_back(wide);
-  for (int lanes : widths) {
+  for (int lanes : lanesHere({1, 4, 8, 16})) {
     const Scene scene = makeDefaultScene();
     std::mt19937 random(12345);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f), coordinate(-3.0f, 3.0f);
@@ -342,9 +351,7 @@ TEST_CASE("Phong batch: blended at every width, pixels scattered, gives blend's 
   ShadowMaps maps;
   maps.reset(frame.shadows.mapSize, frame.shadowLayerCount);
   std::fill(maps.depth.begin(), maps.depth.end(), 1.0f);
-  std::vector<int> widths{1, 4};
-  for (int wide : {8, 16})
-    if (widestLanes() >= wide) widths.push_back(wide);
+  const std::vector<int> widths = lanesHere({1, 4, 8, 16});
   std::mt19937 random(4242);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f), coordinate(-3.0f, 3.0f), outOfRange(-0.5f, 1.5f);
   // Runs flushed at 37, 50 and 13 pixels, so that each width meets full and short batches; the pixels
@@ -415,8 +422,7 @@ TEST_CASE("Phong batch: a run of a triangle's pixels queued at once gives the bi
   material.ka = 0.2f, material.kd = 0.7f, material.ks = 0.5f, material.shininess = 37.0f, material.emissive = {0.01f, 0.02f, 0.03f};
   const glm::vec3 baseColor{0.8f, 0.4f, 0.2f};
   constexpr int kWidth = 160, kRows = 8;  // a row holds runs of 1 to 16 (136 pixels)
-  for (const int lanes : {1, 4, 8, 16}) {
-    if (lanes > widestLanes()) continue;
+  for (const int lanes : lanesHere({1, 4, 8, 16})) {
     for (const bool blended : {false, true}) {
       CAPTURE(lanes);
       CAPTURE(blended);
@@ -507,8 +513,7 @@ TEST_CASE("Phong batch: a width this CPU or build does not run is refused") {
 }
 
 TEST_CASE("Depth rows: lessRow's four- and sixteen-lane tests write the depths and ids the one-pixel test writes") {
-  for (const int lanes : {4, 16}) {
-    if (lanes > widestLanes()) continue;
+  for (const int lanes : lanesHere({4, 16})) {
     CAPTURE(lanes);
     std::mt19937 random(31);
     std::uniform_real_distribution<float> unit(-0.2f, 1.2f), slope(-0.01f, 0.01f);
@@ -557,8 +562,7 @@ TEST_CASE("Depth rows: lessCovered writes the depths and ids the one-pixel test 
 }
 
 TEST_CASE("Depth rows: frontRow's four- and sixteen-lane tests take the pixels the one-pixel test takes, and report the first and last") {
-  for (const int lanes : {4, 16}) {
-    if (lanes > widestLanes()) continue;
+  for (const int lanes : lanesHere({4, 16})) {
     CAPTURE(lanes);
     std::mt19937 random(37);
     std::uniform_real_distribution<float> unit(-0.2f, 1.2f), slope(-0.01f, 0.01f);

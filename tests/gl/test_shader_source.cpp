@@ -69,45 +69,98 @@ std::vector<int> pairwiseVariants() {
   return variants;
 }
 
+// The lights the lit programs are specialized for: none; the default point
+// light with its shadow maps; three kinds, the first without a map, Phong
+// specular, PCF radius 0.
+enum class Lights { None, Default, ThreeKinds };
+
+RenderSettings settingsWith(Lights lights) {
+  RenderSettings settings;
+  if (lights == Lights::None) {
+    settings.lightSource = Source::Manual;
+    settings.lights.clear();
+  } else if (lights == Lights::ThreeKinds) {
+    settings.lightSource = Source::Manual;
+    settings.specular = SpecularModel::Phong;
+    settings.shadows.pcfRadius = 0;
+    for (LightKind kind : {LightKind::Directional, LightKind::Spot, LightKind::Point}) {
+      Light light;
+      light.kind = kind;
+      light.position = {1.0f, 5.0f, 2.0f};
+      light.direction = glm::normalize(glm::vec3(-1.0f, -5.0f, -2.0f));
+      light.castsShadow = kind != LightKind::Directional;
+      settings.lights.push_back(light);
+    }
+  }
+  return settings;
+}
+
+// lit_MODE with `lights`: a fourth of the pairwise variants, every fourth
+// one from `quarter` on. A quarter per test case, so that ctest compiles
+// them in parallel and none takes long: llvmpipe takes 0.1 s (flat) to
+// 0.4 s (Phong, every map on) a program with a cold shader cache, and the
+// nine families hold 828 programs.
+constexpr int kQuarters = 4;
+void checkLitPrograms(ShadingMode mode, Lights lights, int quarter) {
+  test::GlHarness harness;
+  const FrameInputs frame = buildFrameInputs(makeDefaultScene(), settingsWith(lights));
+  const std::string name(kShadingModeNames[static_cast<std::size_t>(mode)]);
+  const std::vector<int> variants = pairwiseVariants();
+  for (std::size_t i = static_cast<std::size_t>(quarter); i < variants.size(); i += kQuarters) {
+    const std::string defines = litShaderDefines(frame, DrawVariant::of(variants[i]));
+    INFO(name, "\n", defines);
+    CHECK_NOTHROW(buildProgram(harness.gl, {"lit_" + name + ".vert", "lit_" + name + ".frag"}, defines));
+  }
+}
+
 }  // namespace
 
-TEST_CASE("every shader file is embedded, and every program of the backend compiles and links, every pair of specializations") {
+TEST_CASE("every shader file is embedded") {
   for (const char* name : {"frame_block.glsl", "transform.glsl", "shading_math.glsl", "lighting.glsl", "srgb.glsl", "texture.glsl", "draw_uniforms.glsl"})
     CHECK_MESSAGE(findEmbeddedShaderFile(name).has_value(), name);
+}
+
+// The lit programs of one shading mode and set of lights, every pair of specializations, in four test cases.
+#define FACET_LIT_PROGRAMS(mode, lights, family)                                                                                                      \
+  TEST_CASE("every lit program compiles and links, every pair of specializations: " family ", quarter 1") { checkLitPrograms(mode, lights, 0); } \
+  TEST_CASE("every lit program compiles and links, every pair of specializations: " family ", quarter 2") { checkLitPrograms(mode, lights, 1); } \
+  TEST_CASE("every lit program compiles and links, every pair of specializations: " family ", quarter 3") { checkLitPrograms(mode, lights, 2); } \
+  TEST_CASE("every lit program compiles and links, every pair of specializations: " family ", quarter 4") { checkLitPrograms(mode, lights, 3); }
+static_assert(kQuarters == 4, "FACET_LIT_PROGRAMS declares a test case per quarter");
+FACET_LIT_PROGRAMS(ShadingMode::Flat, Lights::None, "flat, no light")
+FACET_LIT_PROGRAMS(ShadingMode::Flat, Lights::Default, "flat, the default light")
+FACET_LIT_PROGRAMS(ShadingMode::Flat, Lights::ThreeKinds, "flat, three kinds of light")
+FACET_LIT_PROGRAMS(ShadingMode::Gouraud, Lights::None, "gouraud, no light")
+FACET_LIT_PROGRAMS(ShadingMode::Gouraud, Lights::Default, "gouraud, the default light")
+FACET_LIT_PROGRAMS(ShadingMode::Gouraud, Lights::ThreeKinds, "gouraud, three kinds of light")
+FACET_LIT_PROGRAMS(ShadingMode::Phong, Lights::None, "phong, no light")
+FACET_LIT_PROGRAMS(ShadingMode::Phong, Lights::Default, "phong, the default light")
+FACET_LIT_PROGRAMS(ShadingMode::Phong, Lights::ThreeKinds, "phong, three kinds of light")
+#undef FACET_LIT_PROGRAMS
+
+// The shadow pass and the triangle-id pass, each its own family.
+TEST_CASE("every shadow-depth program compiles and links, every pair of specializations") {
   test::GlHarness harness;
-  const Scene scene = makeDefaultScene();
-  // No light; the default point light with its shadow maps; three kinds, the
-  // first without a map, Phong specular, PCF radius 0.
-  std::vector<RenderSettings> lightSets(3);
-  lightSets[0].lightSource = Source::Manual;
-  lightSets[0].lights.clear();
-  lightSets[2].lightSource = Source::Manual;
-  lightSets[2].specular = SpecularModel::Phong;
-  lightSets[2].shadows.pcfRadius = 0;
-  for (LightKind kind : {LightKind::Directional, LightKind::Spot, LightKind::Point}) {
-    Light light;
-    light.kind = kind;
-    light.position = {1.0f, 5.0f, 2.0f};
-    light.direction = glm::normalize(glm::vec3(-1.0f, -5.0f, -2.0f));
-    light.castsShadow = kind != LightKind::Directional;
-    lightSets[2].lights.push_back(light);
-  }
-  for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong})
-    for (const RenderSettings& settings : lightSets)
-      for (const int variant : pairwiseVariants()) {
-        const std::string name(kShadingModeNames[static_cast<std::size_t>(mode)]);
-        const std::string defines = litShaderDefines(buildFrameInputs(scene, settings), DrawVariant::of(variant));
-        INFO(name, "\n", defines);
-        CHECK_NOTHROW(buildProgram(harness.gl, {"lit_" + name + ".vert", "lit_" + name + ".frag"}, defines));
-      }
   for (const int variant : pairwiseVariants()) {
     const std::string defines = drawVariantDefines(DrawVariant::of(variant));
     INFO(defines);
     CHECK_NOTHROW(buildProgram(harness.gl, {"shadow_depth.vert", "shadow_depth.frag"}, defines));
+  }
+}
+
+TEST_CASE("every triangle-id program compiles and links, every pair of specializations") {
+  test::GlHarness harness;
+  for (const int variant : pairwiseVariants()) {
+    const std::string defines = drawVariantDefines(DrawVariant::of(variant));
+    INFO(defines);
     CHECK_NOTHROW(buildProgram(harness.gl, {"triangle_id.vert", "triangle_id.frag"}, defines));
   }
+}
+
+TEST_CASE("the background program compiles and links, and each fog mode in the lit programs (every texture and map on) and the line program") {
+  test::GlHarness harness;
+  const Scene scene = makeDefaultScene();
   CHECK_NOTHROW(buildProgram(harness.gl, {"viewport_triangle.vert", "background.frag"}));
-  // Each fog mode, in the lit programs (every texture and map on) and the line program.
   for (FogMode fog : {FogMode::None, FogMode::Linear, FogMode::Exponential, FogMode::Exponential2}) {
     RenderSettings settings;
     settings.fog.mode = fog;
