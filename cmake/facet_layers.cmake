@@ -6,6 +6,7 @@
 # layers below), so a back arrow fails the build, not a review.
 set(FACET_LAYER_CHECK ${CMAKE_CURRENT_LIST_DIR}/check_layer_includes.cmake)
 set_property(GLOBAL PROPERTY FACET_LAYERS "")
+set_property(GLOBAL PROPERTY FACET_LAYERS_NOT_BUILT "")
 
 # facet_layer(FOLDER [DEPENDS lower folders...] [SOURCES files...])
 # Declares the library facet_FOLDER over renderer/FOLDER (STATIC with
@@ -71,9 +72,17 @@ function(facet_renderer_folders out)
   set(${out} ${folders} PARENT_SCOPE)
 endfunction()
 
+# facet_layer_not_built(FOLDER): a layer this configuration leaves out
+# (gl with FACET_BUILD_GL=OFF); facet_layers_done accepts its folder.
+function(facet_layer_not_built folder)
+  set_property(GLOBAL APPEND PROPERTY FACET_LAYERS_NOT_BUILT ${folder})
+endfunction()
+
 # After the last facet_layer(): a folder of renderer/ that is not a layer is refused.
 function(facet_layers_done)
-  get_property(layers GLOBAL PROPERTY FACET_LAYERS)
+  get_property(built GLOBAL PROPERTY FACET_LAYERS)
+  get_property(not_built GLOBAL PROPERTY FACET_LAYERS_NOT_BUILT)
+  set(layers ${built} ${not_built})
   facet_renderer_folders(folders)
   foreach(folder IN LISTS folders)
     if(NOT folder IN_LIST layers)
