@@ -95,6 +95,14 @@ inline constexpr std::size_t kMaxTracedPrimitives = (std::size_t{1} << 31) - 1;
 inline constexpr std::size_t kMaxEmitters = 16;
 inline constexpr std::uint64_t kMaxParticles = 4'000'000;  // alive at once, over every emitter of a frame
 inline constexpr double kMaxStepsPerParticle = 1e7;        // lifetime / step: a particle's cost is bounded
+// A volume's box, (samples - 1)·spacing along each axis in the file's units:
+// past this its corners, squared in ray and camera arithmetic, leave float's
+// range (1e9² is 1e18, far below 3.4e38).
+inline constexpr double kMaxVolumeExtent = 1e9;
+// The largest spacing over the smallest: the ray caster steps by a share of
+// the smallest, so a ray along the widest axis takes this many times more
+// steps than the samples it crosses (real scans stay under 20).
+inline constexpr double kMaxVolumeSpacingRatio = 1000.0;
 inline constexpr int kMinMarschnerLobbResolution = 2;      // builtin:marschner-lobb's samples along each axis
 inline constexpr int kMaxMarschnerLobbResolution = 512;
 // teem grows its line buffer to fit any line, and a header has no length

@@ -176,6 +176,7 @@ Volume readNifti(const std::string& path) {
       image->datatype != header.datatype || static_cast<std::size_t>(image->nbyper) != type.bytes)
     throw Error(shown + ": niftiio reads its header differently");
   for (int a = 0; a < 3; ++a) volume.spacing[a] = image->pixdim[a + 1];
+  requireBoundedBox(volume, shown);
 
   // The samples through znzlib (niftiio's file layer) in chunks: unlike
   // nifti_image_load, this tells a gzip error from a complete read.

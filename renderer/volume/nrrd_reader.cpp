@@ -162,6 +162,11 @@ void checkHeaderText(const std::string& path, const std::string& shown) {
     if (value == "-") throw Error(shown + ": data file '-' (standard input) is not read");
     if (value.rfind("LIST", 0) == 0 || value.find_first_of(" \t") != std::string_view::npos)
       throw Error(shown + ": samples split over several data files are not supported (one data file)");
+    // teem opens it with a blocking read: a FIFO there would wait forever.
+    // A relative name is relative to the header's folder, as teem reads it.
+    const std::filesystem::path data(value);
+    const std::filesystem::path dataPath = data.is_absolute() ? data : std::filesystem::path(path).parent_path() / data;
+    requireRegularFile(dataPath.string(), shown + ": its data file " + shownPath(std::string(value)));
   }
   if (!ended && head.size() > kMaxNrrdHeaderBytes) throw Error(shown + ": header longer than " + byteCount(kMaxNrrdHeaderBytes));
 }
@@ -271,6 +276,7 @@ Volume readNrrd(const std::string& path) {
       throw Error(shown + ": spacing along " + kAxisNames[a] + " is " + shownNumber(spacing) + ", not a positive number");
     volume.spacing[a] = static_cast<float>(spacing);
   }
+  requireBoundedBox(volume, shown);
   const std::string samples = dims + " " + type.name + " samples";
 
   // Priced before anything is allocated: the floats kept and the file's samples read first.

@@ -13,6 +13,7 @@
 
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "vocabulary/limits.h"
 
 namespace facet {
 namespace {
@@ -59,6 +60,20 @@ void requireRegularFile(const std::string& path, const std::string& shown) {
   if (ec && ec.value() != ENOENT && ec.value() != ENOTDIR) throw Error(shown + ": " + describeErrno(ec.value()));
   if (ec || !fs::exists(status)) throw Error(shown + ": no such file");
   if (!fs::is_regular_file(status)) throw Error(shown + ": not a regular file");
+}
+
+void requireBoundedBox(const Volume& volume, const std::string& shown) {
+  for (int a = 0; a < 3; ++a) {
+    const double extent = static_cast<double>(volume.size[a] - 1) * static_cast<double>(volume.spacing[a]);
+    if (!(extent <= kMaxVolumeExtent))
+      throw Error(shown + ": " + std::to_string(volume.size[a]) + " samples " + shownNumber(volume.spacing[a]) + " apart along " + kAxisNames[a] +
+                  " span " + shownNumber(extent) + ", more than facet's limit of " + shownNumber(kMaxVolumeExtent));
+  }
+  const double smallest = std::min({volume.spacing.x, volume.spacing.y, volume.spacing.z});
+  const double largest = std::max({volume.spacing.x, volume.spacing.y, volume.spacing.z});
+  if (!(largest <= smallest * kMaxVolumeSpacingRatio))
+    throw Error(shown + ": spacings " + shownNumber(volume.spacing.x) + ", " + shownNumber(volume.spacing.y) + " and " + shownNumber(volume.spacing.z) +
+                ": the largest is more than " + shownNumber(kMaxVolumeSpacingRatio) + " times the smallest, facet's limit");
 }
 
 std::string shownNumber(double value) {

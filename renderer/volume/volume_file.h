@@ -6,11 +6,19 @@
 #include <string>
 #include <vector>
 
+#include "scene/volume.h"
+
 namespace facet {
 
 // Throws facet::Error "<shown>: no such file" or "not a regular file" (or
 // the system's reason), before a reader hands `path` to its library.
 void requireRegularFile(const std::string& path, const std::string& shown);
+
+// Throws facet::Error "<shown>: ..." when the volume's box along an axis,
+// (samples - 1)·spacing, is past kMaxVolumeExtent, or its largest spacing
+// is more than kMaxVolumeSpacingRatio times its smallest. Both readers call
+// it once the sizes and spacings are known, before reading samples.
+void requireBoundedBox(const Volume& volume, const std::string& shown);
 
 // A number as a message shows it: "-2", "0.5", "inf".
 std::string shownNumber(double value);

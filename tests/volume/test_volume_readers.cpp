@@ -1,5 +1,6 @@
 // Volume data: NRRD and NIfTI-1 files written here, nibabel's MRI, the
 // Marschner-Lobb signal, trilinear interpolation and gradients.
+#include <sys/stat.h>
 #include <algorithm>
 #include <atomic>
 #include <bit>
@@ -329,6 +330,15 @@ TEST_CASE("NRRD reader: broken files are refused with one line naming the file")
   SUBCASE("missing detached data file") {
     checkNrrdError(dir, "lost.nhdr", nrrdHeader("int16", "4 4 4", "encoding: raw\nendian: little\ndata file: lost.raw\n"), "lost.raw");
   }
+  SUBCASE("a detached data file that is a FIFO is refused before it is opened, not waited on") {
+    const fs::path fifo = dir / "pipe.raw";
+    fs::remove(fifo);
+    REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+    checkNrrdError(dir, "pipe.nhdr", nrrdHeader("int16", "4 4 4", "encoding: raw\nendian: little\ndata file: pipe.raw\n"),
+                   "its data file pipe.raw: not a regular file");
+    checkNrrdError(dir, "absolute.nhdr", nrrdHeader("int16", "4 4 4", "encoding: raw\nendian: little\ndata file: " + fifo.string() + "\n"),
+                   "pipe.raw: not a regular file");
+  }
   SUBCASE("truncated gzip and ascii data") {
     const std::string gz = gzipStored(ramp16);
     checkNrrdError(dir, "short-gz.nrrd", nrrdHeader("int16", "4 4 4", "encoding: gzip\nendian: little\n") + "\n" + gz.substr(0, 60),
@@ -360,6 +370,17 @@ TEST_CASE("NRRD reader: broken files are refused with one line naming the file")
     checkNrrdError(dir, "infinite.nrrd", nrrdHeader("uchar", "2 2 2", "spacings: inf 1 1\nencoding: raw\n") + "\n" + std::string(8, '\0'),
                    "spacings");
   }
+  SUBCASE("a box past facet's extent, or spacings too unequal for the ray caster's step") {
+    const std::string samples = "\n" + std::string(8, '\0');
+    const auto spaced = [&](const std::string& spacings) { return nrrdHeader("uchar", "2 2 2", "spacings: " + spacings + "\nencoding: raw\n") + samples; };
+    checkNrrdError(dir, "wide.nrrd", spaced("1e38 1e38 1e38"), "2 samples 1e+38 apart along x span 1e+38, more than facet's limit of 1e+09");
+    checkNrrdError(dir, "uneven.nrrd", spaced("1 1000.5 1"), "spacings 1, 1000.5 and 1: the largest is more than 1000 times the smallest");
+    const fs::path edge = dir / "edge.nrrd";
+    writeFile(edge, spaced("1 1000 1"));
+    CHECK(readNrrd(edge.string()).spacing.y == 1000.0f);  // at the limit, read
+    writeFile(edge, spaced("1e9 1e9 1e9"));
+    CHECK(readNrrd(edge.string()).extent().x == 1e9f);
+  }
   SUBCASE("headers teem or facet cannot use") {
     checkNrrdError(dir, "sizes.nrrd", nrrdHeader("uchar", "2 2 x") + "\n" + std::string(8, '\0'), "sizes");
     checkNrrdError(dir, "type.nrrd", nrrdHeader("shrt", "2 2 2") + "\n" + std::string(16, '\0'), "type");
@@ -371,7 +392,7 @@ TEST_CASE("NRRD reader: broken files are refused with one line naming the file")
                    "several data files");
     checkNrrdError(dir, "long.nrrd", "NRRD0004\n# " + std::string(2u << 20, 'x') + "\n", "header longer than 1 MiB");
     writeFile(dir / "zero.nhdr", nrrdHeader("uchar", "2 2 2", "encoding: raw\ndata file: /dev/zero\n"));
-    checkError(errorOf([&] { readNrrd((dir / "zero.nhdr").string()); }), "zero.nhdr", "is not a regular file");
+    checkError(errorOf([&] { readNrrd((dir / "zero.nhdr").string()); }), "zero.nhdr", "its data file /dev/zero: not a regular file");
   }
   SUBCASE("more samples than the scene budget") {
     checkNrrdError(dir, "huge.nrrd", nrrdHeader("float", "2048 2048 2048") + "\n" + std::string(8, '\0'),
@@ -515,6 +536,14 @@ TEST_CASE("NIfTI reader: broken files are refused with one line naming the file"
     h = good;
     h.pixdim[3] = std::numeric_limits<float>::quiet_NaN();
     checkNiftiError(dir, "nan.nii", niftiFile(h, ramp), "spacing along z (pixdim[3]) is nan");
+  }
+  SUBCASE("a box past facet's extent: pixdim 1e38 would overflow the ray caster's box") {
+    nifti_1_header h = good;
+    h.pixdim[1] = 1e38f;
+    checkNiftiError(dir, "wide.nii", niftiFile(h, ramp), "span 3e+38, more than facet's limit of 1e+09");
+    h = good;
+    h.pixdim[3] = 1e-6f;
+    checkNiftiError(dir, "thin.nii", niftiFile(h, ramp), "the largest is more than 1000 times the smallest");
   }
   SUBCASE("not a single-file NIfTI-1") {
     nifti_1_header h = good;
