@@ -248,8 +248,8 @@ TEST_CASE("stages that do not link: facet::Error names the program, with the dri
 }
 
 // A loop that skips its rest by `continue` made llvmpipe's code for the lit
-// pass ~35 % slower than the same loop skipping by an `if` (the same
-// instructions, one more branch; README, "One loop's continue"), so no
+// pass slower than the same loop skipping by an `if` (the same
+// instructions, one more branch), so no
 // shader has one. Comments are left out of the search.
 TEST_CASE("no shader skips a loop's rest by continue") {
   const std::regex word("\\bcontinue\\b");
