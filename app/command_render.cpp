@@ -50,7 +50,7 @@ struct RenderOptions {
   std::string context = "auto";
   int threads = 0;
   std::string stage = "image";  // render/stage.h: image, overdraw, depth, shadow-map, normals or light-N
-  std::string shadowReport;     // a heat map of the frame against ray casting (renderer/PIPELINE.md, section 10)
+  std::string shadowReport;     // a heat map of the frame against ray casting (renderer/PIPELINE.md, "Ray tracing")
   std::string probe;            // X,Y: explain that pixel (cpu/pixel_probe.h)
   int turntable = 1;            // frames around the scene, 360/N degrees of azimuth apart
 };
@@ -101,7 +101,7 @@ Command addRenderCommand(CLI::App& app) {
       ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
   command->add_option("--threads", options->threads, "CPU backend and ray tracer threads (0: one per core)")->check(wholeNumberIn(0, kMaxThreads));
   command->add_option("--output-stage", options->stage,
-                      "what to write (renderer/PIPELINE.md, section 6, \"Stages\"): image (the frame); overdraw (the depth complexity: "
+                      "what to write (renderer/PIPELINE.md, \"Stages\"): image (the frame); overdraw (the depth complexity: "
                       "fragments per pixel before the depth test, black 0, pale yellow the busiest pixel); depth (the z-buffer's window z, "
                       "near white to far dark grey); shadow-map (every shadow map side by side); normals (RGB = (N + 1)/2); light-N (the "
                       "frame lit by light N alone)");

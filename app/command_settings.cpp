@@ -19,7 +19,7 @@ Command addSettingsCommand(CLI::App& app) {
       "settings", "Print the RenderSettings as JSON: the defaults, or with --settings/--set/--size applied for the scene");
   addCommonOptions(*command, *options, "write the JSON to this file instead of standard output");
   auto keys = std::make_shared<bool>(false);
-  command->add_flag("--keys", *keys, "print every key, its default, range and meaning as a Markdown table (the README's) instead");
+  command->add_flag("--keys", *keys, "print every key, its default, range and meaning as a Markdown table (docs/settings.md's) instead");
   return [options, keys]() {
     if (*keys) {
       std::fputs(settingsTable().c_str(), stdout);

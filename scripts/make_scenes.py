@@ -869,7 +869,7 @@ def alpha_mask():
 def cube_direction(face, s, t):
     """The direction that OpenGL's cube-map table sends to (s, t) of `face`
     (+x -x +y -y +z -z; t = 0 at the face's top row): renderer/PIPELINE.md,
-    section 8, run backwards."""
+ "Textures", run backwards."""
     a, b = 2 * s - 1, 2 * t - 1
     return [(1, -b, -a), (-1, -b, a), (a, 1, b), (a, -1, -b), (a, -b, 1), (-a, -b, -1)][face]
 
@@ -1565,7 +1565,7 @@ def motion_blur():
 
 
 def particles():
-    g = Gltf("Particle systems (renderer/PIPELINE.md, section 12; --set time=T, the viewer's play button): three emitters "
+    g = Gltf("Particle systems (renderer/PIPELINE.md, \"Particle systems\"; --set time=T, the viewer's play button): three emitters "
              "that glTF nodes place in their extras (facet_particles, with particles.N's keys, in the node's frame). Left: a "
              "fountain in a stone basin, particles born 600 a second at 4.5 m/s in a 10-degree cone, pulled down by gravity, "
              "bouncing off the basin's floor (restitution 0.4, friction 0.2) and fading from white-blue to deep blue. Middle: a "

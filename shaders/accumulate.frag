@@ -1,6 +1,6 @@
 #version 450 core
 #extension GL_EXT_shader_framebuffer_fetch : require
-// Anti-aliasing (renderer/PIPELINE.md, section 7, "Anti-aliasing"): one
+// Anti-aliasing (renderer/PIPELINE.md, "Anti-aliasing"): one
 // sample's colour buffer added, premultiplied, into the sum of the samples
 // drawn before it, read at the pixel by framebuffer fetch. Mirror:
 // accumulate in renderer/shading/resolve.cpp.

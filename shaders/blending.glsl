@@ -1,5 +1,5 @@
 // Transparency's blending equations and the colour buffer's two ways of
-// holding a colour (renderer/PIPELINE.md, section 7, "Transparency"), each
+// holding a colour (renderer/PIPELINE.md, "Transparency"), each
 // product and sum rounded once in the order written. Mirror:
 // renderer/shading/blending.h.
 

@@ -1,4 +1,4 @@
-// Bump mapping (renderer/PIPELINE.md, section 8, "Bump mapping"): the
+// Bump mapping (renderer/PIPELINE.md, "Bump mapping"): the
 // course's perturbed normal from a height map's partial derivatives and the
 // surface's. Mirror: renderer/shading/bump_mapping.h. Needs shading_math.glsl,
 // texture.glsl and normal_mapping.glsl (tangentFrame) before it.

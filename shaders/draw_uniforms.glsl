@@ -31,7 +31,7 @@ layout(binding = 6) uniform usampler2D normalMap;             // data bytes: tan
 
 // Both texture coordinate sets at the fragment, st.xy TEXCOORD_0 and st.zw
 // TEXCOORD_1, with their derivatives dFdx(st) and dFdy(st); (0, 0) for a set
-// the mesh lacks (renderer/PIPELINE.md, section 8).
+// the mesh lacks (renderer/PIPELINE.md, "Textures").
 struct Texcoords {
   vec4 st, dx, dy;
 };
@@ -50,7 +50,7 @@ vec4 derivativesOf(Texcoords t, int set) {
 
 // O_d = factor · COLOR_0 · texel at the base colour texture's set of t, and
 // its alpha (factor.a · COLOR_0.a) · texel.a (renderer/PIPELINE.md,
-// section 8); with FACET_PROCEDURAL, the texel is the pattern's at
+// "Textures"); with FACET_PROCEDURAL, the texel is the pattern's at
 // modelPoint. FACET_COLORED: the draw's mesh has COLOR_0; FACET_TEXTURED:
 // its material has a base colour texture and its mesh that texture's set.
 vec4 baseColorAt(Texcoords t, vec4 vertexColor, vec3 modelPoint) {
@@ -79,7 +79,7 @@ vec4 baseColorAt(Texcoords t, vec4 vertexColor, vec3 modelPoint) {
 }
 
 // k_e·E: the emissive texture's RGB at its set of t, times k_e
-// (renderer/PIPELINE.md, section 5). Mirror: emissionAt in
+// (renderer/PIPELINE.md, "Materials"). Mirror: emissionAt in
 // renderer/shading/texture.h. For draws with FACET_EMISSIVE_MAP.
 vec3 emissionAt(Texcoords t) {
   precise vec3 e = material.emissive * sampleTexture(emissiveMap, mapsSrgb.z != 0, emissiveSampler, setOf(t, mapSets.z), derivativesOf(t, mapSets.z)).rgb;

@@ -1,4 +1,4 @@
-// Environment mapping (renderer/PIPELINE.md, section 8): the cube map's
+// Environment mapping (renderer/PIPELINE.md, "Textures"): the cube map's
 // linear RGB in a direction, for the reflection k_r·I_r and the background.
 // Mirror: renderer/shading/environment.h. Needs shading_math.glsl and texture.glsl before it.
 

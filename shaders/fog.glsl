@@ -1,4 +1,4 @@
-// The course's fog (renderer/PIPELINE.md, section 7, "Fog"): C = C_fog +
+// The course's fog (renderer/PIPELINE.md, "Fog"): C = C_fog +
 // f·(C - C_fog) by the pixel's eye-space depth d; FACET_FOG is the mode
 // (0 none: compiled out, 1 linear, 2 exponential, 3 exponential2).
 // Mirror: renderer/shading/fog.h. Needs frame_block.glsl and shading_math.glsl before it.

@@ -129,7 +129,7 @@ Illumination illuminate(CourseMaterial material, vec3 P, vec3 N, vec3 V) {
   precise vec3 diffuse = vec3(ambient, ambient, ambient);
   precise vec3 highlights = vec3(0.0, 0.0, 0.0);  // H
   // A light that adds nothing is skipped by an if, never a continue: llvmpipe
-  // gave this loop with continues code ~35 % slower (tests/gl/test_shader_source.cpp).
+  // gave this loop with continues slower code (tests/gl/test_shader_source.cpp).
   for (int i = 0; i < FACET_LIGHT_COUNT; ++i) {
     TowardLight toward = towardLight(i, P);
     vec3 L = toward.L;
@@ -146,7 +146,7 @@ Illumination illuminate(CourseMaterial material, vec3 P, vec3 N, vec3 V) {
     }
   }
 #if defined(FACET_ENVIRONMENT) && FACET_ENVIRONMENT
-  // Environment mapping: the course's k_r·I_r, I_r = env(R), R = 2(N·V)N - V, joins the highlights (PIPELINE.md, section 8).
+  // Environment mapping: the course's k_r·I_r, I_r = env(R), R = 2(N·V)N - V, joins the highlights (PIPELINE.md, "Textures").
   precise vec3 R = (2.0 * dot3(N, V)) * N - V;
   highlights = highlights + frame.environment.x * environmentAt(R, 0);
 #endif

@@ -1,7 +1,7 @@
 #version 450 core
 // Segments and points (glTF's LINES, LINE_LOOP, LINE_STRIP, POINTS): the
 // lit pass's clip coordinates, bit for bit, and the vertex colour, which
-// llvmpipe interpolates along a segment (renderer/PIPELINE.md, section 6,
+// llvmpipe interpolates along a segment (renderer/PIPELINE.md, "Rasterization",
 // "Lines and points"). Mirror: renderer/cpu/line_pass.cpp.
 #include "transform.glsl"
 

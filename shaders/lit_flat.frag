@@ -1,6 +1,6 @@
 #version 450 core
 // Lit pass, flat shading: the triangle's illumination of the side seen, times
-// O_d at this pixel (renderer/PIPELINE.md, section 7).
+// O_d at this pixel (renderer/PIPELINE.md, "Shading").
 #include "frame_block.glsl"
 #include "transform.glsl"
 #include "shading_math.glsl"

@@ -1,14 +1,14 @@
 #version 450 core
 // Lit pass, flat shading: one illumination per triangle, from its world-space
 // geometric normal normalize(cross(p1 - p0, p2 - p0)) at its centroid, V from
-// the centroid, for the front and the back side (renderer/PIPELINE.md, section 7).
+// the centroid, for the front and the back side (renderer/PIPELINE.md, "Shading").
 //
 // The mesh is drawn without indices, three vertices per triangle, and each
 // vertex reads its triangle's corners from the mesh's buffers; all three
 // compute the same illumination. A geometry shader would do it once, but
 // with one llvmpipe maps vertices to the window in C without the fused
 // multiply-add of its vertex stage, and the covered pixels would no longer be
-// those of the CPU reference (renderer/PIPELINE.md, section 6).
+// those of the CPU reference (renderer/PIPELINE.md, "Rasterization").
 #include "frame_block.glsl"
 #include "transform.glsl"
 #include "shading_math.glsl"

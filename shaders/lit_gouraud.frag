@@ -1,6 +1,6 @@
 #version 450 core
 // Lit pass, Gouraud shading: the interpolated illumination of the side seen,
-// times O_d at this pixel (renderer/PIPELINE.md, section 7).
+// times O_d at this pixel (renderer/PIPELINE.md, "Shading").
 #include "frame_block.glsl"
 #include "transform.glsl"
 #include "shading_math.glsl"

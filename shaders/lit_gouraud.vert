@@ -1,7 +1,7 @@
 #version 450 core
 // Lit pass, Gouraud shading: the illumination equation at each vertex (V and
 // the shadow factor too), for the front and the back side; the rasterizer
-// interpolates both and lit_gouraud.frag picks one (renderer/PIPELINE.md, section 7).
+// interpolates both and lit_gouraud.frag picks one (renderer/PIPELINE.md, "Shading").
 #include "frame_block.glsl"
 #include "transform.glsl"
 #include "shading_math.glsl"

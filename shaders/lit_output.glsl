@@ -1,4 +1,4 @@
-// The lit pass's output (renderer/PIPELINE.md, section 7, "Transparency"):
+// The lit pass's output (renderer/PIPELINE.md, "Transparency"):
 // an opaque fragment writes (C, 1) into the linear colour buffer; a blended
 // one (FACET_BLENDED) reads the buffer at its pixel (EXT_shader_framebuffer_fetch,
 // which sees every earlier fragment there in primitive order) and blends into

@@ -1,6 +1,6 @@
 #version 450 core
 // Lit pass, Phong shading: the illumination equation at every pixel, with the
-// interpolated normal renormalized (renderer/PIPELINE.md, section 7); with
+// interpolated normal renormalized (renderer/PIPELINE.md, "Shading"); with
 // FACET_PBR, glTF's metallic-roughness BRDF in its place (shading=pbr).
 #include "frame_block.glsl"
 #include "transform.glsl"
@@ -54,6 +54,6 @@ void main() {
   vec3 shaded = shade(illuminate(lit, P, N, viewVector(P)), O.rgb);
 #endif
   // KHR_materials_unlit: O_d itself, through the fog. A select, not an early
-  // return: llvmpipe's code for the lit pass is ~8 % faster without the branch.
+  // return: llvmpipe's code for the lit pass is faster without the branch.
   writeLit(fogged(unlit ? O.rgb : shaded), O.a);
 }

@@ -1,6 +1,6 @@
 #version 450 core
 // Lit pass, Phong shading: positions and normals to world space here, the
-// lighting per pixel in lit_phong.frag (renderer/PIPELINE.md, section 7).
+// lighting per pixel in lit_phong.frag (renderer/PIPELINE.md, "Shading").
 #include "frame_block.glsl"
 #include "transform.glsl"
 #include "shading_math.glsl"

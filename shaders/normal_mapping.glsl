@@ -1,4 +1,4 @@
-// glTF normal textures (renderer/PIPELINE.md, section 8, "Normal textures"):
+// glTF normal textures (renderer/PIPELINE.md, "Normal textures"):
 // the tangent-space normal of the texture turned into world space by the
 // pixel's tangent frame. Mirror: renderer/shading/normal_mapping.h.
 // Needs shading_math.glsl, texture.glsl and draw_uniforms.glsl before it.

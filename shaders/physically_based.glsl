@@ -1,5 +1,5 @@
 // shading=pbr: glTF 2.0's metallic-roughness BRDF as the Khronos glTF Sample
-// Viewer evaluates it (renderer/PIPELINE.md, section 7, "Physically based").
+// Viewer evaluates it (renderer/PIPELINE.md, "Physically based").
 // Mirror: renderer/shading/physically_based.h and renderer/pipeline/microfacet.h,
 // the same functions with the same float operations, each result `precise`.
 // Needs lighting.glsl (and what it needs) and environment.glsl before it.

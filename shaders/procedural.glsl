@@ -1,4 +1,4 @@
-// Procedural textures (renderer/PIPELINE.md, section 8): a checker and four
+// Procedural textures (renderer/PIPELINE.md, "Textures"): a checker and four
 // octaves of value noise of the model-space point.
 // Mirror: renderer/shading/procedural.h — same functions, same order.
 

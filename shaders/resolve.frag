@@ -1,5 +1,5 @@
 #version 450 core
-// The resolve (renderer/PIPELINE.md, section 7, "The colour buffer and the
+// The resolve (renderer/PIPELINE.md, "The colour buffer and the
 // resolve"): the lit pass's linear RGBA, read texel for texel, encoded
 // once into the RGBA8 image, straight (a premultiplied buffer's colour
 // divided by its alpha first). Mirror: renderer/shading/resolve.cpp.

@@ -1,4 +1,4 @@
-// The resolve's rule for one pixel (renderer/PIPELINE.md, section 7, "The
+// The resolve's rule for one pixel (renderer/PIPELINE.md, "The
 // colour buffer and the resolve"): what the colour buffer holds there,
 // averaged over the samples first, taken to its straight colour and
 // encoded as the image's levels. Mirror: cpu::resolveRow.

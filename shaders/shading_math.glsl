@@ -1,5 +1,5 @@
 // The few functions the shading code builds on, in the float operations of
-// renderer/PIPELINE.md section 7 ("Arithmetic"). Mirror:
+// renderer/PIPELINE.md ("Arithmetic"). Mirror:
 // renderer/shading/shading_math.h, the same names, the same operations in the
 // same order. Only +, -, *, /, sqrt, floor, comparisons, selects and bit
 // casts, each exact in llvmpipe as in C++; every result is `precise` so that

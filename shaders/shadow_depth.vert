@@ -1,6 +1,6 @@
 #version 450 core
 // Shadow pass 1: depth only, from the light, one array layer per light face
-// (renderer/PIPELINE.md, sections 4 and 6); an alpha-masked draw also passes
+// (renderer/PIPELINE.md, "Lights" and "Rasterization"); an alpha-masked draw also passes
 // what its alpha is made of, so that what the mask cuts away casts no shadow.
 #include "transform.glsl"
 

@@ -1,6 +1,6 @@
 // Texture lookup by hand from integer texel reads, so that no hardware
 // filtering differs between backends: level of detail, the sampler's filters
-// and wraps (renderer/PIPELINE.md, section 8).
+// and wraps (renderer/PIPELINE.md, "Textures").
 // Mirror: renderer/shading/texture.cpp. Needs shading_math.glsl and srgb.glsl before it.
 //
 // The texture is GL_RGBA8UI with the loader's mipmaps as its levels, read

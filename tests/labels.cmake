@@ -15,7 +15,7 @@
 # plus their labels). labels.every_entry_has_a_tier_and_an_area fails when
 # an entry has no tier, two, or no area.
 set(FACET_TIERS quick long)
-set(FACET_AREAS agreement batch cli common compare cpu fuzz gl image layers math packaging particles pipeline ray robustness scene settings suite
+set(FACET_AREAS agreement batch cli common compare cpu docs fuzz gl image layers math packaging particles pipeline ray robustness scene settings suite
                 viewer volume)
 
 # facet_doctest(TARGET [PREFIX prefix]): its cases as ctest entries, named

@@ -74,7 +74,7 @@ void ReferenceView::drawControls(std::uint64_t version) {
                      "with the GL image.");
   if (ImGui::Button("Render the reference")) requested_ = true;
   ImGui::Checkbox("render it after every change", &follow_);
-  // The ray tracer as the reference: its exact shadow rays against the shadow maps (renderer/PIPELINE.md, section 10).
+  // The ray tracer as the reference: its exact shadow rays against the shadow maps (renderer/PIPELINE.md, "Ray tracing").
   int reference = rayTraced_ ? 1 : 0;
   const int before = reference;
   ImGui::RadioButton("the CPU rasterizer", &reference, 0);

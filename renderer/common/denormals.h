@@ -3,7 +3,7 @@
 // (MXCSR FTZ and DAZ; Mesa 22.3 draw_pt.c and lp_rast.c set them around the
 // work), so results that would be denormal are 0 and denormal inputs count as
 // 0. The CPU backend does the same for every phase of a frame
-// (renderer/PIPELINE.md, section 7), and puts the caller's mode back after.
+// (renderer/PIPELINE.md, "Shading"), and puts the caller's mode back after.
 #if defined(__SSE2__)
 #include <xmmintrin.h>
 #endif

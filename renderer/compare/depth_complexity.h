@@ -1,5 +1,5 @@
 #pragma once
-// The depth-complexity view (renderer/PIPELINE.md, section 6, "Depth
+// The depth-complexity view (renderer/PIPELINE.md, "Depth
 // complexity"): FrameOutput::FragmentCounts as figures and as an image, so that
 // a student sees why the z-buffer's cost follows the projected area drawn,
 // not the pixels shown.

@@ -1,6 +1,6 @@
 #pragma once
 // antialiasing.pattern=area: a frame by the course's area-weighted averaging
-// (renderer/PIPELINE.md, section 7, "Area-weighted averaging"): pass 2's
+// (renderer/PIPELINE.md, "Area-weighted averaging"): pass 2's
 // triangles, through the lit programs' vertex and fragment stages, with
 // each pixel's exact coverage (area_averaging.h) in place of its centre.
 #include "render/renderer.h"

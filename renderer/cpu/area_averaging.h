@@ -1,6 +1,6 @@
 #pragma once
 // The course's area-weighted averaging as a frame (renderer/PIPELINE.md,
-// section 7, "Area-weighted averaging"): the lit pass's triangles are
+// "Area-weighted averaging"): the lit pass's triangles are
 // collected as surfaces, every pixel is cut into cells (cpu/area_coverage.h),
 // the same triangles are drawn again to shade each cell's surfaces at the
 // cell's centroid, and each pixel sums its cells weighted by their areas.

@@ -1,6 +1,6 @@
 #pragma once
 // The course's area-weighted averaging, its geometry (renderer/PIPELINE.md,
-// section 7, "Area-weighted averaging"): a pixel's square cut into convex
+// "Area-weighted averaging"): a pixel's square cut into convex
 // cells over which the same surfaces lie in the same depth order, so that
 // each visible part of each polygon is known with its exact area.
 #include <cstdint>

@@ -86,7 +86,7 @@ class CpuRenderer final : public Renderer {
     } else if (frame.samples.empty()) {
       drawPass(frame, nullptr);
       result.timings.push_back({"lit pass", millisecondsSince(start)});
-    } else {  // anti-aliasing: a pass per sample, summed premultiplied (PIPELINE.md, section 7)
+    } else {  // anti-aliasing: a pass per sample, summed premultiplied (PIPELINE.md, "Shading")
       for (std::size_t i = 0; i < frame.samples.size(); ++i) {
         drawPass(sampleFrame(frame, frame.samples[i]), nullptr);
         accumulate(pool_, color_, frame.blending, sum_, i == 0);

@@ -2,7 +2,7 @@
 // Attribute interpolation at pixel centres with llvmpipe's plane equations
 // (plane_equations.h): window z linear in screen space, every other
 // attribute perspective-correct (the plane of a·(1/w), times 1/w at the
-// pixel), as the course, the contract and renderer/PIPELINE.md section 6 say.
+// pixel), as the course, the contract and renderer/PIPELINE.md, "Rasterization" say.
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -66,7 +66,7 @@ class Interpolation {
   }
 
   // dFdx and dFdy of varyings k, k + 1 as llvmpipe computes them
-  // (PIPELINE.md, section 8): differences within the pixel's 2×2 quad, per
+  // (PIPELINE.md, "Textures"): differences within the pixel's 2×2 quad, per
   // row for x and per column for y, at pixels inside the triangle or not.
   // (d(k)/dx, d(k+1)/dx, d(k)/dy, d(k+1)/dy).
   glm::vec4 quadDerivatives(int k, int px, int py) const {

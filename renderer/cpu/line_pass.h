@@ -1,7 +1,7 @@
 #pragma once
 // Pass 2's lines and points: every instance's segments, then its points,
 // drawn after all triangles, unlit (O_d times COLOR_0), through the
-// z-buffer (LESS) and into the image (renderer/PIPELINE.md, section 6,
+// z-buffer (LESS) and into the image (renderer/PIPELINE.md, "Rasterization",
 // "Lines and points"). The fast renderer draws them tile by tile, the
 // reference over the whole image; both set them up here.
 #include <vector>

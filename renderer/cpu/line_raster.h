@@ -1,7 +1,7 @@
 #pragma once
 // Segments and points set up for coverage and interpolation as llvmpipe
 // does it, so that both backends cover the same pixels with the same depth
-// and colour (renderer/PIPELINE.md, section 6, "Lines and points"). Read
+// and colour (renderer/PIPELINE.md, "Lines and points"). Read
 // from Mesa's lp_setup_line.c (try_setup_line, the diamond-exit branch:
 // GL's lines are not rectangular unless smoothed) and lp_setup_point.c
 // (try_setup_point, points as quads), and checked against llvmpipe

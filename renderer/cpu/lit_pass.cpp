@@ -225,7 +225,7 @@ void shadeIn(const FrameInputs& frame, const DrawUniforms* draws, const ShadowMa
   }
 }
 
-// Transparency (PIPELINE.md, section 7): the tile's blended triangles in
+// Transparency (PIPELINE.md, "Shading"): the tile's blended triangles in
 // their order, after everything opaque. Each one's fragments that pass the
 // depth test (no depth write) get their α, are shaded as a visible fragment
 // is, and blend into the colour buffer.

@@ -6,7 +6,7 @@
 // operation per lane), so the result is bit-identical to shading each pixel
 // alone whatever the width; tests/cpu/test_fast_paths.cpp holds every width
 // against it. At 8 and 16 lanes a batch queues twice the width and shades
-// it as two interleaved halves (lane_pairs.h; README, "Two batches side by side").
+// it as two interleaved halves (lane_pairs.h).
 // Pixels of different triangles and materials share a batch.
 // Without SSE2 the batch shades its pixels one by one.
 #include <algorithm>

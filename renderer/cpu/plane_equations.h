@@ -1,6 +1,6 @@
 #pragma once
 // Depth and attributes across a triangle as llvmpipe computes them, so that
-// both backends get the same bits (renderer/PIPELINE.md, section 6, "Depth
+// both backends get the same bits (renderer/PIPELINE.md, "Depth
 // and attributes"). Read from Mesa 22.3: lp_state_setup.c (init_args,
 // calc_coef4: the set-up, once per triangle) and lp_bld_interp.c
 // (attribs_update_simple: the value at a pixel).

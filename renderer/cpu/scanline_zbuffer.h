@@ -1,6 +1,6 @@
 #pragma once
 // The course's scanline z-buffer, hsr = scanline (renderer/PIPELINE.md,
-// section 6, "Hidden-surface removal"): one row of depth at a time instead of
+// "Hidden-surface removal"): one row of depth at a time instead of
 // a frame of it. Polygons (the binned triangles, after clipping, snapping and
 // culling) are bucketed by y_min; each scanline adds its bucket to the active
 // polygon list and drops the polygons past their y_max; each active polygon's

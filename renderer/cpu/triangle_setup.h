@@ -3,7 +3,7 @@
 // src/gallium/drivers/llvmpipe/lp_setup_tri.c: calc_fixed_position,
 // triangle_both / do_triangle_ccw; lp_rast.h: FIXED_ORDER), read from the
 // source and checked against llvmpipe on 10^5 random triangles with zero
-// differing pixels (renderer/PIPELINE.md, section 6):
+// differing pixels (renderer/PIPELINE.md, "Rasterization"):
 //
 // - Vertices snap to a 1/256-pixel grid: X = round_half_even((x_w - 0.5)·256)
 //   (cvtps2dq in the default rounding mode). The grid origin is a pixel centre,

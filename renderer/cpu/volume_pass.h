@@ -1,5 +1,5 @@
 #pragma once
-// Volume ray casting over a drawn frame (renderer/PIPELINE.md, section 11,
+// Volume ray casting over a drawn frame (renderer/PIPELINE.md, "Volume rendering",
 // "Ray casting"): each pixel's ray through the volume, from the near plane
 // to the opaque surface the z-buffer kept there, composited over the pixel.
 #include <vector>

@@ -1,7 +1,7 @@
 #pragma once
 // Clip coordinates to window coordinates (the course's window-to-viewport
 // mapping of NDC [-1, 1]² onto [0, W]×[0, H], depth range [0, 1]), with the
-// roundings llvmpipe's two paths have (renderer/PIPELINE.md, section 6):
+// roundings llvmpipe's two paths have (renderer/PIPELINE.md, "Rasterization"):
 //   a vertex of the vertex stage:  x_w = fma(x·(1/w), W/2, W/2)   (its JIT fuses the multiply-add)
 //   a vertex the clipper made:     x_w = (x·(1/w))·(W/2) + W/2    (draw_pipe_clip.c, in C: two roundings)
 // the same for y with H; z_w = z·(1/w) (scale 1, offset 0); and 1/w is kept

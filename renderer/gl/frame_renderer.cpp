@@ -145,7 +145,7 @@ std::vector<PassTiming> GlFrameRenderer::drawFrame(const Scene& scene, const Fra
     gl_.Finish();
     checkError("the lit pass");
     timings.push_back({"lit pass", millisecondsSince(start)});
-  } else {  // anti-aliasing: a pass per sample, summed premultiplied (PIPELINE.md, section 7)
+  } else {  // anti-aliasing: a pass per sample, summed premultiplied (PIPELINE.md, "Shading")
     sum_.resize(gl_, frame.width, frame.height);
     const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     gl_.ClearNamedFramebufferfv(sum_.framebuffer(), GL_COLOR, 0, zero);
@@ -515,7 +515,7 @@ void GlFrameRenderer::litPass(const FrameInputs& frame, LitOutput output) {
     gl_.DrawArrays(GL_TRIANGLES, 0, 3);
   }
 
-  // The painter's algorithm: no depth test and no depth writes, triangles in its order (PIPELINE.md, section 6).
+  // The painter's algorithm: no depth test and no depth writes, triangles in its order (PIPELINE.md, "Rasterization").
   const bool painter = frame.hsr == HiddenSurface::Painter;
   if (painter) gl_.Disable(GL_DEPTH_TEST);
   else gl_.Enable(GL_DEPTH_TEST);
@@ -541,7 +541,7 @@ void GlFrameRenderer::litPass(const FrameInputs& frame, LitOutput output) {
   if (output == LitOutput::Normal) return;  // lines and points have no normal, blended surfaces write no depth
   drawLines(frame, levels);
   if (frame.transparentOrder.empty()) return;
-  // Transparency (PIPELINE.md, section 7): the blended triangles back to front, depth-tested, no depth writes;
+  // Transparency (PIPELINE.md, "Shading"): the blended triangles back to front, depth-tested, no depth writes;
   // each fragment blends into the colour buffer in its shader (lit_output.glsl), in primitive order.
   gl_.Enable(GL_DEPTH_TEST);
   gl_.DepthMask(GL_FALSE);

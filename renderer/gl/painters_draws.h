@@ -1,7 +1,7 @@
 #pragma once
 // Triangles drawn in an order of their own on the OpenGL side: hsr = painter
-// (renderer/PIPELINE.md, section 6, "Hidden-surface removal"), the frame's
-// triangles in FrameInputs::paintersOrder, and transparency (section 7), the
+// (renderer/PIPELINE.md, "Hidden-surface removal"), the frame's
+// triangles in FrameInputs::paintersOrder, and transparency ("Transparency"), the
 // blended ones in FrameInputs::transparentOrder. The order is cut into runs of
 // one instance each. Their indices are copied in that order
 // into one index buffer, so that a run is one draw and GL's primitive order is

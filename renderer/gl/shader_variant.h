@@ -45,9 +45,9 @@ std::string fogDefine(const FrameInputs& frame);
 
 // What a lit program writes: the fragment's linear colour; its colour's
 // sRGB levels (FACET_LEVELS_OUTPUT: a frame nothing blends or averages,
-// encoded as drawn, renderer/PIPELINE.md section 7, "The colour buffer and
+// encoded as drawn, renderer/PIPELINE.md, "The colour buffer and
 // the resolve"); or the normal it is shaded with (FACET_NORMAL_OUTPUT: the
-// normals stage, section 6, "Stages"). Only Color for a blended draw.
+// normals stage, "Stages"). Only Color for a blended draw.
 enum class LitOutput { Color, Levels, Normal };
 
 // The #define lines (one per macro, each ending in a newline) of the lit

@@ -2,7 +2,7 @@
 // The lit pass's colour buffer: linear RGBA in 32-bit float, rows bottom
 // first as in facet::Image. Colours are combined here (blended, averaged
 // over samples) before the resolve encodes them once (renderer/PIPELINE.md,
-// section 7, "The colour buffer and the resolve").
+// "The colour buffer and the resolve").
 #include <cstddef>
 #include <vector>
 

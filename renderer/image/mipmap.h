@@ -1,5 +1,5 @@
 #pragma once
-// Mipmaps (renderer/PIPELINE.md, section 8): built once per texture, when the
+// Mipmaps (renderer/PIPELINE.md, "Textures"): built once per texture, when the
 // scene is loaded, and read by both backends, so that no level differs.
 #include <cstdint>
 #include <vector>

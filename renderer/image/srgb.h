@@ -1,6 +1,6 @@
 #pragma once
 // sRGB (IEC 61966-2-1) as both backends apply it, by table, so that they
-// agree to the bit (renderer/PIPELINE.md, section 7, "Encoding"):
+// agree to the bit (renderer/PIPELINE.md, "Encoding"):
 //
 // - A linear value c in [0, 1] is written as the 8-bit level
 //   floor(255·E(c) + 0.5), E(c) = 12.92·c for c ≤ 0.0031308, else

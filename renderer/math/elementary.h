@@ -5,7 +5,7 @@
 // acosf from the CORE-MATH project; glibc 2.36's (Debian 12) differ from
 // them on 3.6 %, 6.2 %, 15.9 % and 7.7 % of random arguments, and so the
 // camera's projection, its field of view and the ray tracer's sphere
-// mapping changed between the two (renderer/PIPELINE.md, section 1, has the
+// mapping changed between the two (renderer/PIPELINE.md, "One source of truth", has the
 // measurements; sinf, cosf, expf, powf and the double functions are the
 // same in both, bit for bit, and stay the C library's).
 //

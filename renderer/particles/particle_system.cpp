@@ -1,4 +1,4 @@
-// The particle system (renderer/PIPELINE.md, section 12): who is alive at T, each particle's seeded start, its fixed-step integration.
+// The particle system (renderer/PIPELINE.md, "Particle systems"): who is alive at T, each particle's seeded start, its fixed-step integration.
 #include "particles/particle_system.h"
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 #pragma once
-// The particles of an emitter at a time T (renderer/PIPELINE.md, section 12,
+// The particles of an emitter at a time T (renderer/PIPELINE.md, "Particle systems",
 // "Particle systems"): Newton's laws integrated with a fixed step from each
 // particle's birth, its random numbers drawn from (seed, particle index)
 // alone, so that the state at T is the same for every backend, thread count

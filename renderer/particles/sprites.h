@@ -3,7 +3,7 @@
 // each a particle (or a volume's splat), added to a scene as one mesh of
 // blended, unlit triangles, so both rasterizers draw them in the
 // transparency pass: depth-tested against the scene's z-buffer without
-// writing it, back to front (renderer/PIPELINE.md, section 12, "Sprites").
+// writing it, back to front (renderer/PIPELINE.md, "Sprites").
 #include <string>
 #include <vector>
 

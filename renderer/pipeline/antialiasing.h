@@ -1,5 +1,5 @@
 #pragma once
-// The course's supersampling (renderer/PIPELINE.md, section 7,
+// The course's supersampling (renderer/PIPELINE.md, "Shading",
 // "Anti-aliasing"): where in each pixel the samples lie, and the frame one
 // sample is drawn with. Every backend draws the same passes, so the covered
 // samples are the rasterizer's own rules at shifted positions.

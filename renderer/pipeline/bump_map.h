@@ -1,5 +1,5 @@
 #pragma once
-// Bump mapping (renderer/PIPELINE.md, section 8): the height map a scene's
+// Bump mapping (renderer/PIPELINE.md, "Textures"): the height map a scene's
 // frames bend their normals by, and the tangents its textured meshes need
 // for it; a step of the frame's spine (pipeline/frame_spine.h).
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
 // Whole-instance culling against a clip volume (renderer/PIPELINE.md,
-// section 4, "Faces draw what they can reach"): a pass skips an instance
+// "Faces draw what they can reach"): a pass skips an instance
 // whose model-space box lies beyond one plane of the volume, because none of
 // its triangles could leave a fragment there. The box is the mesh's
 // positions' (used by a triangle or not), so the test errs toward drawing.

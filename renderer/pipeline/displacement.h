@@ -1,5 +1,5 @@
 #pragma once
-// Displacement mapping (renderer/PIPELINE.md, section 8): every textured mesh
+// Displacement mapping (renderer/PIPELINE.md, "Textures"): every textured mesh
 // subdivided, its vertices moved along their normals by a height map, and
 // its normals recomputed, once, before either backend draws: a step of the
 // frame's spine (pipeline/frame_spine.h).

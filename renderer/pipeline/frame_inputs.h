@@ -46,7 +46,7 @@ struct FrameLight {
 // "Are we already drawing start/end?"): Mesa 22.3 compares the signs of the
 // end's offsets from its pixel centre; Mesa 25.0 asks which edge of the quad
 // the end lies on. They differ only for an end whose offset along the major
-// axis is 0 (renderer/PIPELINE.md, section 6, "Lines and points"). The CPU
+// axis is 0 (renderer/PIPELINE.md, "Lines and points"). The CPU
 // backend follows the llvmpipe it is held against: gl::lineEndTestOf reads
 // it from the driver's version string.
 enum class LineEndTest { Mesa22, Mesa25 };
@@ -76,12 +76,12 @@ struct FrameInputs {
   // list, instances in order) in the order they are drawn, back to front
   // (pipeline/painters_order.h); empty otherwise.
   std::vector<std::uint32_t> paintersOrder;
-  // Transparency (PIPELINE.md, section 7): the blended triangles, drawn after
+  // Transparency (PIPELINE.md, "Shading"): the blended triangles, drawn after
   // every other triangle and line in this order, back to front
   // (pipeline/transparency_order.h); empty when no material is blended.
   Blending blending = Blending::Straight;
   std::vector<std::uint32_t> transparentOrder;
-  // Anti-aliasing (PIPELINE.md, section 7): the sample offsets of the frame's
+  // Anti-aliasing (PIPELINE.md, "Shading"): the sample offsets of the frame's
   // passes (pipeline/antialiasing.h), empty for one sample at each pixel's
   // centre; and the offset a sample's frame is drawn at (sampleFrame).
   std::vector<glm::vec2> samples;
@@ -92,13 +92,13 @@ struct FrameInputs {
   ShadowSettings shadows;
   int shadowLayerCount = 0;       // S×S depth maps over all lights: one per face
   float time = 0.0f;              // seconds: where the scene's animation places the instances
-  // The ray tracer's knobs (PIPELINE.md, section 10), and the radius R of the
+  // The ray tracer's knobs (PIPELINE.md, "Ray tracing"), and the radius R of the
   // scene's bounding sphere that ray.epsilon scales.
   RaySettings ray;
   float sceneRadius = 1.0f;
   glm::vec3 background{0.0f};    // linear RGB
   float backgroundAlpha = 1.0f;   // alpha of empty pixels (the environment map's too)
-  // Environment mapping (PIPELINE.md, section 8). `map` points into the Scene
+  // Environment mapping (PIPELINE.md, "Textures"). `map` points into the Scene
   // the frame was built from (its environment), null when there is none.
   struct Environment {
     const EnvironmentMap* map = nullptr;
@@ -107,14 +107,14 @@ struct FrameInputs {
     // D at pixel (x, y) in NDC: (forward + x·right) + y·up (right = up = 0 under parallel projection).
     glm::vec3 forward{0.0f, 0.0f, -1.0f}, right{0.0f}, up{0.0f};
   } environment;
-  // Bump mapping (PIPELINE.md, section 8), Phong and pbr: `map` points into the Scene (its bumpMap), null when none.
+  // Bump mapping (PIPELINE.md, "Textures"), Phong and pbr: `map` points into the Scene (its bumpMap), null when none.
   struct Bump {
     const Texture* map = nullptr;
     float scale = 0.0f;  // k
   } bump;
   Procedural procedural = Procedural::None;  // a pattern in place of every base colour texture
   float proceduralScale = 1.0f;              // k: cells per model unit
-  // Fog (PIPELINE.md, section 7): the settings', and cot θ for the eye depth d = (1/(1/w))·cot θ.
+  // Fog (PIPELINE.md, "Shading"): the settings', and cot θ for the eye depth d = (1/(1/w))·cot θ.
   struct Fog {
     FogMode mode = FogMode::None;
     glm::vec3 color{0.0f};  // C_fog, linear
@@ -122,7 +122,7 @@ struct FrameInputs {
     float cotTheta = 1.0f;  // perspective: 1/tan θ, double precision rounded to float
   } fog;
 
-  // Volume ray casting (PIPELINE.md, section 11): `placed` points into the
+  // Volume ray casting (PIPELINE.md, "Volume rendering"): `placed` points into the
   // Scene (its volume), null unless volume.mode = raycast and the scene has one.
   struct VolumeCasting {
     const Scene::PlacedVolume* placed = nullptr;

@@ -1,5 +1,5 @@
 #pragma once
-// The spine of every frame (renderer/PIPELINE.md, section 1): the loaded
+// The spine of every frame (renderer/PIPELINE.md, "One source of truth"): the loaded
 // scene, the settings asked, the camera's move and the time (settings.time)
 // in; everything the frame is drawn from out. What the settings add goes
 // into scenes the spine makes, never into the loaded one: the material maps

@@ -14,7 +14,7 @@ CourseMaterial courseMaterial(const Material& material, const MaterialOverrides&
   CourseMaterial out;
   out.baseColor = glm::vec3(material.baseColor);
   out.baseAlpha = overrides.opacity.value_or(material.baseColor.a);
-  // KHR_texture_transform: T·R·S, turned as Khronos' TextureTransformTest checks (PIPELINE.md, section 8), in double, rounded once.
+  // KHR_texture_transform: T·R·S, turned as Khronos' TextureTransformTest checks (PIPELINE.md, "Textures"), in double, rounded once.
   const TextureTransform& t = material.baseColorTransform;
   const double c = std::cos(static_cast<double>(t.rotation)), s = std::sin(static_cast<double>(t.rotation));
   out.uvRow0 = glm::vec3(static_cast<float>(c * t.scale.x), static_cast<float>(s * t.scale.y), t.offset.x);

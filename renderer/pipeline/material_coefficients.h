@@ -29,27 +29,27 @@ struct CourseMaterial {
   float ka = 0, kd = 0, ks = 0;
   float shininess = 1;        // n
   float metallic = 0;         // m in O_s = (1 - m) + m·O_d, in [0, 1]
-  float roughness = 1;        // r, in [0, 1]: shading=pbr's (PIPELINE.md, section 7)
-  // shading=pbr's maps (PIPELINE.md, section 7): G and B scale r and m, R is the ambient occlusion, RGB scales k_e.
+  float roughness = 1;        // r, in [0, 1]: shading=pbr's (PIPELINE.md, "Shading")
+  // shading=pbr's maps (PIPELINE.md, "Shading"): G and B scale r and m, R is the ambient occlusion, RGB scales k_e.
   MaterialMap metallicRoughnessMap, occlusionMap, emissiveMap;
   float occlusionStrength = 1;  // ao = 1 + strength·(R - 1)
-  // A glTF normal texture, tangent space (PIPELINE.md, section 8): Phong and pbr read it per pixel.
+  // A glTF normal texture, tangent space (PIPELINE.md, "Textures"): Phong and pbr read it per pixel.
   MaterialMap normalMap;
   float normalScale = 1;        // scales its x and y
   bool doubleSided = false;
-  // Alpha (PIPELINE.md, section 8): α = factor·COLOR_0.a·texel.a, each where present;
+  // Alpha (PIPELINE.md, "Textures"): α = factor·COLOR_0.a·texel.a, each where present;
   // with `masked`, a fragment is kept when α ≥ alphaCutoff (NaN discards).
   float baseAlpha = 1.0f;     // the base colour factor's alpha (material.opacity in its place)
   bool masked = false;
-  // Transparency (PIPELINE.md, section 7): blended into the colour buffer by
+  // Transparency (PIPELINE.md, "Shading"): blended into the colour buffer by
   // α after the opaque surfaces; in the shadow pass it is masked, with
   // alphaCutoff = transparency.shadowCutoff.
   bool blended = false;
   float alphaCutoff = 0.5f;
   bool unlit = false;     // the colour is O_d, no illumination (KHR_materials_unlit)
-  bool additive = false;  // blended by the additive equation (PIPELINE.md, section 7)
+  bool additive = false;  // blended by the additive equation (PIPELINE.md, "Shading")
   bool castsShadow = true;  // drawn into the shadow maps
-  // The ray tracer's recursive terms (PIPELINE.md, section 10): k_r = reflectivity·O_s
+  // The ray tracer's recursive terms (PIPELINE.md, "Ray tracing"): k_r = reflectivity·O_s
   // of the reflected ray, k_t of the transmitted one, the index of refraction
   // n, and Beer's law's σ per channel inside the medium (0: no attenuation).
   float reflectivity = 0;
@@ -64,7 +64,7 @@ struct CourseMaterial {
 inline constexpr float kMinDerivedShininess = 8.0f;
 
 // The one documented mapping from glTF metallic m and roughness r
-// (renderer/PIPELINE.md, section 5):
+// (renderer/PIPELINE.md, "Materials"):
 //   α = r²,  n = clamp(2/α² - 2, 8, 1024)      (Blinn-Phong exponent matching
 //                                               a Beckmann lobe of roughness α)
 //   F0 = 0.04·(1 - m) + 0.9·m                  (dielectric vs. metal reflectance)

@@ -1,5 +1,5 @@
 #pragma once
-// The microfacet terms of shading=pbr (renderer/PIPELINE.md, section 7,
+// The microfacet terms of shading=pbr (renderer/PIPELINE.md, "Shading",
 // "Physically based"), for float (the CPU backend's pixels, mirrored in
 // shaders/physically_based.glsl) and double (the split-sum table built from
 // them, pipeline/split_sum.h): one definition of each, Schlick's Fresnel

@@ -1,5 +1,5 @@
 #pragma once
-// The painter's algorithm's order (renderer/PIPELINE.md, section 6,
+// The painter's algorithm's order (renderer/PIPELINE.md, "Rasterization",
 // "Hidden-surface removal"): every triangle of the frame, farthest first.
 #include <cstdint>
 #include <vector>

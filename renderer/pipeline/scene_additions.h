@@ -1,6 +1,6 @@
 #pragma once
 // What the settings add to a scene before a frame is built from it
-// (renderer/PIPELINE.md, sections 11 and 12): the volume, as marching
+// (renderer/PIPELINE.md, "Volume rendering" and "Particle systems"): the volume, as marching
 // cubes' iso-surface, as splats, or as the box ray casting fills; and the
 // particles of every emitter at settings.time, as sprites.
 #include <cstdint>

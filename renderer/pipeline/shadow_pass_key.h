@@ -1,6 +1,6 @@
 #pragma once
 // What pass 1 of the 2-pass shadow algorithm reads of a frame
-// (renderer/PIPELINE.md, section 5): the scene's content, the maps' size and
+// (renderer/PIPELINE.md, "Materials"): the scene's content, the maps' size and
 // layers, each shadowed light's frusta, each instance's mesh, TM and
 // material, and of the material what decides which fragments cast a shadow
 // (castsShadow, the alpha mask and the base colour texture it reads). The

@@ -1,6 +1,6 @@
 #pragma once
 // The split-sum factors of shading=pbr's image-based specular light
-// (renderer/PIPELINE.md, section 7): prefiltered·(F0·A + B), with
+// (renderer/PIPELINE.md, "Shading"): prefiltered·(F0·A + B), with
 // (A, B) = ∫ (1 - x⁵, x⁵)·D·Vis·(N·L) dω over the hemisphere for the BRDF's
 // own D and Vis (pipeline/microfacet.h). Built once, in double precision,
 // and read by both backends from the same floats.

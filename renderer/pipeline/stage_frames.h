@@ -1,5 +1,5 @@
 #pragma once
-// The frames some stages of renderer/PIPELINE.md (section 6, "Stages") are
+// The frames some stages of renderer/PIPELINE.md ("Stages") are
 // drawn from: one transformation of FrameInputs each, written once and used
 // by every backend, so that a stage needs no drawing code of its own beyond
 // what it reads back.

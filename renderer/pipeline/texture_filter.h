@@ -1,5 +1,5 @@
 #pragma once
-// textures.filter applied to a texture's glTF sampler (renderer/PIPELINE.md, section 8).
+// textures.filter applied to a texture's glTF sampler (renderer/PIPELINE.md, "Textures").
 #include "scene/scene.h"
 #include "settings/render_settings.h"
 

@@ -1,5 +1,5 @@
 #pragma once
-// The order blended triangles are drawn in (renderer/PIPELINE.md, section 7,
+// The order blended triangles are drawn in (renderer/PIPELINE.md, "Shading",
 // "Transparency"): after every opaque one, back to front.
 #include <cstdint>
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-// The course's ray casting (renderer/PIPELINE.md, section 10, "Ray
+// The course's ray casting (renderer/PIPELINE.md, "Ray
 // casting"): the ray through a pixel, with a window at unit distance, so
 // that the ray parameter t is the eye depth z_eye of the point it reaches.
 #include <glm/mat3x3.hpp>

@@ -1,5 +1,5 @@
 #pragma once
-// The laws the recursive rays follow (renderer/PIPELINE.md, section 10,
+// The laws the recursive rays follow (renderer/PIPELINE.md, "Ray tracing",
 // "Recursive ray tracing"): the law of reflection, Snell's law with total
 // internal reflection, and Schlick's approximation of Fresnel's reflectance.
 #include <cmath>

@@ -1,5 +1,5 @@
 #pragma once
-// The ray-tracing backend (renderer/PIPELINE.md, section 10): a third
+// The ray-tracing backend (renderer/PIPELINE.md, "Ray tracing"): a third
 // Renderer beside the rasterizers, taking the same Scene and FrameInputs.
 // Pixels in 16 x 16 tiles on a pool of threads that lives as long as the
 // renderer; the BVH is kept from frame to frame while the scene and its

@@ -1,5 +1,5 @@
 #pragma once
-// The course's recursive ray tracing (renderer/PIPELINE.md, section 10):
+// The course's recursive ray tracing (renderer/PIPELINE.md, "Ray tracing"):
 // a primary ray per pixel (and sample), the fragment stage of the
 // rasterizers at each hit with shadow rays for S, and the reflected and
 // transmitted rays of

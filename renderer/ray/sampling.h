@@ -1,5 +1,5 @@
 #pragma once
-// Stochastic ray tracing's random numbers (renderer/PIPELINE.md, section 10,
+// Stochastic ray tracing's random numbers (renderer/PIPELINE.md, "Ray tracing",
 // "Stochastic ray tracing"): one generator per path, seeded by the frame's
 // seed, the pixel and the path's index, so that an image depends on the seed
 // alone, not on the threads or the order of the tiles; and the shapes the

@@ -1,5 +1,5 @@
 #pragma once
-// The frame's geometry as rays see it (renderer/PIPELINE.md, section 10):
+// The frame's geometry as rays see it (renderer/PIPELINE.md, "Ray tracing"):
 // every instance's world triangles, the rasterizers' corners, or a sphere in
 // place of the builtin sphere's; which instance and which of its mesh's
 // triangles each primitive is; the BVH over them; and what a hit point
@@ -37,7 +37,7 @@ struct TracedSphere {
 };
 
 // A primary hit's texture level of detail from the rays of its pixel's 2×2
-// quad, as the rasterizer differences its quad (PIPELINE.md, section 8):
+// quad, as the rasterizer differences its quad (PIPELINE.md, "Textures"):
 // d/dx between the quad's two columns in the pixel's row, d/dy between its
 // two rows in the pixel's column, each where those rays meet the hit's plane.
 struct RayDifferentials {

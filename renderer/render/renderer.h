@@ -42,7 +42,7 @@ struct ShadowMapTexels {
   std::vector<float> texels;  // layer after layer, each bottom row first; window z, 1 where nothing was drawn
 };
 
-// What a frame can give (renderer/PIPELINE.md, section 6, "Stages"), in the
+// What a frame can give (renderer/PIPELINE.md, "Stages"), in the
 // manner of a renderer's AOVs: the image, and the raw data that render/stage.h
 // pictures. A render call draws only the outputs it is asked for.
 enum class FrameOutput { Image, TriangleIds, FragmentCounts, Depth, ShadowMaps, Normals, Count };
@@ -76,7 +76,7 @@ struct RenderResult {
   // triangle's index in the frame (instances in FrameInputs order, each
   // mesh's triangles in order; the pieces of a clipped triangle keep its index).
   std::optional<std::vector<std::uint32_t>> triangleIds;
-  // The depth complexity (renderer/PIPELINE.md, section 6, "Depth
+  // The depth complexity (renderer/PIPELINE.md, "Depth
   // complexity"): how many triangle fragments each pixel received from the
   // rasterizer, before any depth or alpha test, after clipping and culling.
   std::optional<std::vector<std::uint32_t>> fragmentCounts;
@@ -87,7 +87,7 @@ struct RenderResult {
   // The frame's shadow maps as pass 1 draws them (the maps a renderer keeps
   // across frames, pipeline/shadow_pass_key.h, when they are this frame's).
   std::optional<ShadowMapTexels> shadowMaps;
-  // The normal each pixel is shaded with (renderer/PIPELINE.md, section 6,
+  // The normal each pixel is shaded with (renderer/PIPELINE.md, "Rasterization",
   // "Stages"), at the pixel centres: (N, 1), world space; (0, 0, 0, 0)
   // where no opaque triangle was kept.
   std::optional<std::vector<glm::vec4>> normals;

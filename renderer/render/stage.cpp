@@ -16,7 +16,7 @@ namespace facet {
 namespace {
 
 constexpr std::string_view kLightPrefix = "light-";
-// A point light's faces in layer order (PIPELINE.md, section 4).
+// A point light's faces in layer order (PIPELINE.md, "Lights").
 constexpr std::array<std::string_view, 6> kFaceNames = {"+x", "-x", "+y", "-y", "+z", "-z"};
 
 std::string nameOf(StageKind kind) { return std::string(kStageKindNames[static_cast<std::size_t>(kind)]); }

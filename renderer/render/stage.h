@@ -1,5 +1,5 @@
 #pragma once
-// The stages of a frame one can look at (renderer/PIPELINE.md, section 6,
+// The stages of a frame one can look at (renderer/PIPELINE.md, "Rasterization",
 // "Stages"): the image, the depth complexity, the z-buffer, the shadow maps,
 // the normals, and the frame lit by one light. `facet render --output-stage
 // NAME` writes one; a viewer lists what a frame can show (stageNames). The

@@ -2,8 +2,8 @@
 // glTF node animations (glTF 2.0, 3.11): the node tree a file places its
 // meshes with, and the channels that move its nodes' translation, rotation
 // and scale over time, so that a frame can place every mesh instance at
-// `time` (renderer/PIPELINE.md, section 2) and the ray tracer at the times
-// of its shutter (section 10, motion blur). Morph weights and skins do not
+// `time` (renderer/PIPELINE.md, "Scene") and the ray tracer at the times
+// of its shutter ("Ray tracing", motion blur). Morph weights and skins do not
 // move anything here.
 #include <vector>
 

@@ -4,7 +4,7 @@
 namespace facet {
 
 // builtin:cornell: the Cornell box of the ray-tracing chapter
-// (renderer/PIPELINE.md, section 10): white floor, ceiling and back wall, a
+// (renderer/PIPELINE.md, "Ray tracing"): white floor, ceiling and back wall, a
 // red wall on the left and a green one on the right, a mirror sphere
 // (metallic, smooth: k_r = O_d) and a glass sphere (transmission 1, index of
 // refraction 1.5), a spherical light (radius 0.08: the ray tracer's soft

@@ -14,7 +14,7 @@ namespace facet {
 namespace {
 
 // The direction through face coordinates (a, b) = (sc/ma, tc/ma) of `face`:
-// OpenGL's (sc, tc, ma) table (PIPELINE.md, section 8) solved for D with |ma| = 1.
+// OpenGL's (sc, tc, ma) table (PIPELINE.md, "Textures") solved for D with |ma| = 1.
 glm::dvec3 faceDirection(int face, double a, double b) {
   switch (face) {
     case 0: return {1.0, -b, -a};

@@ -326,7 +326,7 @@ TextureTransform textureTransformOf(const tinygltf::ExtensionMap& extensions, co
   return out;
 }
 
-// What the ray tracer refracts (PIPELINE.md, section 10): KHR_materials_transmission's
+// What the ray tracer refracts (PIPELINE.md, "Ray tracing"): KHR_materials_transmission's
 // transmissionFactor, KHR_materials_ior's ior, KHR_materials_volume's attenuation.
 // A value outside its extension's range is ignored with a warning; the
 // textures these extensions allow are not read (a warning says so).
@@ -709,7 +709,7 @@ bool convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& p
 
 // One warning per texture a mesh's material has and the mesh cannot read: it
 // lacks the texture coordinate set the reference names (PIPELINE.md,
-// section 8: the factor alone). Lines and points read no texture.
+// "Textures": the factor alone). Lines and points read no texture.
 void warnUnreadTextures(const Scene& scene, const std::vector<std::vector<int>>& meshTable, Warnings& warnings) {
   for (std::size_t m = 0; m < meshTable.size(); ++m)
     for (std::size_t p = 0; p < meshTable[m].size(); ++p) {

@@ -57,7 +57,7 @@ Scene loadScene(const std::string& path) {
   if (path == "builtin:cornell") return makeCornellBox();
   if (path == "builtin:fountain") {
     // The default scene with a fountain on its ground, between the objects
-    // (renderer/PIPELINE.md, section 12): the emitter's defaults.
+    // (renderer/PIPELINE.md, "Particle systems"): the emitter's defaults.
     Scene scene = makeDefaultScene();
     scene.source = "builtin:fountain";
     Emitter fountain;

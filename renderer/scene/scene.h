@@ -37,12 +37,12 @@ struct Mesh {
   std::vector<glm::vec4> tangents;
   std::vector<std::uint32_t> indices; // three per triangle, counter-clockwise = front
   // glTF's POINTS and LINES (LINE_LOOP and LINE_STRIP as their segments), drawn
-  // unlit after the triangles (renderer/PIPELINE.md, section 6, "Lines and points").
+  // unlit after the triangles (renderer/PIPELINE.md, "Lines and points").
   // A mesh from a glTF primitive holds one kind: triangles, segments or points.
   std::vector<std::uint32_t> lines;   // two per segment
   std::vector<std::uint32_t> points;  // one per point
   // The builtin unit sphere (scene/primitives.h): the ray tracer may trace it
-  // as the sphere it approximates (renderer/PIPELINE.md, section 10).
+  // as the sphere it approximates (renderer/PIPELINE.md, "Ray tracing").
   bool sphere = false;
   int material = -1;                  // index into Scene::materials, -1 = the default material
 
@@ -59,7 +59,7 @@ struct MeshInstance {
 };
 
 // glTF 2.0's alphaMode: MASK discards fragments below alphaCutoff, BLEND
-// blends them by α (renderer/PIPELINE.md, section 7, "Transparency").
+// blends them by α (renderer/PIPELINE.md, "Transparency").
 enum class AlphaMode { Opaque, Mask, Blend };
 
 // KHR_texture_transform of a texture reference: uv' = T(offset)·R(rotation)·S(scale)·uv.
@@ -71,7 +71,7 @@ struct TextureTransform {
 };
 
 // The TEXCOORD_n set (0 or 1) each texture reference of a material reads
-// (glTF's `texCoord`; renderer/PIPELINE.md, section 8).
+// (glTF's `texCoord`; renderer/PIPELINE.md, "Textures").
 struct TexcoordSets {
   int baseColor = 0, metallicRoughness = 0, occlusion = 0, emissive = 0, normal = 0;
 };
@@ -100,11 +100,11 @@ struct Material {
   // illumination, as lines and points are (particles' sprites, volume splats).
   bool unlit = false;
   // BLEND adds the fragment's light instead of laying it over
-  // (renderer/PIPELINE.md, section 7, "Transparency"): additive particles.
+  // (renderer/PIPELINE.md, "Transparency"): additive particles.
   bool additive = false;
   // Whether it casts a shadow in the shadow maps (sprites: their emitter's castsShadow).
   bool castsShadow = true;
-  // What the ray tracer refracts (renderer/PIPELINE.md, section 10):
+  // What the ray tracer refracts (renderer/PIPELINE.md, "Ray tracing"):
   // KHR_materials_transmission, KHR_materials_ior, KHR_materials_volume.
   float transmission = 0.0f;      // the share of light transmitted, [0, 1]
   float ior = 1.5f;               // index of refraction
@@ -141,7 +141,7 @@ struct EnvironmentMap {
   std::string path;  // the file it was read from, as the settings name it
   Image faces;       // 6N × N, sRGB-encoded, bottom row first
   std::vector<Image> mips;  // levels 1 .. of the strip, each face's own chain down to 1×1 (shading=pbr)
-  // E(N)/π, the irradiance over π, as nine RGB coefficients of a quadratic in N (PIPELINE.md, section 8):
+  // E(N)/π, the irradiance over π, as nine RGB coefficients of a quadratic in N (PIPELINE.md, "Textures"):
   // k0 + k1·x + k2·y + k3·z + k4·xy + k5·yz + k6·xz + k7·(x² - y²) + k8·z².
   std::array<glm::vec3, 9> irradiance{};
   bool empty() const { return faces.empty(); }

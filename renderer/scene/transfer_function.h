@@ -1,7 +1,7 @@
 #pragma once
 // The transfer function of volume rendering: a sample's scalar to colour
 // and opacity, piecewise linear between control points
-// (renderer/PIPELINE.md, section 11, "Transfer functions").
+// (renderer/PIPELINE.md, "Transfer functions").
 #include <string>
 #include <string_view>
 #include <vector>

@@ -5,7 +5,7 @@ namespace facet {
 
 // Tangents for a mesh with texture coordinate set `set` (TEXCOORD_0 or
 // TEXCOORD_1, the normal texture's) and no TANGENT (renderer/PIPELINE.md,
-// section 8, "Normal textures"): each triangle's ∂P/∂s and ∂P/∂t from its
+// "Normal textures"): each triangle's ∂P/∂s and ∂P/∂t from its
 // edges and texture-coordinate differences (Lengyel), summed at its
 // vertices; at each vertex T is that sum made perpendicular to N and unit,
 // and w = ±1 makes B = w·(N × T) point against the summed ∂P/∂t: glTF's t

@@ -1,7 +1,7 @@
 #pragma once
 // A scalar volume on a regular grid (the course's voxels), as every reader
 // produces it and the three volume renderers (ray casting, splatting,
-// marching cubes) consume it (renderer/PIPELINE.md, section 11).
+// marching cubes) consume it (renderer/PIPELINE.md, "Volume rendering").
 #include <cstddef>
 #include <cstdint>
 #include <string>

@@ -19,7 +19,7 @@
 
 namespace facet {
 
-// The course's environment (reflection) mapping (renderer/PIPELINE.md, section 8).
+// The course's environment (reflection) mapping (renderer/PIPELINE.md, "Textures").
 struct EnvironmentSettings {
   std::string map;             // a cube map PNG (six square faces side by side); empty: none
   float reflectivity = 0.25f;  // k_r of k_r·I_r
@@ -40,7 +40,7 @@ struct CameraSettings {
   float parallelWidth = 10.0f;            // W of the parallel box, world units; H = W / aspect
   float near = 0.1f;                      // N, eye-space distance
   float far = 100.0f;                     // F, eye-space distance
-  // The ray tracer's thin lens (renderer/PIPELINE.md, section 10): depth of field.
+  // The ray tracer's thin lens (renderer/PIPELINE.md, "Ray tracing"): depth of field.
   float aperture = 0.0f;                  // lens radius, world units; 0: a pinhole, everything sharp
   float focusDistance = 0.0f;             // eye depth in focus, world units; 0: autofocus on the image's centre
   float shutter = 0.0f;                   // seconds the shutter stays open from `time` (motion blur); 0: an instant
@@ -54,21 +54,21 @@ struct MaterialOverrides {
   std::optional<float> ks;
   std::optional<float> shininess;  // n
   // α's factor for every material in place of the base colour factor's alpha;
-  // below 1 every material is blended (PIPELINE.md, section 7, "Transparency").
+  // below 1 every material is blended (PIPELINE.md, "Transparency").
   std::optional<float> opacity;
   // The ray tracer's k_r, k_t and index of refraction for every material
-  // (renderer/PIPELINE.md, section 10); unset: from glTF.
+  // (renderer/PIPELINE.md, "Ray tracing"); unset: from glTF.
   std::optional<float> reflectivity;  // k_r = reflectivity·O_s
   std::optional<float> transmission;  // k_t
   std::optional<float> ior;           // n
   Procedural procedural = Procedural::None;
   float proceduralScale = 4.0f;     // k: pattern cells per model unit
-  // Displacement mapping (PIPELINE.md, section 8): P' = P + (scale·h)·N at the
+  // Displacement mapping (PIPELINE.md, "Textures"): P' = P + (scale·h)·N at the
   // vertices of every textured mesh, subdivided first.
   std::string displacementMap;      // a greyscale PNG height map h in [0, 1], read at TEXCOORD_0; empty: none
   float displacementScale = 0.1f;   // model units at h = 1
   int displacementSubdivisions = 3; // each triangle split into 4^k
-  // Bump mapping (PIPELINE.md, section 8): the course's N' = N + B_u·(N × P_t) - B_v·(N × P_s) per pixel, Phong and pbr.
+  // Bump mapping (PIPELINE.md, "Textures"): the course's N' = N + B_u·(N × P_t) - B_v·(N × P_s) per pixel, Phong and pbr.
   std::string bumpMap;              // a greyscale PNG height map h in [0, 1], read at TEXCOORD_0; empty: none
   float bumpScale = 0.05f;          // k: B = k·h, in texture-coordinate units
 };
@@ -86,7 +86,7 @@ struct ShadowSettings {
   int pcfRadius = 1;         // r: PCF averages (2r+1)² samples; 0 = hard shadows
 };
 
-// The course's atmospheric attenuation (renderer/PIPELINE.md, section 7,
+// The course's atmospheric attenuation (renderer/PIPELINE.md, "Shading",
 // "Fog"): C = f·C_surface + (1 - f)·C_fog by the eye-space depth d,
 // linear f = (end - d)/(end - start), exponential e^(-density·d),
 // exponential2 e^(-(density·d)²), f clamped to [0, 1].
@@ -115,7 +115,7 @@ struct AntialiasingSettings {
   int seed = 1;  // jittered: the generator's seed
 };
 
-// The ray-tracing backend (renderer/PIPELINE.md, section 10).
+// The ray-tracing backend (renderer/PIPELINE.md, "Ray tracing").
 struct RaySettings {
   int depth = 5;                  // levels of the ray tree: 1 casts primary rays only
   float minContribution = 0.01f;  // a ray whose weight (largest channel) is below this is not traced

@@ -1,7 +1,7 @@
 #pragma once
-// The field table as the README shows it: one Markdown row per settings key
+// The field table as docs/settings.md shows it: one Markdown row per settings key
 // (dotted, as --set takes it), its default, its range or choices, and its
-// help line. `facet settings --keys` prints it; a test holds the README's
+// help line. `facet settings --keys` prints it; a test holds docs/settings.md's
 // copy to it.
 #include <string>
 

@@ -1,5 +1,5 @@
 #pragma once
-// alphaMode MASK (renderer/PIPELINE.md, section 8): a fragment of a masked
+// alphaMode MASK (renderer/PIPELINE.md, "Textures"): a fragment of a masked
 // material is kept when α = (factor.a · COLOR_0.a) · texel.a, each where
 // present, is at least the cutoff; a NaN α discards.
 // Mirror: alphaKept in shaders/draw_uniforms.glsl.

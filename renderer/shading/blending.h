@@ -1,6 +1,6 @@
 #pragma once
 // Transparency's blending equations and the colour buffer's two ways of
-// holding a colour (renderer/PIPELINE.md, section 7, "Transparency"), each
+// holding a colour (renderer/PIPELINE.md, "Transparency"), each
 // product and sum rounded once in the order written.
 // Mirror: shaders/blending.glsl.
 #include <glm/vec3.hpp>

@@ -1,5 +1,5 @@
 #pragma once
-// Bump mapping (renderer/PIPELINE.md, section 8, "Bump mapping"): the
+// Bump mapping (renderer/PIPELINE.md, "Bump mapping"): the
 // course's perturbed normal from a height map's partial derivatives and the
 // surface's. Mirror: shaders/bump_mapping.glsl.
 #include <glm/vec2.hpp>

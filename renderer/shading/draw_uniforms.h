@@ -1,7 +1,7 @@
 #pragma once
 // What the draw of one instance reads, found once per draw: its mesh and
 // material, the maps it samples, and how much of its varyings any stage
-// reads (renderer/PIPELINE.md, sections 5, 7 and 8); and the functions of
+// reads (renderer/PIPELINE.md, "Materials", "Shading" and "Textures"); and the functions of
 // the draw's base colour and emission at a point.
 // Mirror: shaders/draw_uniforms.glsl (the uniforms and specialization
 // macros of a draw: FACET_TEXTURED, FACET_COLORED, FACET_EMISSIVE_MAP,
@@ -29,7 +29,7 @@ struct DrawUniforms {
   bool procedural = false;               // FACET_PROCEDURAL: a pattern in place of the base colour texture
   // summedMaterial(): the coefficients the vertex and flat illuminations sum,
   // k_e there 0 where an emissive texture adds k_e·E at each point instead
-  // (PIPELINE.md, section 5).
+  // (PIPELINE.md, "Materials").
   LaneMaterial<float> summed{};
   // The prefix of the mode's varying layout any stage of the draw reads (its
   // fragments, their α, the alpha mask): a rasterizer sets up that much.

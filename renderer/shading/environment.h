@@ -1,5 +1,5 @@
 #pragma once
-// Environment mapping (renderer/PIPELINE.md, section 8): the cube map's
+// Environment mapping (renderer/PIPELINE.md, "Textures"): the cube map's
 // linear RGB in a direction, for the reflection k_r·I_r and the background.
 // Mirror: shaders/environment.glsl — same functions, same order.
 #include <algorithm>

@@ -1,5 +1,5 @@
 #pragma once
-// The course's fog (renderer/PIPELINE.md, section 7, "Fog"), for one pixel
+// The course's fog (renderer/PIPELINE.md, "Fog"), for one pixel
 // or four or eight lanes: C = C_fog + f·(C - C_fog) by the eye-space depth d.
 // Mirror: shaders/fog.glsl, the same operations in the same order.
 #include "shading/shading_math.h"

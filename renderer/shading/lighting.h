@@ -382,7 +382,7 @@ IlluminationOf<F> illuminate(const FrameInputs& frame, const Shadows& shadows, c
     I.diffuse = select(active, I.diffuse + diffuse, I.diffuse);
     highlights = select(active, highlights + specular, highlights);
   }
-  // Environment mapping: the course's k_r·I_r, I_r = env(R), R = 2(N·V)N - V, joins the highlights (PIPELINE.md, section 8).
+  // Environment mapping: the course's k_r·I_r, I_r = env(R), R = 2(N·V)N - V, joins the highlights (PIPELINE.md, "Textures").
   if (frame.environment.map) {
     const Vec3 R = (F(2.0f) * dot3(N, V)) * N - V;
     highlights = highlights + F(frame.environment.reflectivity) * environmentLanes(*frame.environment.map, R);

@@ -1,5 +1,5 @@
 #pragma once
-// glTF normal textures (renderer/PIPELINE.md, section 8, "Normal textures"):
+// glTF normal textures (renderer/PIPELINE.md, "Normal textures"):
 // the tangent-space normal of the texture turned into world space by the
 // pixel's tangent frame. Mirror: shaders/normal_mapping.glsl.
 #include <glm/vec2.hpp>

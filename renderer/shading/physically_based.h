@@ -1,6 +1,6 @@
 #pragma once
 // shading=pbr: glTF 2.0's metallic-roughness BRDF as the Khronos glTF Sample
-// Viewer evaluates it, for one pixel (renderer/PIPELINE.md, section 7,
+// Viewer evaluates it, for one pixel (renderer/PIPELINE.md, "Shading",
 // "Physically based"). Mirror: shaders/physically_based.glsl, the same
 // functions in the same order with the same float operations.
 //
@@ -30,7 +30,7 @@ struct PbrSurface {
   glm::vec3 emissive{0.0f};  // k_e
 };
 
-// The pixel's surface: O_d as section 8 makes it, the material's factors
+// The pixel's surface: O_d as PIPELINE.md, "Textures", makes it, the material's factors
 // times its maps, each read at its set's st[set] with derivatives d[set]
 // (no texture transform) where the mesh has that set:
 //   r·G, m·B of the metallic-roughness map; ao = 1 + strength·(R - 1); k_e·RGB of the emissive map.

@@ -1,7 +1,7 @@
 #pragma once
-// Procedural textures (renderer/PIPELINE.md, section 8): a checker and four
+// Procedural textures (renderer/PIPELINE.md, "Textures"): a checker and four
 // octaves of value noise of the model-space point, in the operations of
-// section 7 (integer hashing modulo 2^32, +, -, ·, /, floor).
+// PIPELINE.md, "Arithmetic" (integer hashing modulo 2^32, +, -, ·, /, floor).
 // Mirror: shaders/procedural.glsl — same functions, same order.
 #include <cmath>
 #include <cstdint>

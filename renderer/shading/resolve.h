@@ -1,5 +1,5 @@
 #pragma once
-// The last step of a CPU frame (renderer/PIPELINE.md, section 7, "The colour
+// The last step of a CPU frame (renderer/PIPELINE.md, "The colour
 // buffer and the resolve"): each pixel of the linear colour buffer clamped,
 // its colour (a premultiplied buffer's divided by its alpha first) encoded to
 // sRGB levels and its alpha to a linear level.
@@ -18,9 +18,8 @@ namespace facet {
 // renderer's width (lane_width.h): at 16 the pixels go four at a time
 // (resolve_avx512.cpp), else one at a time, each channel's clamp and bucket
 // four lanes at a time (srgb_table.h). An eight-lane encode with gathers
-// measured slower than the one-pixel rule (3.7 against 3.2 ms at
-// 1920x1080): gathers are slow, which the sixteen-lane path's estimate
-// avoids.
+// measured slower than the one-pixel rule: gathers are slow, which the
+// sixteen-lane path's estimate avoids.
 void resolve(ThreadPool& pool, const ColorBuffer& buffer, Blending holding, int samples, int lanes, Image& image);
 // That rule for n pixels in a row: out[i] from in[i].
 void resolveRow(const glm::vec4* in, Rgba8* out, std::size_t n, Blending holding, int samples, int lanes);

@@ -1,6 +1,6 @@
 #pragma once
 // The few functions the shading code builds on, in the float operations of
-// renderer/PIPELINE.md section 7 ("Arithmetic"), for one lane or four
+// renderer/PIPELINE.md ("Arithmetic"), for one lane or four
 // (lanes.h). Mirror: shaders/shading_math.glsl, the same names, the same
 // operations in the same order. Only +, -, ·, /, sqrt, floor, comparisons,
 // selects and bit casts: each is exact in IEEE single precision on both

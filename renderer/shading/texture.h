@@ -1,6 +1,6 @@
 #pragma once
 // Texture lookup: mipmap level of detail, the sampler's filters and wraps
-// (renderer/PIPELINE.md, section 8).
+// (renderer/PIPELINE.md, "Textures").
 // Mirror: shaders/texture.glsl — same functions, same order.
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -14,14 +14,14 @@ namespace facet {
 
 // The base colour texture a draw of `mesh` with `material` samples: none when
 // the material has none, the mesh lacks the set it reads, or a procedural
-// texture takes its place (PIPELINE.md, section 8).
+// texture takes its place (PIPELINE.md, "Textures").
 inline const Texture* baseColorTextureOf(const Scene& scene, const FrameInputs& frame, const CourseMaterial& material, const Mesh& mesh) {
   if (frame.procedural != Procedural::None || material.baseColorTexture < 0 || mesh.texcoordSet(material.baseColorSet).empty()) return nullptr;
   return &scene.textures[static_cast<std::size_t>(material.baseColorTexture)];
 }
 
 // The base colour texture's coordinates and their derivatives after the
-// material's KHR_texture_transform (PIPELINE.md, section 8): st' by the
+// material's KHR_texture_transform (PIPELINE.md, "Textures"): st' by the
 // 2×3 matrix, the derivatives by its linear part, each written out.
 struct TransformedTexcoords {
   glm::vec2 st;
@@ -52,7 +52,7 @@ glm::vec4 sampleLevel(const Image& level, TexelEncoding encoding, bool linear, W
 glm::vec4 sampleRegion(const Image& image, TexelEncoding encoding, glm::ivec2 origin, glm::ivec2 size, bool linear, Wrap wrapS, Wrap wrapT,
                        glm::vec2 st);
 
-// ρ² of section 8 from derivatives (ds/dx, dt/dx, ds/dy, dt/dy) and level 0's size.
+// ρ² of PIPELINE.md, "Textures", from derivatives (ds/dx, dt/dx, ds/dy, dt/dy) and level 0's size.
 float footprintSquared(glm::vec4 derivatives, int width, int height);
 
 // The texture through `sampler` at st, derivatives as dFdx(st), dFdy(st)
@@ -62,7 +62,7 @@ glm::vec4 sampleTexture(const Texture& texture, const Sampler& sampler, glm::vec
 // Whether a draw of `mesh` reads `map`: the material has it and the mesh has the set it reads.
 inline bool readsMap(const MaterialMap& map, const Mesh& mesh) { return map.texture >= 0 && !mesh.texcoordSet(map.set).empty(); }
 
-// The emissive texture a draw of `mesh` with `material` reads, or null (PIPELINE.md, section 5).
+// The emissive texture a draw of `mesh` with `material` reads, or null (PIPELINE.md, "Materials").
 inline const Texture* emissiveMapOf(const Scene& scene, const CourseMaterial& material, const Mesh& mesh) {
   return readsMap(material.emissiveMap, mesh) ? &scene.textures[static_cast<std::size_t>(material.emissiveMap.texture)] : nullptr;
 }

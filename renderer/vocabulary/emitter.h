@@ -1,6 +1,6 @@
 #pragma once
 // A particle emitter as the course describes it (renderer/PIPELINE.md,
-// section 12, "Particle systems"). The same struct describes an emitter of
+// "Particle systems"). The same struct describes an emitter of
 // the settings (particles.N.*) and one a glTF node's extras place.
 #include <array>
 #include <string>
@@ -13,7 +13,7 @@ namespace facet {
 // How a particle's sprite is blended over what lies behind it: `over`, the
 // frame's blending equation (straight or premultiplied, the `blending`
 // key), or `additive`, which adds its light without hiding what is behind
-// (renderer/PIPELINE.md, section 7, "Transparency").
+// (renderer/PIPELINE.md, "Transparency").
 enum class SpriteBlending { Over, Additive, Count };
 inline constexpr std::array<std::string_view, static_cast<int>(SpriteBlending::Count)> kSpriteBlendingNames = {"over", "additive"};
 

@@ -31,7 +31,7 @@ enum class TextureFilter { Auto, Nearest, Bilinear, Trilinear, Count };
 inline constexpr std::array<std::string_view, static_cast<int>(TextureFilter::Count)> kTextureFilterNames = {"auto", "nearest", "bilinear",
                                                                                                             "trilinear"};
 
-// The course's procedural mapping (renderer/PIPELINE.md, section 8): a
+// The course's procedural mapping (renderer/PIPELINE.md, "Textures"): a
 // pattern of the model-space surface point in place of every base colour texture.
 enum class Procedural { None, Checker, Noise, Count };
 inline constexpr std::array<std::string_view, static_cast<int>(Procedural::Count)> kProceduralNames = {"none", "checker", "noise"};
@@ -39,14 +39,14 @@ inline constexpr std::array<std::string_view, static_cast<int>(Procedural::Count
 enum class FogMode { None, Linear, Exponential, Exponential2, Count };
 inline constexpr std::array<std::string_view, static_cast<int>(FogMode::Count)> kFogModeNames = {"none", "linear", "exponential", "exponential2"};
 
-// Hidden-surface removal (renderer/PIPELINE.md, section 6, "Hidden-surface
+// Hidden-surface removal (renderer/PIPELINE.md, "Hidden-surface
 // removal"): the z-buffer; the painter's algorithm (triangles sorted by their
 // farthest eye depth, drawn back to front with no depth buffer); or the
 // scanline z-buffer (CPU backend: one row of depth at a time, the z-buffer's image).
 enum class HiddenSurface { ZBuffer, Painter, Scanline, Count };
 inline constexpr std::array<std::string_view, static_cast<int>(HiddenSurface::Count)> kHiddenSurfaceNames = {"zbuffer", "painter", "scanline"};
 
-// Transparency (renderer/PIPELINE.md, section 7, "Transparency"): the
+// Transparency (renderer/PIPELINE.md, "Transparency"): the
 // course's two blending equations, straight
 //   C_o = (C_f α_f + C_b α_b (1 − α_f)) / α_o,  α_o = α_f + α_b (1 − α_f)
 // and premultiplied C_o = C_f + C_b (1 − α_f) (the colour buffer holds C·α);
@@ -57,7 +57,7 @@ inline constexpr std::array<std::string_view, static_cast<int>(Blending::Count)>
 enum class TransparencySort { Object, Triangle, Count };
 inline constexpr std::array<std::string_view, static_cast<int>(TransparencySort::Count)> kTransparencySortNames = {"object", "triangle"};
 
-// Anti-aliasing (renderer/PIPELINE.md, section 7, "Anti-aliasing"): the
+// Anti-aliasing (renderer/PIPELINE.md, "Anti-aliasing"): the
 // course's supersampling, `samples` = s² sub-pixel positions per pixel on an
 // s × s ordered grid, or one jittered position in each grid cell from a
 // seeded generator; every sample is a full pass, box-filtered in linear light.
@@ -66,7 +66,7 @@ inline constexpr std::array<std::string_view, static_cast<int>(TransparencySort:
 enum class SamplePattern { Grid, Jittered, Area, Count };
 inline constexpr std::array<std::string_view, static_cast<int>(SamplePattern::Count)> kSamplePatternNames = {"grid", "jittered", "area"};
 
-// Volume rendering (renderer/PIPELINE.md, section 11): a scalar volume
+// Volume rendering (renderer/PIPELINE.md, "Volume rendering"): a scalar volume
 // placed in the scene, drawn by the course's v-buffer ray casting,
 // splatting, or marching cubes' iso-surface.
 enum class VolumeMode { Raycast, Splat, Isosurface, Count };

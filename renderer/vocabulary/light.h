@@ -21,7 +21,7 @@ struct Light {
   glm::vec3 attenuation{1.0f, 0.0f, 0.0f};  // c1, c2, c3 of f_att = min(1, 1/(c1 + c2·d + c3·d²))
   float spotCutoffDeg = 30.0f;              // β: lit where dot(-L, D) > cos β (spot)
   bool castsShadow = true;
-  // The ray tracer's soft shadows (renderer/PIPELINE.md, section 10): a point
+  // The ray tracer's soft shadows (renderer/PIPELINE.md, "Ray tracing"): a point
   // or spot light is a sphere of this radius (world units), a directional
   // light a cone of this half-angle (degrees); 0 is a point, a hard shadow.
   float radius = 0.0f;

@@ -1,5 +1,5 @@
 #pragma once
-// Volume readers (renderer/PIPELINE.md, section 11, "Volume data"). Each
+// Volume readers (renderer/PIPELINE.md, "Volume data"). Each
 // throws facet::Error with one line naming the file and the problem (a
 // truncated file, dimensions that do not match the data, an unsupported
 // sample type), and prices the samples against kSceneMemoryBudget before

@@ -1,6 +1,6 @@
 #pragma once
 // Marching cubes (Lorensen and Cline 1987): the iso-surface f = isoValue of a
-// volume as a triangle mesh (renderer/PIPELINE.md, section 11, "Marching cubes").
+// volume as a triangle mesh (renderer/PIPELINE.md, "Marching cubes").
 #include "scene/scene.h"
 #include "scene/volume.h"
 

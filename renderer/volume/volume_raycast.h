@@ -1,5 +1,5 @@
 #pragma once
-// The course's v-buffer ray casting (renderer/PIPELINE.md, section 11,
+// The course's v-buffer ray casting (renderer/PIPELINE.md, "Volume rendering",
 // "Ray casting"): rays through the volume, a sample every `step` voxel
 // spacings, each the trilinear interpolation of the 8 samples around it,
 // through the transfer function, composited front to back with the opacity

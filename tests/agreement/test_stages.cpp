@@ -1,4 +1,4 @@
-// What the stages of a frame mean (renderer/PIPELINE.md, section 6,
+// What the stages of a frame mean (renderer/PIPELINE.md, "Rasterization",
 // "Stages"), held on both rasterizers: the agreement suite's stage cases
 // hold the two equal, these hold each to what the stage is. Depth grows
 // away from the eye; a point light's shadow-map face holds the objects'

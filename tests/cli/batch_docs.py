@@ -1,4 +1,4 @@
-"""The README's Kubernetes Job for facet batch: YAML that parses, an Indexed
+"""The Kubernetes Job of docs/batch.md for facet batch: YAML that parses, an Indexed
 Job whose completions match the shard count its command passes (a shard
 left out would be a slice of jobs never run)."""
 import re

@@ -6,7 +6,7 @@
 // the same command line, in idiff's spelling, with idiff's -v so that it
 // always prints its figures.
 //
-// Where facet diff parts from idiff on purpose (README, "diff"), a case says
+// Where facet diff parts from idiff on purpose (docs/diff.md), a case says
 // so and checks that the difference is the one documented.
 //
 //   idiff_crosscheck FACET WORK_FOLDER

@@ -1,4 +1,4 @@
-// alphaMode MASK (renderer/PIPELINE.md, sections 6 and 8): the test itself,
+// alphaMode MASK (renderer/PIPELINE.md, "Rasterization" and "Textures"): the test itself,
 // and what a cut-away fragment must not do: hide the ground behind it, win
 // its pixel, or cast a shadow.
 #include <cmath>

@@ -1,4 +1,4 @@
-// Anti-aliasing (renderer/PIPELINE.md, section 7, "Anti-aliasing"): where
+// Anti-aliasing (renderer/PIPELINE.md, "Anti-aliasing"): where
 // the samples lie, that a sample's pass sees the image at its offset, that
 // an edge pixel takes the fraction of its samples the surface covers, and
 // how fast 1, 4, 9 and 16 samples converge to a 16 x 16 supersampled frame

@@ -1,5 +1,5 @@
 // Coverage: which pixels a triangle covers, checkable by hand against the
-// rules in renderer/PIPELINE.md section 6 (llvmpipe's). The renderer's path
+// rules in renderer/PIPELINE.md, "Rasterization" (llvmpipe's). The renderer's path
 // (snapTriangle, then rasterizeBlocks over the 64x64 tiles of the bounding
 // box) is what the hand-checked cases run; a last case holds its block-first
 // walk equal to the plain per-pixel walk of rasterize.h on random triangles.

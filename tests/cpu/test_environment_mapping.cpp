@@ -1,4 +1,4 @@
-// Environment mapping (renderer/PIPELINE.md, section 8): the cube strip is
+// Environment mapping (renderer/PIPELINE.md, "Textures"): the cube strip is
 // read as OpenGL's cube-map table says, the reflection is k_r·env(R) in the
 // highlights, and the background shows the map in each pixel's direction.
 #include <doctest/doctest.h>

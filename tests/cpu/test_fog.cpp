@@ -1,4 +1,4 @@
-// The course's fog (renderer/PIPELINE.md, section 7, "Fog"): the factor of
+// The course's fog (renderer/PIPELINE.md, "Fog"): the factor of
 // each mode, the eye depth from 1/w and from the window depth, and what a
 // rendered frame shows with it.
 #include <cmath>

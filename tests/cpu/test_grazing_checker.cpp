@@ -1,4 +1,4 @@
-// Texture mapping's reason for mipmaps (renderer/PIPELINE.md, section 8): a
+// Texture mapping's reason for mipmaps (renderer/PIPELINE.md, "Textures"): a
 // checker floor seen at a grazing angle, against a supersampled reference
 // (8×8 bilinear samples per pixel, averaged in linear light), as the camera
 // steps forward a quarter of a square at a time. Shimmer is how much a

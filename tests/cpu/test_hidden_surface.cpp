@@ -1,5 +1,5 @@
 // The course's other hidden-surface algorithms (renderer/PIPELINE.md,
-// section 6, "Hidden-surface removal"): the painter's order, what the
+// "Hidden-surface removal"): the painter's order, what the
 // painter's algorithm draws where it fails, and the scanline z-buffer, which
 // must keep what the z-buffer keeps at every pixel, also where depths tie.
 #include <random>

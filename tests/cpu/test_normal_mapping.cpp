@@ -1,4 +1,4 @@
-// glTF normal textures (renderer/PIPELINE.md, section 8): a flat texel keeps
+// glTF normal textures (renderer/PIPELINE.md, "Textures"): a flat texel keeps
 // the normal, a tilted one turns it toward T or B by its x and y, the scale
 // multiplies x and y, and w picks the bitangent's side.
 #include <doctest/doctest.h>

@@ -1,4 +1,4 @@
-// shading=pbr (renderer/PIPELINE.md, section 7, "Physically based"): the
+// shading=pbr (renderer/PIPELINE.md, "Physically based"): the
 // microfacet terms integrate as the physics says, the split-sum table holds
 // what the BRDF reflects, a map's irradiance is its cosine integral, and
 // metals tint their reflection while dielectrics do not.

@@ -1,4 +1,4 @@
-// Procedural textures (renderer/PIPELINE.md, section 8): the checker's
+// Procedural textures (renderer/PIPELINE.md, "Textures"): the checker's
 // parity and the value noise's lattice, range and continuity.
 #include <algorithm>
 #include <cmath>

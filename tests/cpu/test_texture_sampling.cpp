@@ -1,4 +1,4 @@
-// Texture mapping's rules (renderer/PIPELINE.md, section 8): mipmaps in
+// Texture mapping's rules (renderer/PIPELINE.md, "Textures"): mipmaps in
 // linear light, the three wraps, the level of detail and each filter.
 #include <cmath>
 #include <limits>

@@ -1,4 +1,4 @@
-// Transparency (renderer/PIPELINE.md, section 7, "Transparency"): which
+// Transparency (renderer/PIPELINE.md, "Transparency"): which
 // materials blend, the back-to-front order, the two blending equations on
 // whole frames (against the course's formulas in double precision), depth
 // tested without depth writes, the triangle-id pass, and the shadow rule.

@@ -1,5 +1,5 @@
 // A frame where nothing blends or averages colours is encoded as the lit
-// pass draws it (renderer/PIPELINE.md, section 7, "The colour buffer and the
+// pass draws it (renderer/PIPELINE.md, "The colour buffer and the
 // resolve"): the same bytes as the float buffer and the resolve give, for
 // every writer of the image (the background clear and its full-frame draw,
 // triangles, lines and points), every blending equation's storage of the

@@ -1,5 +1,5 @@
-// Depth and attribute interpolation (renderer/PIPELINE.md, section 6) and
-// the derivatives textures take their level of detail from (section 8): the
+// Depth and attribute interpolation (renderer/PIPELINE.md, "Rasterization") and
+// the derivatives textures take their level of detail from (PIPELINE.md, "Textures"): the
 // CPU's plane equations (renderer/cpu/plane_equations.h) and quad
 // differences (cpu::Interpolation::quadDerivatives) against what llvmpipe
 // writes, bit for bit, on random triangles.

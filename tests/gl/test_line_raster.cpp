@@ -1,4 +1,4 @@
-// Lines and points (renderer/PIPELINE.md, section 6, "Lines and points"):
+// Lines and points (renderer/PIPELINE.md, "Lines and points"):
 // the CPU backend's segments and points (renderer/cpu/line_raster.cpp,
 // line_pass.cpp; the reference renderer's too) against what llvmpipe draws for GL_LINES and GL_POINTS,
 // byte for byte: random segments and points in perspective (many clipped by

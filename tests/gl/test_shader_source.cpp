@@ -97,8 +97,8 @@ RenderSettings settingsWith(Lights lights) {
 
 // lit_MODE with `lights`: a fourth of the pairwise variants, every fourth
 // one from `quarter` on. A quarter per test case, so that ctest compiles
-// them in parallel and none takes long: llvmpipe takes 0.1 s (flat) to
-// 0.4 s (Phong, every map on) a program with a cold shader cache, and the
+// them in parallel and none takes long: with a cold shader cache llvmpipe
+// compiles each program anew (Phong with every map on the longest), and the
 // nine families hold 828 programs.
 constexpr int kQuarters = 4;
 void checkLitPrograms(ShadingMode mode, Lights lights, int quarter) {
@@ -176,7 +176,7 @@ TEST_CASE("the background program compiles and links, and each fog mode in the l
 }
 
 TEST_CASE("the normals stage's lit programs compile and link: flat, Phong and pbr, each draw variant that is not blended") {
-  // FACET_NORMAL_OUTPUT (renderer/PIPELINE.md, section 6, "Stages"); Gouraud frames are drawn as Phong ones.
+  // FACET_NORMAL_OUTPUT (renderer/PIPELINE.md, "Stages"); Gouraud frames are drawn as Phong ones.
   test::GlHarness harness;
   const Scene scene = makeDefaultScene();
   std::vector<int> variants = {0, DrawVariant::kCount - 1 - DrawVariant{.blended = true}.index()};  // none, and every one but blending
@@ -248,8 +248,8 @@ TEST_CASE("stages that do not link: facet::Error names the program, with the dri
 }
 
 // A loop that skips its rest by `continue` made llvmpipe's code for the lit
-// pass ~35 % slower than the same loop skipping by an `if` (the same
-// instructions, one more branch; README, "One loop's continue"), so no
+// pass slower than the same loop skipping by an `if` (the same
+// instructions, one more branch), so no
 // shader has one. Comments are left out of the search.
 TEST_CASE("no shader skips a loop's rest by continue") {
   const std::regex word("\\bcontinue\\b");

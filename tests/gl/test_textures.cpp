@@ -1,4 +1,4 @@
-// Base colour textures (renderer/PIPELINE.md, section 8): the texel values
+// Base colour textures (renderer/PIPELINE.md, "Textures"): the texel values
 // texelFetch gives the shaders, and a textured glTF model.
 #include <cstring>
 #include <optional>

@@ -1,4 +1,4 @@
-// Displacement mapping (renderer/PIPELINE.md, section 8): midpoint
+// Displacement mapping (renderer/PIPELINE.md, "Textures"): midpoint
 // subdivision that shares each edge's new vertex, P' = P + (s·h)·N, normals
 // from the displaced surface, and the height map's own checks.
 #include <algorithm>

@@ -1,4 +1,4 @@
-// The ray-tracing backend (renderer/PIPELINE.md, section 10) held to the
+// The ray-tracing backend (renderer/PIPELINE.md, "Ray tracing") held to the
 // rasterizer where the two must agree (ray casting: the same triangle at
 // every pixel but on triangle edges, the same colour where both see the
 // same triangle), to hand-computed optics (a mirror, a glass slab, total

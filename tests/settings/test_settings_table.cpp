@@ -1,5 +1,6 @@
-// The README's settings table is the field table's: `facet settings --keys`
-// prints it, and this holds the README's copy (between its two markers) to
+// The settings table of docs/settings.md is the field table's: `facet
+// settings --keys` prints it, and this holds the document's copy (between
+// its two markers) to
 // that output, so a key added, renamed or given a new default cannot leave
 // the documentation behind. And every field of the table has a label and,
 // when it measures something, a unit.
@@ -20,8 +21,8 @@
 
 using namespace facet;
 
-TEST_CASE("the README's settings table is settingsTable(), key for key") {
-  const std::string readme = test::readAll(FACET_README);
+TEST_CASE("the settings table of docs/settings.md is settingsTable(), key for key") {
+  const std::string readme = test::readAll(FACET_SETTINGS_DOC);
   const std::string begin = "<!-- settings table: facet settings --keys -->\n", end = "<!-- end of settings table -->";
   const std::size_t from = readme.find(begin), to = readme.find(end);
   REQUIRE(from != std::string::npos);
