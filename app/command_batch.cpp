@@ -19,6 +19,8 @@
 #include "commands.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "compare/diff_case.h"
+#include "exit_status.h"
 #include "output_option.h"
 #include "progress_bar.h"
 #include "vocabulary/limits.h"
@@ -31,7 +33,8 @@ struct BatchCommandOptions {
   int jobs = 0;                     // worker threads; 0: one per core
   std::string junit;
   bool resume = false;
-  std::string shard;                // "I/N"; "" all jobs
+  std::string shard;                // "I/N", when shardGiven
+  bool shardGiven = false;          // --shard was on the command line (an empty value is refused, not "all jobs")
   bool dryRun = false;
   std::string merge;                // the merged report to write
 };
@@ -83,7 +86,7 @@ int mergeReports(const BatchCommandOptions& options) {
 
 int runJobs(const BatchCommandOptions& options) {
   if (options.inputs.size() != 1) throw UsageError("facet batch takes one job file (JOBS.jsonl), or --merge OUT.xml and reports");
-  const Shard shard = options.shard.empty() ? Shard{} : parseShard(options.shard);
+  const Shard shard = options.shardGiven ? parseShard(options.shard) : Shard{};
   const std::string& path = options.inputs.front();
   if (!options.junit.empty()) checkOutputFile(options.junit, {path}, MissingFolders::Refuse);
   const std::vector<JobLine> all = readJobFile(path);
@@ -117,11 +120,18 @@ int runJobs(const BatchCommandOptions& options) {
   bar.finish();
   const double wall = seconds();
   std::fputs(summaryText(outcomes, wall).c_str(), stdout);
+  const int worst = batchExitCode(outcomes);
   if (!options.junit.empty()) {
-    writeFileAtomically(options.junit, junitReport(outcomes, wall));
+    // A report that cannot be written is a file error, and does not hide a worse verdict of the jobs.
+    try {
+      writeFileAtomically(options.junit, junitReport(outcomes, wall));
+    } catch (const Error& e) {
+      printErrorLine(stderr, "", e.what());
+      return std::max(worst, static_cast<int>(Verdict::FileError));
+    }
     std::printf("JUnit report written to %s\n", options.junit.c_str());
   }
-  return batchExitCode(outcomes);
+  return worst;
 }
 
 }  // namespace
@@ -133,11 +143,25 @@ Command addBatchCommand(CLI::App& app) {
   command->add_option("--jobs", options->jobs, "jobs run at once (0: one per core)")->check(CLI::Range(0, kMaxParallelJobs));
   refuseEmptyName(command->add_option("--junit", options->junit, "write a JUnit XML report of the jobs to this file"));
   command->add_flag("--resume", options->resume, "skip jobs whose output exists and was rendered from the same inputs (scene, settings, size, backend, facet version)");
-  command->add_option("--shard", options->shard, "I/N: run only the I-th of N slices of the jobs (job k when k mod N = I; I from 0)");
+  command->add_option("--shard", options->shard, "I/N: run only the I-th of N slices of the jobs (job k when k mod N = I; I from 0)")
+      ->each([options](const std::string&) { options->shardGiven = true; });
   command->add_flag("--dry-run", options->dryRun, "list the jobs (of the shard) that would run, and render nothing");
   refuseEmptyName(command->add_option("--merge", options->merge, "OUT.xml: join the --junit reports given as arguments into one"));
   command->footer(kFooter);
-  return [options]() { return options->merge.empty() ? runJobs(*options) : mergeReports(*options); };
+  // A file the command itself reads or writes (the job file, --junit,
+  // --merge's reports) that is missing, unreadable or unwritable is the
+  // FILE ERROR verdict, 4, as in facet diff; the command line (64) and
+  // internal errors (70) go on to main.
+  return [options]() {
+    try {
+      return options->merge.empty() ? runJobs(*options) : mergeReports(*options);
+    } catch (const UsageError&) {
+      throw;
+    } catch (const Error& e) {
+      printErrorLine(stderr, "", e.what());
+    }
+    return static_cast<int>(Verdict::FileError);
+  };
 }
 
 }  // namespace facet
