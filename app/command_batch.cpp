@@ -59,7 +59,8 @@ output that cannot be written) fails alone, named by its line; the others run.
 Exit codes: the worst job's, as facet diff's:
   0 PASS (every frame written; compared ones within the warn thresholds)
   1 WARNING   2 FAILURE   3 different sizes
-  4 a job could not be done (bad line, missing file, unwritable output)
+  4 a job could not be done (bad line, missing file, unwritable output), or
+    the job file, a --junit report or a --merge input could not be read or written
   64 the command line is wrong (also --shard 0/0, 5/3)   70 internal error
 
 --shard I/N runs job k (0-based, counting job lines only) when k mod N = I;
