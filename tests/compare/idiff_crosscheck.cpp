@@ -280,7 +280,7 @@ bool samePrinted(double a, double b, double slack = 0.0) {
 
 // What facet diff gives where it parts from idiff on purpose. Every case
 // also allows one: where at most -allowfailures pixels (default 0) are over
-// -fail, idiff 2.4 passes without looking at the warn thresholds and the
+// -fail, idiff (2.4, 2.5) passes without looking at the warn thresholds and the
 // hard limits; facet applies them (its own rule is held by the unit tests).
 enum class Expect {
   Same,                   // every figure and the verdict
@@ -494,12 +494,12 @@ int main(int argc, char** argv) {
         }
         case Expect::DifferentSize:
           check.require(facetOut.exitCode == 3, "facet should refuse different sizes with exit code 3, gave " + std::to_string(facetOut.exitCode));
-          check.require(i.exitCode == 2 && i.overFail > 0, "idiff 2.4 compares different sizes (FAILURE), gave " + std::to_string(i.exitCode));
+          check.require(i.exitCode == 2 && i.overFail > 0, "idiff compares different sizes (FAILURE), gave " + std::to_string(i.exitCode));
           break;
         case Expect::MissingAlphaOpaque: {
           const Figures f = parseFacet(facetOut);
           check.require(f.exitCode == 0 && f.rms == 0.0, "facet should find the RGB file equal to the opaque RGBA one");
-          check.require(i.exitCode == 2 && i.maxError == 1.0, "idiff 2.4 takes the RGB file's alpha for 0: max error 1, FAILURE");
+          check.require(i.exitCode == 2 && i.maxError == 1.0, "idiff takes the RGB file's alpha for 0: max error 1, FAILURE");
           break;
         }
       }
