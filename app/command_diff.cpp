@@ -62,7 +62,7 @@ The figures are idiff's: mean error, RMS error and PSNR over the channels
 the files store (R, G, B and A; a grey file Y), max error and where it is
 first met, in fractions of full scale; counts of pixels over --fail and
 --warn. Positions are (x, y) from the top-left pixel, as idiff and image
-viewers give them. Where facet diff and idiff 2.4 part (see docs/diff.md):
+viewers give them. Where facet diff and idiff part (see docs/diff.md):
   - idiff compares 32-bit floats: at a threshold of exactly N/255 a
     difference of N levels counts as over it for some values and not for
     others; here it never does.

@@ -33,6 +33,8 @@ packages=(
   libembree-dev          # Intel Embree (3 on Debian 12, 4 on 13): the peer facet bench measures the ray tracer's BVH against
   clang "$clang_rt"       # libFuzzer and its sanitizer runtimes (scripts/fuzz.sh)
   help2man               # the man page, written from facet --help (packaging/man_page.sh)
+  file dpkg-dev          # the .deb's Depends, computed from its binaries by CPack's dpkg-shlibdeps (which needs file) on each release
+  libxml2-utils          # xmllint: the test that facet batch's JUnit report is well-formed XML (tests/cli/batch_run.cmake)
   python3-yaml           # the test that reads docs/batch.md's Kubernetes Job (tests/cli/batch_docs.py)
   python3-junitparser    # a JUnit consumer: the test that reads facet batch's report with it (tests/cli/junit_consumer.py)
   openimageio-tools      # OpenImageIO's idiff: only the test that cross-checks facet diff against it (tests/compare/idiff_crosscheck.cpp)

@@ -1,7 +1,7 @@
 #pragma once
 // GLFW for the viewer: the library, and one window with an OpenGL 4.5 core
 // context, current on the thread that made it. Failures (no display, no
-// OpenGL 4.5) throw facet::Error with GLFW's own description.
+// OpenGL 4.5) throw facet::Error naming the problem in facet's words.
 #include <string>
 #include <vector>
 

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -167,9 +168,26 @@ bool imageBytesInBuffer(const tinygltf::Model& model, int bufferView, const unsi
          static_cast<std::size_t>(size) == view.byteLength && bytes == data.data() + view.byteOffset;
 }
 
+// A PNG's width and height from its IHDR chunk, which the format places
+// right after the signature. Read here rather than by stbi_info_from_memory:
+// stb_image 2.30 (Debian 13) scans on past IHDR to the image data before it
+// answers, 2.27 (Debian 12) stops at IHDR, so a file cut after its header
+// would be priced on one release and not on the other.
+bool pngSize(const unsigned char* bytes, int size, long long& width, long long& height) {
+  if (size < 8 + 8 + 13) return false;
+  const auto be32 = [&](int at) {
+    return std::uint32_t{bytes[at]} << 24 | std::uint32_t{bytes[at + 1]} << 16 | std::uint32_t{bytes[at + 2]} << 8 | std::uint32_t{bytes[at + 3]};
+  };
+  if (be32(8) != 13 || std::memcmp(bytes + 12, "IHDR", 4) != 0) return false;
+  width = be32(16);
+  height = be32(20);
+  return true;
+}
+
 // Accepts PNG and JPEG only, after checking magic bytes and dimensions
-// (stbi_info_from_memory) so that stb_image never sees an absurd header,
-// and prices the decoded pixels against the scene budget from that header.
+// (a PNG's IHDR, a JPEG's frame header by stbi_info_from_memory) so that
+// stb_image never sees an absurd header, and prices the decoded pixels
+// against the scene budget from that header.
 // It keeps the encoded bytes; decodeImage decodes them later.
 // An image that cannot be read is left empty with a warning: the model is
 // still drawn, untextured.
@@ -193,10 +211,18 @@ bool loadImage(tinygltf::Image* image, const int index, std::string* err, std::s
   const bool png = size >= 8 && std::memcmp(bytes, kPng, 8) == 0;
   const bool jpeg = size >= 3 && std::memcmp(bytes, kJpeg, 3) == 0;
   if (!png && !jpeg) return skip("not a PNG or JPEG image");
-  int w = 0, h = 0, channels = 0;
-  if (!stbi_info_from_memory(bytes, size, &w, &h, &channels)) return skip("unreadable image header");
-  if (w <= 0 || h <= 0 || w > kMaxTextureSide || h > kMaxTextureSide)
-    return skip("image size " + std::to_string(w) + "x" + std::to_string(h) + " is out of range");
+  long long width = 0, height = 0;
+  if (png) {
+    if (!pngSize(bytes, size, width, height)) return skip("unreadable image header");
+  } else {
+    int jw = 0, jh = 0, channels = 0;
+    if (!stbi_info_from_memory(bytes, size, &jw, &jh, &channels)) return skip("unreadable image header");
+    width = jw;
+    height = jh;
+  }
+  if (width <= 0 || height <= 0 || width > kMaxTextureSide || height > kMaxTextureSide)
+    return skip("image size " + std::to_string(width) + "x" + std::to_string(height) + " is out of range");
+  const int w = static_cast<int>(width), h = static_cast<int>(height);
   try {  // from the header, before anything is decoded
     loading.budget->charge(mipChainPixels(w, h) * 4, name + ": " + std::to_string(w) + "x" + std::to_string(h) + " RGBA pixels and their mipmaps");
   } catch (const Error& e) {

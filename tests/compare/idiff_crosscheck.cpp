@@ -91,14 +91,33 @@ Picture withNoise(Picture p, int amplitude, std::mt19937& random) {
   return p;
 }
 
-// What OpenImageIO 2.4 makes of a PNG with alpha as it reads it: each colour
-// sample times alpha / 255, rounded down (png_associateAlpha, gamma 1).
-Picture premultiplied(Picture p) {
+// How idiff's OpenImageIO premultiplies a PNG's colours by its alpha as it
+// reads it, which changed with 2.5 (Debian 13): the files here carry no gAMA
+// or sRGB chunk, which 2.5 takes for sRGB and premultiplies in linear light.
+enum class Premultiply {
+  Stored,       // 2.4: each colour sample times alpha / 255, rounded down (png_associateAlpha, gamma 1)
+  LinearLight,  // 2.5: sRGB decoded to linear, times alpha, encoded again, rounded to the nearest level
+};
+
+float srgbToLinear(float v) { return v <= 0.04045f ? v * (1.0f / 12.92f) : std::pow((v + 0.055f) * (1.0f / 1.055f), 2.4f); }
+float linearToSrgb(float v) { return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f; }
+
+Picture premultiplied(Picture p, Premultiply how) {
   if (!p.hasAlpha()) return p;
   const int alpha = p.channels() - 1;
   for (int y = 0; y < p.height; ++y)
-    for (int x = 0; x < p.width; ++x)
-      for (int c = 0; c < alpha; ++c) p.at(x, y, c) = p.at(x, y, c) * p.at(x, y, alpha) / 255;
+    for (int x = 0; x < p.width; ++x) {
+      const int a = p.at(x, y, alpha);
+      for (int c = 0; c < alpha; ++c) {
+        int& v = p.at(x, y, c);
+        if (how == Premultiply::Stored) {
+          v = v * a / 255;
+        } else if (a != 255) {
+          const float f = linearToSrgb(srgbToLinear(static_cast<float>(v) * (1.0f / 255.0f)) * (static_cast<float>(a) * (1.0f / 255.0f)));
+          v = static_cast<int>(std::clamp(f * 255.0f + 0.5f, 0.0f, 255.0f));
+        }
+      }
+    }
   return p;
 }
 
@@ -261,7 +280,7 @@ bool samePrinted(double a, double b, double slack = 0.0) {
 
 // What facet diff gives where it parts from idiff on purpose. Every case
 // also allows one: where at most -allowfailures pixels (default 0) are over
-// -fail, idiff 2.4 passes without looking at the warn thresholds and the
+// -fail, idiff (2.4, 2.5) passes without looking at the warn thresholds and the
 // hard limits; facet applies them (its own rule is held by the unit tests).
 enum class Expect {
   Same,                   // every figure and the verdict
@@ -418,6 +437,16 @@ int main(int argc, char** argv) {
     std::printf("skipped: no idiff on PATH (Debian package openimageio-tools, see scripts/install-deps.sh)\n");
     return 77;
   }
+  // idiff's OpenImageIO, from the second line of its help: "OpenImageIO 2.4.7.1 http://...".
+  const std::string version = capture(run({*idiff, "--help"}).text, "OpenImageIO ([0-9]+\\.[0-9]+)");
+  if (version.empty()) {
+    std::printf("cannot tell idiff's OpenImageIO version from idiff --help\n");
+    return 1;
+  }
+  const int major = std::stoi(version), minor = std::stoi(version.substr(version.find('.') + 1));
+  const Premultiply premultiply = major > 2 || (major == 2 && minor >= 5) ? Premultiply::LinearLight : Premultiply::Stored;
+  std::printf("idiff of OpenImageIO %s: translucent pixels premultiplied %s\n", version.c_str(),
+              premultiply == Premultiply::Stored ? "as stored" : "in linear light");
   const std::string facet = argv[1];
   const fs::path work = argv[2];
   fs::remove_all(work);
@@ -453,7 +482,7 @@ int main(int argc, char** argv) {
         case Expect::PremultipliedSame: {
           const std::string pe = (work / (c.name + "_expected_premultiplied.png")).string();
           const std::string pa = (work / (c.name + "_actual_premultiplied.png")).string();
-          const Picture expected = premultiplied(c.expected), actual = premultiplied(c.actual);
+          const Picture expected = premultiplied(c.expected, premultiply), actual = premultiplied(c.actual, premultiply);
           writePng(pe, expected);
           writePng(pa, actual);
           const Figures stored = parseFacet(facetOut);
@@ -465,12 +494,12 @@ int main(int argc, char** argv) {
         }
         case Expect::DifferentSize:
           check.require(facetOut.exitCode == 3, "facet should refuse different sizes with exit code 3, gave " + std::to_string(facetOut.exitCode));
-          check.require(i.exitCode == 2 && i.overFail > 0, "idiff 2.4 compares different sizes (FAILURE), gave " + std::to_string(i.exitCode));
+          check.require(i.exitCode == 2 && i.overFail > 0, "idiff compares different sizes (FAILURE), gave " + std::to_string(i.exitCode));
           break;
         case Expect::MissingAlphaOpaque: {
           const Figures f = parseFacet(facetOut);
           check.require(f.exitCode == 0 && f.rms == 0.0, "facet should find the RGB file equal to the opaque RGBA one");
-          check.require(i.exitCode == 2 && i.maxError == 1.0, "idiff 2.4 takes the RGB file's alpha for 0: max error 1, FAILURE");
+          check.require(i.exitCode == 2 && i.maxError == 1.0, "idiff takes the RGB file's alpha for 0: max error 1, FAILURE");
           break;
         }
       }

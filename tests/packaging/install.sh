@@ -21,6 +21,10 @@ case $mode in
     root=$scratch
     ;;
   deb)
+    # CPack computes each package's Depends with dpkg-shlibdeps, which needs file(1).
+    for tool in file dpkg-shlibdeps; do
+      command -v "$tool" >/dev/null || fail "$tool is not installed (Debian packages file and dpkg-dev, scripts/install-deps.sh)"
+    done
     (cd "$build" && cpack -G DEB -B "$scratch/packages" >/dev/null) || fail "cpack failed"
     for deb in "$scratch"/packages/*.deb; do
       dpkg-deb -x "$deb" "$scratch/root"
