@@ -7,6 +7,7 @@
 
 #include "common/error.h"
 #include "common/quote.h"
+#include "pipeline/frame_checks.h"
 #include "pipeline/view_setup.h"
 #include "output_option.h"
 #include "settings/settings_json.h"
@@ -126,8 +127,16 @@ CLI::Validator numberIn(double min, double max) {
 }
 
 RenderSettings settingsFor(const CommonOptions& options, const Scene& scene) {
-  RenderSettings settings =
-      settingsFor(options.settingsPath.empty() ? RenderSettings{} : loadSettingsFile(options.settingsPath), options.assignments, options.size, scene);
+  RenderSettings base;
+  if (!options.settingsPath.empty()) {
+    base = loadSettingsFile(options.settingsPath);
+    try {
+      checkSettings(base);
+    } catch (const Error& e) {
+      throw Error(options.settingsPath + ": " + e.what());
+    }
+  }
+  RenderSettings settings = settingsFor(base, options.assignments, options.size, scene);
   // After the size: the auto camera is fitted to the image's aspect.
   if (options.orbit.moves()) settings.camera = orbitCamera(resolveCamera(scene, settings), options.orbit);
   return settings;
@@ -150,6 +159,16 @@ RenderSettings settingsFor(RenderSettings settings, const std::vector<std::strin
     }
   }
   if (!size.empty()) parseSize(size, settings.width, settings.height);  // --size wins over --set width
+  // What no single key's range says (a transfer function, a camera, an
+  // emitter's drag against its step), checked now rather than at frame time.
+  try {
+    checkSettings(settings);
+  } catch (const UsageError&) {
+    throw;
+  } catch (const Error& e) {
+    if (assignments.empty()) throw;
+    throw UsageError(e.what());
+  }
   return settings;
 }
 

@@ -299,11 +299,18 @@ struct TableRanges {
   void choice(const FieldInfo&, E, const std::array<std::string_view, N>&) {}
 };
 
-// The table's ranges first (with `step`, the step the particles are integrated
-// with, as the emitter's), then what no range can say.
+// The time, then the emitter (checkEmitter).
 void validate(const Emitter& e, float time, float step, const std::string& key) {
   if (!std::isfinite(time)) throw Error("time: " + number(time) + " is not a finite number of seconds");
   if (time < 0.0f) throw Error("time: " + number(time) + " s is before 0");
+  checkEmitter(e, step, key);
+}
+
+}  // namespace
+
+// The table's ranges first (with `step`, the step the particles are integrated
+// with, as the emitter's), then what no range can say.
+void checkEmitter(const Emitter& e, float step, const std::string& key) {
   Emitter checked = e;
   checked.step = step;
   TableRanges ranges{key};
@@ -321,8 +328,6 @@ void validate(const Emitter& e, float time, float step, const std::string& key) 
     throw Error(key + ".drag: " + number(e.drag) + " kg/s over " + key + ".mass " + number(e.mass) + " kg times " + key + ".step " + number(step) +
                 " s is " + number(dragStep) + ", more than 1: the step overshoots the wind's velocity");
 }
-
-}  // namespace
 
 std::uint64_t aliveParticleCount(const Emitter& emitter, float time) {
   // An emitter simulateParticles refuses for its rate, startTime or lifetime (or a time not finite) has none.

@@ -5,6 +5,7 @@
 // alone, so that the state at T is the same for every backend, thread count
 // and order of evaluation.
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -27,6 +28,13 @@ struct Particle {
 // How many particles `emitter` has alive at `time` (those born in
 // (time − lifetime, time]), counted without simulating.
 std::uint64_t aliveParticleCount(const Emitter& emitter, float time);
+
+// What no time changes about an emitter integrated with `step`: the
+// settings' field table's ranges, a direction, at most kMaxStepsPerParticle
+// steps a particle, and a drag the step does not overshoot. Throws
+// facet::Error naming `key` ("particles.0") and the field. simulateParticles
+// runs it; the settings run it as they are read.
+void checkEmitter(const Emitter& emitter, float step, const std::string& key);
 
 // The particles alive at `time`, by increasing index, integrated with the
 // fixed `step` (seconds) from their birth: per step, a = g + (k/m)·(wind − v),

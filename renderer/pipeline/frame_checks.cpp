@@ -7,7 +7,10 @@
 #include "common/error.h"
 #include "common/quote.h"
 #include "image/mipmap.h"
+#include "math/eye_matrix.h"
+#include "particles/particle_system.h"
 #include "scene/memory_budget.h"
+#include "scene/transfer_function.h"
 
 namespace facet {
 namespace {
@@ -89,6 +92,27 @@ void checkFrameMemory(const Scene& scene, const FrameInputs& frame) {
 }
 
 }  // namespace
+
+void checkEyeFrame(const CameraSettings& camera) {
+  if (const char* problem = eyeFrameProblem(camera.eye, camera.reference, camera.up))
+    throw Error(std::string("settings key 'camera': eye, reference and up do not define a view (") + problem + ")");
+}
+
+void checkSettings(const RenderSettings& settings) {
+  // The control points do not depend on the data range; a preset fits any.
+  parseTransferFunction(settings.volume.transfer, 0.0f, 1.0f);
+  if (settings.camera.source == Source::Manual) checkEyeFrame(settings.camera);
+  for (std::size_t i = 0; i < settings.particles.size(); ++i) {
+    const std::string key = "particles." + std::to_string(i);
+    try {
+      checkEmitter(settings.particles[i], settings.particles[i].step, key);
+    } catch (const Error& e) {
+      const std::string message = e.what();  // "particles.0.drag: ..."
+      const std::size_t colon = message.find(':');
+      throw Error("settings key '" + message.substr(0, colon) + "'" + message.substr(colon));
+    }
+  }
+}
 
 void checkScene(const Scene& scene) {
   for (std::size_t i = 0; i < scene.instances.size(); ++i) {

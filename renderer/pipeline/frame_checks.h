@@ -10,8 +10,21 @@
 
 #include "pipeline/frame_inputs.h"
 #include "scene/scene.h"
+#include "settings/render_settings.h"
 
 namespace facet {
+
+// What the settings alone say is wrong, whatever the scene, checked as they
+// are read (a settings file, each command line) rather than when a frame
+// is drawn: volume.transfer parses, a manual camera's eye, reference and up
+// define a view, and each particles.N emitter passes checkEmitter. Throws
+// facet::Error naming the settings key.
+void checkSettings(const RenderSettings& settings);
+
+// The camera's eye, reference and up define a view (eye matrix, course
+// formula: up not zero nor along the view direction, eye not at the
+// reference), or facet::Error naming settings key 'camera'.
+void checkEyeFrame(const CameraSettings& camera);
 
 // Every instance names a mesh that exists; every mesh has one normal per
 // position, no texture coordinates or one pair per position, only indices

@@ -61,8 +61,7 @@ FrameInputs buildFrameInputs(const Scene& scene, const RenderSettings& settings)
   f.height = settings.height;
   f.camera = resolveCamera(scene, settings);
   const CameraSettings& c = f.camera;
-  if (const char* problem = eyeFrameProblem(c.eye, c.reference, c.up))
-    throw Error(std::string("settings key 'camera': eye, reference and up do not define a view (") + problem + ")");
+  checkEyeFrame(c);
   if (!(c.near > 0.0f) || !(c.far > c.near)) throw Error("settings key 'camera.far': must be greater than camera.near > 0");
 
   const float aspect = static_cast<float>(f.width) / static_cast<float>(f.height);
