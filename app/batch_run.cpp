@@ -136,11 +136,17 @@ std::string figuresLine(const DiffResult& r) {
          formatNumber(r.rmse) + ", PSNR " + formatNumber(r.psnr) + " dB";
 }
 
-bool upToDate(const std::string& output, const std::string& hash) {
+// The output holds the hash of these inputs, and decodes whole, at the
+// size asked, by the reader facet diff uses: an image damaged after it was
+// written (a bad CRC, a cut IDAT) is rendered again, not kept.
+bool upToDate(const std::string& output, const std::string& hash, int width, int height) {
   std::error_code ec;
   if (!fs::is_regular_file(output, ec)) return false;
   try {
-    return textChunk(readFile(output, kMaxPngFileBytes), kInputsKeyword) == hash;
+    const std::string bytes = readFile(output, kMaxPngFileBytes);
+    if (textChunk(bytes, kInputsKeyword) != hash) return false;
+    const Image image = decodePng(bytes, output);
+    return image.width() == width && image.height() == height;
   } catch (const Error&) {
     return false;  // unreadable: rendered again, and the write says what is wrong
   }
@@ -157,7 +163,7 @@ void runJob(const BatchJob& job, const BatchOptions& options, SceneCache& scenes
   // The scene's files, and the maps, volume and sprites the settings name.
   const std::string files = loaded->hashed + digests.of(namedFiles(asked));
   const std::string hash = inputsHash(files, settingsText, asked.width, asked.height, job.backend, options.version);
-  if (options.resume && upToDate(job.output, hash)) {
+  if (options.resume && upToDate(job.output, hash, asked.width, asked.height)) {
     outcome.status = JobStatus::Skipped;
   } else {
     const std::string key = job.scene + '\n' + settingsText;

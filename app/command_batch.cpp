@@ -143,7 +143,7 @@ Command addBatchCommand(CLI::App& app) {
   command->add_option("jobs-file", options->inputs, "JOBS.jsonl; with --merge, the JUnit reports to join");
   command->add_option("--jobs", options->jobs, "jobs run at once (0: one per core)")->check(CLI::Range(0, kMaxParallelJobs));
   refuseEmptyName(command->add_option("--junit", options->junit, "write a JUnit XML report of the jobs to this file"));
-  command->add_flag("--resume", options->resume, "skip jobs whose output exists and was rendered from the same inputs (scene, settings, size, backend, facet version)");
+  command->add_flag("--resume", options->resume, "skip jobs whose output exists, decodes, and was rendered from the same inputs (scene, settings, size, backend, facet version)");
   command->add_option("--shard", options->shard, "I/N: run only the I-th of N slices of the jobs (job k when k mod N = I; I from 0)")
       ->each([options](const std::string&) { options->shardGiven = true; });
   command->add_flag("--dry-run", options->dryRun, "list the jobs (of the shard) that would run, and render nothing");

@@ -7,6 +7,7 @@
 #  - the JUnit report is well-formed XML (xmllint) with the counts, and a
 #    JUnit consumer (junitparser, -DPYTHON) reads the same counts and results;
 #  - --resume renders again when a file the settings name changes;
+#  - --resume renders again an output whose image data is damaged;
 #  - --resume skips every written job, and renders again after a settings
 #    change or a new texture under a glTF (-DASSIMP: the assimp glTF2 models);
 #  - --shard I/N (N = 1, 2, 3, 7) of a 20-job file lists every job exactly once,
@@ -97,6 +98,15 @@ facet_run_command(COMMAND ${FACET} batch ${DIR}/box.jsonl --resume EXPECT 0)
 if(NOT out MATCHES "1 jobs?: 0 rendered, 1 skipped")
   message(FATAL_ERROR "--resume did not skip the unchanged textured job${report}")
 endif()
+# An output damaged after it was written (one byte of its IDAT flipped, the
+# hash chunk intact) is rendered again, as facet diff would refuse to read it.
+execute_process(COMMAND ${PYTHON} -c "import sys; p = sys.argv[1]; b = bytearray(open(p, 'rb').read()); i = b.find(b'IDAT') + 6; b[i] ^= 0xff; open(p, 'wb').write(b)"
+                ${DIR}/out/box.png)
+facet_run_command(COMMAND ${FACET} batch ${DIR}/box.jsonl --resume EXPECT 0)
+if(NOT out MATCHES "1 jobs?: 1 rendered, 0 skipped")
+  message(FATAL_ERROR "--resume kept an output whose image data is damaged${report}")
+endif()
+facet_run_command(COMMAND ${FACET} diff ${DIR}/out/box.png ${DIR}/out/box.png EXPECT 0)
 file(COPY_FILE ${DIR}/out/cpu.png ${DIR}/box/CesiumLogoFlat.png)
 facet_run_command(COMMAND ${FACET} batch ${DIR}/box.jsonl --resume EXPECT 0)
 if(NOT out MATCHES "1 jobs?: 1 rendered, 0 skipped")
