@@ -92,7 +92,8 @@ Command addInfoCommand(CLI::App& app) {
   command->add_option("--write-isosurface", *isosurface, "write the volume's iso-surface (volume.mode=isosurface) as a glTF 2.0 file");
   return [options, isosurface]() {
     if (!options->output.empty()) checkOutputFile(options->output, {options->scenePath, options->settingsPath});
-    if (!isosurface->empty()) checkOutputFile(*isosurface, {options->scenePath, options->settingsPath, options->output});
+    if (!isosurface->empty()) checkOutputFile(*isosurface, {options->scenePath, options->settingsPath});
+    if (!options->output.empty() && !isosurface->empty()) checkDistinctOutputs({{options->output, "-o"}, {*isosurface, "--write-isosurface"}});
     const auto loaded = std::make_shared<const Scene>(loadScene(options->scenePath));
     const FrameScene frame = FrameSpine(loaded).scene(settingsFor(*options, *loaded));
     const Scene& scene = *frame.scene;

@@ -23,6 +23,7 @@
 #include "commands.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "settings/settings_files.h"
 #include "common/quote.h"
 #include "common/stopwatch.h"
 #include "compare/heat_map.h"
@@ -132,20 +133,28 @@ Command addRenderCommand(CLI::App& app) {
     const std::vector<std::string> inputs{options->common.scenePath, options->common.settingsPath};
     for (const std::string& output : outputs) checkOutputFile(output, inputs);
     std::vector<std::string> reports;
+    std::vector<NamedOutput> toWrite;
+    for (const std::string& output : outputs) toWrite.push_back({output, "-o"});
     if (!options->shadowReport.empty()) {
       if (options->backend == "ray") throw UsageError("--shadow-report compares a rasterizer with ray casting: use it with --backend gl, cpu or reference");
       if (stage.kind != StageKind::Image) throw UsageError("--shadow-report compares images: use it with --output-stage image");
       reports = frameNames(options->shadowReport, "--shadow-report", names, frames);
-      std::vector<std::string> notThese = inputs;
-      notThese.insert(notThese.end(), outputs.begin(), outputs.end());
-      for (const std::string& report : reports) checkOutputFile(report, notThese);
+      for (const std::string& report : reports) checkOutputFile(report, inputs);
+      for (const std::string& report : reports) toWrite.push_back({report, "--shadow-report"});
     }
+    checkDistinctOutputs(toWrite);
     const auto loaded = std::make_shared<const Scene>(loadScene(options->common.scenePath));
     // The camera moves are the spine's, made after the volume's box joins the
     // scene: the auto camera frames it, and sprites face the moved camera.
     CommonOptions unmoved = options->common;
     unmoved.orbit = CameraOrbit{};
     const RenderSettings asked = settingsFor(unmoved, *loaded);
+    // Before drawing: no output is a file the scene was read from (its
+    // buffers, images) or one the settings name (maps, volume, sprites).
+    std::vector<std::string> read = loaded->files;
+    for (const std::string& file : namedFiles(asked)) read.push_back(file);
+    for (const NamedOutput& output : toWrite)
+      if (const std::string same = sameFileAsInput(output.path, read); !same.empty()) throw Error(same);
     FrameSpine spine(loaded, options->threads);
     // Frame k of a turntable: the asked move, turned a further k/N of a circle about camera.up.
     const auto orbitOf = [&](int k) {

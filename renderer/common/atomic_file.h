@@ -31,15 +31,27 @@ enum class MissingFolders { Refuse, Created };
 // Checks, before any work, that writeFileAtomically(path) can succeed: path is
 // not empty, not a folder, not a kind of file it refuses, its folder exists
 // (or, with MissingFolders::Created, the nearest existing one is a folder)
-// and is writable, and path is not the same file (device and inode, whatever
-// the spelling or links) as any of `inputs` (paths that do not exist are
-// skipped). Throws facet::Error naming the path and the problem.
+// and is writable, and path is not the same file as any of `inputs` (device
+// and inode when both exist, whatever the spelling or links; otherwise the
+// canonical names, so that an output not written yet is caught too). Throws facet::Error naming the path and the problem.
 void checkOutputFile(const std::string& path, const std::vector<std::string>& inputs,
                      MissingFolders missing = MissingFolders::Refuse);
 
 // The error message of `path` refused for being one of `inputs` (an empty
 // string when it is none of them): shared by file and folder outputs.
 std::string sameFileAsInput(const std::string& path, const std::vector<std::string>& inputs);
+
+// An output of a command and the option that names it ("-o", "--shadow-report").
+struct NamedOutput {
+  std::string path;
+  std::string option;
+};
+
+// Throws facet::Error when two of `outputs` are one file: the same existing
+// file (device and inode), or the same canonical name for one not written
+// yet ("out/a.png", "$PWD/out/a.png" and "link/a.png" alike), naming the
+// path and both options, before any of them is written.
+void checkDistinctOutputs(const std::vector<NamedOutput>& outputs);
 
 // Throws facet::Error naming `output` unless new entries can be made in
 // `folder`: it exists (or, with MissingFolders::Created, its nearest
