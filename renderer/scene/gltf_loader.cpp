@@ -1072,8 +1072,9 @@ struct NodeWalker {
   }
 };
 
-const std::set<std::string> kSupportedExtensions = {"KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_materials_ior",
-                                                    "KHR_materials_transmission", "KHR_materials_volume", "KHR_texture_transform"};
+const std::set<std::string> kSupportedExtensions = {"KHR_lights_punctual",        "KHR_materials_emissive_strength", "KHR_materials_ior",
+                                                    "KHR_materials_transmission", "KHR_materials_unlit",             "KHR_materials_volume",
+                                                    "KHR_texture_transform"};
 
 // glTF's rule: a file whose extensionsRequired names an extension the reader
 // lacks is refused. Checked before tinygltf parses, which would otherwise

@@ -739,6 +739,19 @@ TEST_CASE("glTF KHR_materials_transmission, _ior and _volume: what the ray trace
   CHECK_NOTHROW(loadJson(j));
 }
 
+TEST_CASE("glTF KHR_materials_unlit is supported: used or required, it loads without a warning and the material is unlit") {
+  nlohmann::json j = triangle();
+  j["materials"] = {{{"extensions", {{"KHR_materials_unlit", nlohmann::json::object()}}}}};
+  j["meshes"][0]["primitives"][0]["material"] = 0;
+  j["extensionsUsed"] = {"KHR_materials_unlit"};
+  j["extensionsRequired"] = {"KHR_materials_unlit"};
+  const Scene scene = loadJson(j, "unlit.gltf");
+  CHECK(scene.warnings.empty());
+  REQUIRE(scene.materials.size() == 1);
+  CHECK(scene.materials[0].unlit);
+  CHECK(scene.triangleCount() == 1);
+}
+
 TEST_CASE("glTF bad input: positions that cannot be framed are dropped, naming the accessor, and the rest is framed") {
   // Triangle 0 at the origin, triangle 1 at 3e19 (its bounding radius overflowed float: an empty image), triangle 2 with a NaN.
   const float nan = std::numeric_limits<float>::quiet_NaN();
