@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
@@ -377,8 +378,10 @@ void readRefraction(const tinygltf::Material& src, const std::string& where, Mat
   }
   if (const auto found = src.extensions.find("KHR_materials_ior"); found != src.extensions.end()) {
     if (const auto n = property(found->second, "KHR_materials_ior", "ior")) {
-      if (std::isfinite(*n) && *n >= 1) material.ior = static_cast<float>(*n);
-      else warnings.push_back(where + ": KHR_materials_ior.ior " + std::to_string(*n) + " is below 1; ignored");
+      // 0 is the extension's specular-glossiness compatibility mode: an infinite index, whose Fresnel term is 1 at every angle.
+      if (*n == 0) material.ior = std::numeric_limits<float>::infinity();
+      else if (std::isfinite(*n) && *n >= 1) material.ior = static_cast<float>(*n);
+      else warnings.push_back(where + ": KHR_materials_ior.ior " + std::to_string(*n) + " is neither 0 nor 1 or more; ignored");
     }
   }
   if (const auto found = src.extensions.find("KHR_materials_volume"); found != src.extensions.end()) {

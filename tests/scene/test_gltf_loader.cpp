@@ -17,6 +17,7 @@
 #include "common/json_text.h"
 #include "pipeline/frame_inputs.h"
 #include "pipeline/material_coefficients.h"
+#include "ray/optics.h"
 #include "scene/gltf_loader.h"
 #include "scene/load_scene.h"
 #include "scene/memory_budget.h"
@@ -725,7 +726,7 @@ TEST_CASE("glTF KHR_materials_transmission, _ior and _volume: what the ray trace
   CHECK(odd.materials[0].ior == 1.5f);
   CHECK(std::isinf(odd.materials[0].attenuationDistance));
   CHECK(hasWarning(odd, "materials[0]: KHR_materials_transmission.transmissionFactor 1.500000 is not in [0, 1]; ignored"));
-  CHECK(hasWarning(odd, "materials[0]: KHR_materials_ior.ior 0.500000 is below 1; ignored"));
+  CHECK(hasWarning(odd, "materials[0]: KHR_materials_ior.ior 0.500000 is neither 0 nor 1 or more; ignored"));
 
   j["materials"][0]["extensions"]["KHR_materials_ior"]["ior"] = "glass";
   CHECK_THROWS_WITH_AS(loadJson(j), doctest::Contains("materials[0]: KHR_materials_ior.ior is not a number"), Error);
@@ -750,6 +751,24 @@ TEST_CASE("glTF KHR_materials_unlit is supported: used or required, it loads wit
   REQUIRE(scene.materials.size() == 1);
   CHECK(scene.materials[0].unlit);
   CHECK(scene.triangleCount() == 1);
+}
+
+TEST_CASE("glTF KHR_materials_ior's ior 0 is valid: an infinite index, whose Fresnel term reflects all light at every angle") {
+  nlohmann::json j = triangle();
+  j["materials"] = {{{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}}, {"KHR_materials_ior", {{"ior", 0}}}}}}};
+  j["extensionsUsed"] = {"KHR_materials_transmission", "KHR_materials_ior"};
+  const Scene scene = loadJson(j, "mirror.gltf");
+  CHECK(scene.warnings.empty());
+  REQUIRE(scene.materials.size() == 1);
+  CHECK(std::isinf(scene.materials[0].ior));
+  CHECK(std::isinf(courseMaterial(scene.materials[0], {}).ior));
+  // Entering or leaving, at any angle: F = 1, nothing is transmitted.
+  const float inf = std::numeric_limits<float>::infinity();
+  for (const float c : {0.0f, 0.5f, 1.0f}) {
+    CHECK(ray::fresnelSchlick(1.0f, inf, c, 1.0f) == 1.0f);
+    CHECK(ray::fresnelSchlick(inf, 1.0f, c, c) == 1.0f);
+  }
+  CHECK_FALSE(ray::refracted(glm::vec3(0, 0, -1), glm::vec3(0, 0, 1), inf, 1.0f));
 }
 
 TEST_CASE("glTF bad input: positions that cannot be framed are dropped, naming the accessor, and the rest is framed") {
