@@ -18,6 +18,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <utility>
 
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
@@ -1099,7 +1100,38 @@ void checkRequiredExtensions(const std::string& path, const nlohmann::json& docu
 // - skins[].inverseBindMatrices: optional (identity matrices). tinygltf
 //   parses the skin and then reports the property missing; that report is
 //   dropped (kTolerated below). facet draws no skinning either way.
+// - accessors[].bufferView: optional (the accessor's elements are zeros,
+//   then its sparse substitutions). tinygltf reads such an accessor but
+//   refuses a primitive whose indices name one ("invalid bufferView"). The
+//   primitive's indices are taken out of the document before tinygltf
+//   parses it and put back on the model after (IndicesWithoutView below);
+//   the accessor itself is read as any other (scene/gltf_accessor.h).
 const char* const kTolerated[] = {"'inverseBindMatrices' property is missing in Skin."};
+
+// Primitives whose indices accessor has no bufferView: (mesh, primitive) -> that accessor.
+using IndicesWithoutView = std::map<std::pair<std::size_t, std::size_t>, int>;
+
+// Takes those primitives' "indices" out of the document; what it took.
+IndicesWithoutView removeIndicesWithoutView(nlohmann::json& document) {
+  IndicesWithoutView taken;
+  const auto meshes = document.find("meshes");
+  const auto accessors = document.find("accessors");
+  if (meshes == document.end() || !meshes->is_array() || accessors == document.end() || !accessors->is_array()) return taken;
+  for (std::size_t m = 0; m < meshes->size(); ++m) {
+    nlohmann::json& mesh = (*meshes)[m];
+    if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array()) continue;
+    nlohmann::json& primitives = mesh["primitives"];
+    for (std::size_t p = 0; p < primitives.size(); ++p) {
+      nlohmann::json& primitive = primitives[p];
+      if (!primitive.is_object() || !primitive.contains("indices") || !primitive["indices"].is_number_unsigned()) continue;
+      const std::uint64_t a = primitive["indices"].get<std::uint64_t>();
+      if (a >= accessors->size() || !(*accessors)[a].is_object() || (*accessors)[a].contains("bufferView")) continue;
+      taken[{m, p}] = static_cast<int>(a);
+      primitive.erase("indices");
+    }
+  }
+  return taken;
+}
 
 // Removes the animation channels with no target node; true when it removed any.
 bool removeChannelsWithoutNode(nlohmann::json& document, Warnings& warnings) {
@@ -1172,11 +1204,13 @@ Scene loadGltfFromMemory(const std::string& bytes, const std::string& path, cons
     throw Error(path + ": JSON nested deeper than " + std::to_string(kMaxGltfJsonDepth) + " levels");
   Warnings warnings;
   std::string repaired;  // the bytes tinygltf parses when the document or the GLB layout had to change
+  IndicesWithoutView indicesWithoutView;  // put back on the model once tinygltf has parsed it
   {
     nlohmann::json document = parseGltfJson(path, json);
     checkRequiredExtensions(path, document);
     checkGltfDocument(path, document, assetFolder, kMaxGltfFileBytes);
-    const bool changed = removeChannelsWithoutNode(document, warnings);
+    indicesWithoutView = removeIndicesWithoutView(document);
+    const bool changed = removeChannelsWithoutNode(document, warnings) || !indicesWithoutView.empty();
     const std::string_view bin = layout.hasBin ? std::string_view(bytes).substr(layout.binOffset, layout.binLength) : std::string_view();
     if (changed) repaired = layout.binary ? glbBytes(document.dump(), bin) : document.dump();
     else if (!layout.plain) repaired = glbBytes(std::string(json), bin);
@@ -1219,6 +1253,9 @@ Scene loadGltfFromMemory(const std::string& bytes, const std::string& path, cons
   for (const std::string& required : model.extensionsRequired)
     if (!kSupportedExtensions.count(required))
       throw Error(path + ": requires extension " + quoteInput(required) + ", which facet does not support");
+  for (const auto& [primitive, accessor] : indicesWithoutView)
+    if (primitive.first < model.meshes.size() && primitive.second < model.meshes[primitive.first].primitives.size())
+      model.meshes[primitive.first].primitives[primitive.second].indices = accessor;
 
   Scene scene;
   scene.source = path;

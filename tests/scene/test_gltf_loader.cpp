@@ -359,6 +359,52 @@ TEST_CASE("glTF bad input: sparse accessors are read, their indices and values h
   CHECK(hasWarning(loadJson(pastBuffer), "bufferViews[4]: byteOffset 8 + byteLength 12 runs past its buffer of 16 bytes (BUFFER_VIEW_TOO_LONG)"));
 }
 
+TEST_CASE("glTF accessors without a bufferView read as zeros, then their sparse values, as indices and as attributes, priced by count") {
+  // Indices: three UNSIGNED_INT zeros without a bufferView, elements 1 and 2 replaced by 1 and 2 (sparse).
+  const auto withIndices = [](bool sparse, bool binary) {
+    nlohmann::json j = triangle();
+    const std::string bytes = u32(1) + u32(2) + u32(1) + u32(2);
+    j["buffers"].push_back({{"byteLength", bytes.size()}, {"uri", dataUri(bytes)}});
+    j["bufferViews"].push_back({{"buffer", 1}, {"byteLength", 8}});
+    j["bufferViews"].push_back({{"buffer", 1}, {"byteOffset", 8}, {"byteLength", 8}});
+    j["accessors"].push_back({{"componentType", 5125}, {"count", 3}, {"type", "SCALAR"}});
+    if (sparse)
+      j["accessors"][3]["sparse"] = {{"count", 2}, {"indices", {{"bufferView", 3}, {"componentType", 5125}}}, {"values", {{"bufferView", 4}}}};
+    j["meshes"][0]["primitives"][0]["indices"] = 3;
+    if (!binary) return loadJson(j, "zeros.gltf");
+    const std::string bin = triangleBuffer();
+    j["buffers"][0].erase("uri");
+    return loadGltfFromMemory(glb(j.dump(), bin), "zeros.glb", "");
+  };
+  for (const bool binary : {false, true}) {
+    CAPTURE(binary);
+    const Scene sparse = withIndices(true, binary);
+    REQUIRE(sparse.meshes.size() == 1);
+    CHECK(sparse.meshes[0].indices == std::vector<std::uint32_t>{0, 1, 2});
+    CHECK(sparse.triangleCount() == 1);
+    const Scene zeros = withIndices(false, binary);
+    REQUIRE(zeros.meshes.size() == 1);
+    CHECK(zeros.meshes[0].indices == std::vector<std::uint32_t>{0, 0, 0});
+  }
+  // Positions: zeros but vertex 1, from a sparse accessor without a bufferView.
+  nlohmann::json j = triangle();
+  const std::string bytes = u32(1) + floats({2, 0, 0});
+  j["buffers"].push_back({{"byteLength", bytes.size()}, {"uri", dataUri(bytes)}});
+  j["bufferViews"].push_back({{"buffer", 1}, {"byteLength", 4}});
+  j["bufferViews"].push_back({{"buffer", 1}, {"byteOffset", 4}, {"byteLength", 12}});
+  j["accessors"][0] = {{"componentType", 5126}, {"count", 3}, {"type", "VEC3"},
+                       {"sparse", {{"count", 1}, {"indices", {{"bufferView", 3}, {"componentType", 5125}}}, {"values", {{"bufferView", 4}}}}}};
+  const Scene positions = loadJson(j);
+  REQUIRE(positions.meshes.size() == 1);
+  CHECK(positions.meshes[0].positions == std::vector<glm::vec3>{glm::vec3(0), glm::vec3(2, 0, 0), glm::vec3(0)});
+  // The zeros are priced as any accessor's elements, before they are made.
+  nlohmann::json huge = triangle();
+  huge["accessors"].push_back({{"componentType", 5125}, {"count", 1 << 28}, {"type", "SCALAR"}});
+  huge["meshes"][0]["primitives"][0]["indices"] = 3;
+  CHECK_THROWS_WITH_AS(loadJson(huge, "huge.gltf"), doctest::Contains("huge.gltf: meshes[0].primitives[0]: 3 vertices (accessors[0]) and 268435456 indices need"),
+                       Error);
+}
+
 TEST_CASE("glTF bad input: a node hierarchy that is not a set of trees is refused at once, naming the node") {
   // The issue's file: 41 nodes, each the child of the two before it (2^40 paths; it never finished).
   CHECK_THROWS_WITH_AS(loadGltf(kData + "/node_dag_41.gltf"),
