@@ -1133,6 +1133,59 @@ IndicesWithoutView removeIndicesWithoutView(nlohmann::json& document) {
   return taken;
 }
 
+// A buffer without a uri holds no data, except a GLB's buffers[0], which is
+// its BIN chunk. glTF allows one that nothing reads (a placeholder);
+// tinygltf 2.7 refuses it in a .gltf ("'uri' is missing") and copies the
+// BIN chunk into it in a GLB (refusing it when it is longer). Each unused
+// one is handed to tinygltf as one zero byte from a data: URI; one that a
+// bufferView lies in is refused, naming the bufferView and what reads it.
+// True when it changed the document.
+bool replacePlaceholderBuffers(const std::string& path, nlohmann::json& document, bool binary) {
+  const auto buffers = document.find("buffers");
+  if (buffers == document.end() || !buffers->is_array()) return false;
+  const auto array = [&](const char* key) -> const nlohmann::json* {
+    const auto found = document.find(key);
+    return found != document.end() && found->is_array() ? &*found : nullptr;
+  };
+  const auto refersTo = [](const nlohmann::json& object, const char* key, std::size_t index) {
+    if (!object.is_object()) return false;
+    const auto found = object.find(key);
+    return found != object.end() && found->is_number_unsigned() && found->get<std::uint64_t>() == index;
+  };
+  // What reads bufferViews[v]: an accessor (its own bufferView or its sparse parts) or an image; empty for nothing.
+  const auto readerOf = [&](std::size_t v) -> std::string {
+    if (const nlohmann::json* accessors = array("accessors"))
+      for (std::size_t a = 0; a < accessors->size(); ++a) {
+        const nlohmann::json& accessor = (*accessors)[a];
+        if (refersTo(accessor, "bufferView", v)) return at("accessors", a);
+        if (!accessor.is_object() || !accessor.contains("sparse") || !accessor["sparse"].is_object()) continue;
+        for (const char* part : {"indices", "values"})
+          if (accessor["sparse"].contains(part) && refersTo(accessor["sparse"][part], "bufferView", v))
+            return at("accessors", a) + ".sparse." + part;
+      }
+    if (const nlohmann::json* images = array("images"))
+      for (std::size_t i = 0; i < images->size(); ++i)
+        if (refersTo((*images)[i], "bufferView", v)) return at("images", i);
+    return {};
+  };
+  bool changed = false;
+  for (std::size_t b = binary ? 1 : 0; b < buffers->size(); ++b) {
+    nlohmann::json& buffer = (*buffers)[b];
+    if (!buffer.is_object() || buffer.contains("uri")) continue;
+    if (const nlohmann::json* views = array("bufferViews"))
+      for (std::size_t v = 0; v < views->size(); ++v) {
+        if (!refersTo((*views)[v], "buffer", b)) continue;
+        const std::string reader = readerOf(v);
+        throw Error(path + ": " + at("buffers", b) + ": has no uri, so it holds no data, but " + at("bufferViews", v) + " lies in it" +
+                    (reader.empty() ? std::string() : " and " + reader + " reads that bufferView"));
+      }
+    buffer["uri"] = "data:application/octet-stream;base64,AA==";
+    buffer["byteLength"] = 1;
+    changed = true;
+  }
+  return changed;
+}
+
 // Removes the animation channels with no target node; true when it removed any.
 bool removeChannelsWithoutNode(nlohmann::json& document, Warnings& warnings) {
   bool removed = false;
@@ -1210,7 +1263,8 @@ Scene loadGltfFromMemory(const std::string& bytes, const std::string& path, cons
     checkRequiredExtensions(path, document);
     checkGltfDocument(path, document, assetFolder, kMaxGltfFileBytes);
     indicesWithoutView = removeIndicesWithoutView(document);
-    const bool changed = removeChannelsWithoutNode(document, warnings) || !indicesWithoutView.empty();
+    const bool placeholders = replacePlaceholderBuffers(path, document, layout.binary);
+    const bool changed = removeChannelsWithoutNode(document, warnings) || !indicesWithoutView.empty() || placeholders;
     const std::string_view bin = layout.hasBin ? std::string_view(bytes).substr(layout.binOffset, layout.binLength) : std::string_view();
     if (changed) repaired = layout.binary ? glbBytes(document.dump(), bin) : document.dump();
     else if (!layout.plain) repaired = glbBytes(std::string(json), bin);

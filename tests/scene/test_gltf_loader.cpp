@@ -405,6 +405,34 @@ TEST_CASE("glTF accessors without a bufferView read as zeros, then their sparse 
                        Error);
 }
 
+TEST_CASE("glTF buffers without a uri: unused ones load (a .gltf's, a GLB's beyond buffer 0), a used one is refused naming who reads it") {
+  // A .gltf: the triangle's buffer plus buffers[1] with no uri (and so no data), which no bufferView names.
+  nlohmann::json j = triangle();
+  j["buffers"].push_back({{"byteLength", 1000}});
+  const Scene text = loadJson(j, "unused.gltf");
+  CHECK(text.triangleCount() == 1);
+  CHECK(text.warnings.empty());
+  // A GLB: buffers[0] is the BIN chunk, buffers[1] a placeholder longer than the chunk.
+  nlohmann::json b = j;
+  b["buffers"][0].erase("uri");
+  const Scene binary = loadGltfFromMemory(glb(b.dump(), triangleBuffer()), "unused.glb", "");
+  CHECK(binary.triangleCount() == 1);
+  CHECK(binary.worldBounds().max.x == doctest::Approx(1.0f));
+  CHECK(binary.warnings.empty());
+  // Used: a bufferView in it, read by an accessor (the indices), or by nothing.
+  j["bufferViews"].push_back({{"buffer", 1}, {"byteLength", 12}});
+  j["accessors"].push_back({{"bufferView", 3}, {"componentType", 5125}, {"count", 3}, {"type", "SCALAR"}});
+  j["meshes"][0]["primitives"][0]["indices"] = 3;
+  CHECK_THROWS_WITH_AS(loadJson(j, "used.gltf"),
+                       "used.gltf: buffers[1]: has no uri, so it holds no data, but bufferViews[3] lies in it and accessors[3] reads that bufferView", Error);
+  b["bufferViews"] = j["bufferViews"];
+  b["accessors"] = j["accessors"];
+  b["accessors"].erase(3);
+  b["meshes"][0]["primitives"][0].erase("indices");
+  CHECK_THROWS_WITH_AS(loadGltfFromMemory(glb(b.dump(), triangleBuffer()), "used.glb", ""),
+                       "used.glb: buffers[1]: has no uri, so it holds no data, but bufferViews[3] lies in it", Error);
+}
+
 TEST_CASE("glTF bad input: a node hierarchy that is not a set of trees is refused at once, naming the node") {
   // The issue's file: 41 nodes, each the child of the two before it (2^40 paths; it never finished).
   CHECK_THROWS_WITH_AS(loadGltf(kData + "/node_dag_41.gltf"),
