@@ -433,6 +433,25 @@ TEST_CASE("glTF buffers without a uri: unused ones load (a .gltf's, a GLB's beyo
                        "used.glb: buffers[1]: has no uri, so it holds no data, but bufferViews[3] lies in it", Error);
 }
 
+TEST_CASE("glTF data: URIs for buffers inside a GLB load, beside the BIN chunk or without one") {
+  // buffers[0] the BIN chunk, buffers[1] a data: URI holding the second triangle's positions.
+  nlohmann::json j = triangle();
+  j["buffers"][0].erase("uri");
+  j["buffers"].push_back({{"byteLength", 36}, {"uri", dataUri(floats({0, 0, 1, 1, 0, 1, 0, 1, 1}))}});
+  j["bufferViews"].push_back({{"buffer", 1}, {"byteLength", 36}});
+  j["accessors"].push_back({{"bufferView", 3}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}, {"min", {0, 0, 1}}, {"max", {1, 1, 1}}});
+  j["meshes"][0]["primitives"].push_back({{"attributes", {{"POSITION", 3}}}});
+  const Scene both = loadGltfFromMemory(glb(j.dump(), triangleBuffer()), "both.glb", "");
+  CHECK(both.triangleCount() == 2);
+  CHECK(both.worldBounds().max.z == doctest::Approx(1.0f));
+  CHECK(both.warnings.empty());
+  // Only data: URIs, no BIN chunk.
+  nlohmann::json only = triangle();
+  const Scene uris = loadGltfFromMemory(glb(only.dump(), ""), "uris.glb", "");
+  CHECK(uris.triangleCount() == 1);
+  CHECK(uris.warnings.empty());
+}
+
 TEST_CASE("glTF bad input: a node hierarchy that is not a set of trees is refused at once, naming the node") {
   // The issue's file: 41 nodes, each the child of the two before it (2^40 paths; it never finished).
   CHECK_THROWS_WITH_AS(loadGltf(kData + "/node_dag_41.gltf"),
