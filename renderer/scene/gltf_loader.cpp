@@ -583,7 +583,7 @@ bool convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& p
   pricePrimitive(model, prim, mode, position->second, name, budget);
   const std::string positions = "POSITION " + at("accessors", static_cast<std::size_t>(std::max(position->second, 0)));
   try {
-    mesh.positions = readVec3(model, position->second);
+    mesh.positions = readPositions(model, position->second);
     std::vector<std::uint32_t> triangles;
     if (prim.indices >= 0) {
       triangles = readIndices(model, prim.indices);
@@ -646,7 +646,7 @@ bool convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& p
     bool normalsOk = false;
     if (const auto normal = prim.attributes.find("NORMAL"); normal != prim.attributes.end()) {
       try {
-        mesh.normals = readVec3(model, normal->second);
+        mesh.normals = readNormals(model, normal->second);
         if (mesh.normals.size() != vertexCount) {
           warnings.push_back(name + ": NORMAL has " + std::to_string(mesh.normals.size()) + " elements for " + std::to_string(vertexCount) +
                              " positions (MESH_PRIMITIVE_UNEQUAL_ACCESSOR_COUNT); normals recomputed");
@@ -708,7 +708,7 @@ bool convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& p
     if (corners == 3 && needsTangents(model, prim) && !mesh.texcoordSet(normalTextureSet(model, prim)).empty()) {
       if (const auto tangent = prim.attributes.find("TANGENT"); tangent != prim.attributes.end()) {
         try {
-          mesh.tangents = readVec4(model, tangent->second);
+          mesh.tangents = readTangents(model, tangent->second);
           std::size_t bad = 0;
           for (const glm::vec4& t : mesh.tangents)
             if (!std::isfinite(t.x + t.y + t.z) || !(std::fabs(glm::length(glm::vec3(t)) - 1.0f) < 1e-2f) || !(t.w == 1.0f || t.w == -1.0f)) ++bad;
@@ -1078,7 +1078,7 @@ struct NodeWalker {
 
 const std::set<std::string> kSupportedExtensions = {"KHR_lights_punctual",        "KHR_materials_emissive_strength", "KHR_materials_ior",
                                                     "KHR_materials_transmission", "KHR_materials_unlit",             "KHR_materials_volume",
-                                                    "KHR_texture_transform"};
+                                                    "KHR_mesh_quantization",      "KHR_texture_transform"};
 
 // glTF's rule: a file whose extensionsRequired names an extension the reader
 // lacks is refused. Checked before tinygltf parses, which would otherwise

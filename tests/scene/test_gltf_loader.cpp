@@ -452,6 +452,108 @@ TEST_CASE("glTF data: URIs for buffers inside a GLB load, beside the BIN chunk o
   CHECK(uris.warnings.empty());
 }
 
+namespace {
+
+// A quad over (0, 0)-(1, 1) facing +z: its POSITION, NORMAL and TEXCOORD_0 each `count` bytes a vertex in
+// their own bufferView (that stride), of componentType `type` and `normalized` as given; indices 0 1 2 0 2 3.
+struct QuadAttribute {
+  int type;
+  bool normalized;
+  std::size_t stride;
+  std::string bytes;  // four elements, each padded to the stride
+};
+
+nlohmann::json quad(const QuadAttribute& position, const QuadAttribute& normal, const QuadAttribute& texcoord, const nlohmann::json& node) {
+  const std::string indices = std::string{0, 1, 2, 0, 2, 3, 0, 0};
+  const std::string bin = position.bytes + normal.bytes + texcoord.bytes + indices;
+  nlohmann::json j = nlohmann::json::parse(R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+    "extensionsUsed": ["KHR_mesh_quantization"], "extensionsRequired": ["KHR_mesh_quantization"],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2}, "indices": 3}]}]})");
+  j["nodes"] = nlohmann::json::array({node});
+  j["nodes"][0]["mesh"] = 0;
+  j["buffers"] = nlohmann::json::array({{{"byteLength", bin.size()}, {"uri", dataUri(bin)}}});
+  std::size_t offset = 0;
+  int index = 0;
+  for (const QuadAttribute* a : {&position, &normal, &texcoord}) {
+    j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", a->bytes.size()}, {"byteStride", a->stride}});
+    j["accessors"].push_back({{"bufferView", index}, {"componentType", a->type}, {"normalized", a->normalized}, {"count", 4},
+                              {"type", index == 2 ? "VEC2" : "VEC3"}});
+    offset += a->bytes.size();
+    ++index;
+  }
+  j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", 6}});
+  j["accessors"].push_back({{"bufferView", 3}, {"componentType", 5121}, {"count", 6}, {"type", "SCALAR"}});
+  return j;
+}
+
+// Four elements of `components` values of type T each, padded with zeros to `stride` bytes.
+template <class T>
+std::string elements(std::initializer_list<std::initializer_list<T>> values, std::size_t stride) {
+  std::string out;
+  for (const auto& element : values) {
+    std::string e;
+    for (T v : element) e.append(reinterpret_cast<const char*>(&v), sizeof v);
+    e.resize(stride, '\0');
+    out += e;
+  }
+  return out;
+}
+
+// The mesh's vertex positions placed by its instance's node transform.
+std::vector<glm::vec3> placedPositions(const Scene& scene) {
+  std::vector<glm::vec3> out;
+  for (const glm::vec3& p : scene.meshes.at(0).positions) out.push_back(glm::vec3(scene.instances.at(0).worldFromModel * glm::vec4(p, 1.0f)));
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("glTF KHR_mesh_quantization: integer positions, normals and texture coordinates read as the float quad, placed exactly") {
+  const QuadAttribute floatPositions{5126, false, 12, floats({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0})};
+  const QuadAttribute floatNormals{5126, false, 12, floats({0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1})};
+  const QuadAttribute floatTexcoords{5126, false, 8, floats({0, 0, 1, 0, 1, 1, 0, 1})};
+  nlohmann::json reference = quad(floatPositions, floatNormals, floatTexcoords, nlohmann::json::object());
+  reference.erase("extensionsUsed");
+  reference.erase("extensionsRequired");
+  const Scene expected = loadJson(reference, "float.gltf");
+  REQUIRE(expected.triangleCount() == 2);
+  const std::vector<glm::vec3> expectedPositions = placedPositions(expected);
+
+  struct Variant {
+    const char* name;
+    QuadAttribute position, normal, texcoord;
+    nlohmann::json node;
+  };
+  const Variant variants[] = {
+      // Unsigned shorts as their values (0 and 2), scaled by the node by 1/2; normalized bytes; unsigned bytes as their values.
+      {"ushort", {5123, false, 8, elements<std::uint16_t>({{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}}, 8)},
+       {5120, true, 4, elements<std::int8_t>({{0, 0, 127}, {0, 0, 127}, {0, 0, 127}, {0, 0, 127}}, 4)},
+       {5121, false, 4, elements<std::uint8_t>({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 4)}, {{"scale", {0.5, 0.5, 0.5}}}},
+      // Normalized bytes (127 is 1); normalized shorts; normalized unsigned shorts.
+      {"byte", {5120, true, 4, elements<std::int8_t>({{0, 0, 0}, {127, 0, 0}, {127, 127, 0}, {0, 127, 0}}, 4)},
+       {5122, true, 8, elements<std::int16_t>({{0, 0, 32767}, {0, 0, 32767}, {0, 0, 32767}, {0, 0, 32767}}, 8)},
+       {5123, true, 4, elements<std::uint16_t>({{0, 0}, {65535, 0}, {65535, 65535}, {0, 65535}}, 4)}, nlohmann::json::object()},
+      // Normalized bytes mirrored in x by the node: -128 is clamped to -1; signed shorts as their values.
+      {"mirrored", {5120, true, 4, elements<std::int8_t>({{0, 0, 0}, {-128, 0, 0}, {-127, 127, 0}, {0, 127, 0}}, 4)},
+       {5120, true, 4, elements<std::int8_t>({{0, 0, 127}, {0, 0, 127}, {0, 0, 127}, {0, 0, 127}}, 4)},
+       {5122, false, 4, elements<std::int16_t>({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 4)}, {{"scale", {-1, 1, 1}}}},
+  };
+  for (const Variant& v : variants) {
+    CAPTURE(v.name);
+    const Scene scene = loadJson(quad(v.position, v.normal, v.texcoord, v.node), "quantized.gltf");
+    CHECK(scene.warnings.empty());
+    REQUIRE(scene.triangleCount() == 2);
+    CHECK(placedPositions(scene) == expectedPositions);
+    CHECK(scene.meshes[0].normals == expected.meshes[0].normals);
+    CHECK(scene.meshes[0].texcoords == expected.meshes[0].texcoords);
+  }
+  // What the extension does not allow stays refused by name: unsigned or not-normalized normals.
+  const Scene odd = loadJson(quad(floatPositions, {5121, true, 4, elements<std::uint8_t>({{0, 0, 255}, {0, 0, 255}, {0, 0, 255}, {0, 0, 255}}, 4)},
+                                  floatTexcoords, nlohmann::json::object()),
+                             "odd.gltf");
+  CHECK(hasWarning(odd, "meshes[0].primitives[0]: NORMAL accessors[1]: normals must be FLOAT or normalized BYTE/SHORT"));
+}
+
 TEST_CASE("glTF bad input: a node hierarchy that is not a set of trees is refused at once, naming the node") {
   // The issue's file: 41 nodes, each the child of the two before it (2^40 paths; it never finished).
   CHECK_THROWS_WITH_AS(loadGltf(kData + "/node_dag_41.gltf"),
