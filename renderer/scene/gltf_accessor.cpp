@@ -176,7 +176,9 @@ SparseSpan locateSparse(const tinygltf::Model& model, int index, const ElementSp
   return sparse;
 }
 
-// One component as float, honouring `normalized` (glTF's formulas for unorm).
+// One component as float, honouring `normalized` with glTF's formulas
+// (3.11): c / 255 and c / 65535 unsigned, max(c / 127, -1) and
+// max(c / 32767, -1) signed; an integer that is not normalized is its value.
 float component(const ElementSpan& s, std::uint64_t element, int c) {
   if (!s.data) return 0.0f;
   const unsigned char* p = s.data + element * s.stride;
@@ -190,9 +192,41 @@ float component(const ElementSpan& s, std::uint64_t element, int c) {
       const float v = static_cast<float>(load<std::uint16_t>(p + 2 * c));
       return s.normalized ? v / 65535.0f : v;
     }
+    case TINYGLTF_COMPONENT_TYPE_BYTE: {
+      const float v = static_cast<float>(load<std::int8_t>(p + c));
+      return s.normalized ? std::max(v / 127.0f, -1.0f) : v;
+    }
+    case TINYGLTF_COMPONENT_TYPE_SHORT: {
+      const float v = static_cast<float>(load<std::int16_t>(p + 2 * c));
+      return s.normalized ? std::max(v / 32767.0f, -1.0f) : v;
+    }
     default: return 0.0f;
   }
 }
+
+// The component formats an attribute may have beside FLOAT: the core's
+// normalized unsigned ones (texture coordinates, colours), and those
+// KHR_mesh_quantization adds (normalized signed ones, and integers that are
+// not normalized, read as their values).
+struct Formats {
+  bool signedNormalized = false, unsignedNormalized = false, integers = false;
+};
+
+bool accepts(const ElementSpan& s, Formats f) {
+  switch (s.componentType) {
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: return true;
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+    case TINYGLTF_COMPONENT_TYPE_SHORT: return s.normalized ? f.signedNormalized : f.integers;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return s.normalized ? f.unsignedNormalized : f.integers;
+    default: return false;
+  }
+}
+
+// KHR_mesh_quantization's formats per attribute.
+constexpr Formats kPositionFormats{true, true, true};   // every byte and short, normalized or not
+constexpr Formats kDirectionFormats{true, false, false};  // NORMAL, TANGENT: normalized BYTE and SHORT
+constexpr Formats kTexcoordFormats{true, true, true};   // every byte and short, normalized or not
 
 // Every element of the accessor through `element(span, e)`, the base first,
 // then its sparse substitutions.
@@ -212,6 +246,34 @@ std::vector<T> readAll(const tinygltf::Model& model, int accessor, const Element
 std::uint64_t accessorCount(const tinygltf::Model& model, int accessor) {
   if (accessor < 0 || static_cast<std::size_t>(accessor) >= model.accessors.size()) return 0;
   return std::min<std::uint64_t>(model.accessors[static_cast<std::size_t>(accessor)].count, kMaxAccessorCount);
+}
+
+std::vector<glm::vec3> readPositions(const tinygltf::Model& model, int accessor) {
+  const ElementSpan s = locate(model, accessor, 3);
+  if (!accepts(s, kPositionFormats))
+    throw AccessorError{name(accessor) + ": componentType " + std::to_string(s.componentType) +
+                        " is not FLOAT, BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT (MESH_PRIMITIVE_ATTRIBUTES_ACCESSOR_INVALID_FORMAT)"};
+  return readAll<glm::vec3>(model, accessor, s, [](const ElementSpan& span, std::uint64_t e) {
+    return glm::vec3(component(span, e, 0), component(span, e, 1), component(span, e, 2));
+  });
+}
+
+std::vector<glm::vec3> readNormals(const tinygltf::Model& model, int accessor) {
+  const ElementSpan s = locate(model, accessor, 3);
+  if (!accepts(s, kDirectionFormats))
+    throw AccessorError{name(accessor) + ": normals must be FLOAT or normalized BYTE/SHORT (MESH_PRIMITIVE_ATTRIBUTES_ACCESSOR_INVALID_FORMAT)"};
+  return readAll<glm::vec3>(model, accessor, s, [](const ElementSpan& span, std::uint64_t e) {
+    return glm::vec3(component(span, e, 0), component(span, e, 1), component(span, e, 2));
+  });
+}
+
+std::vector<glm::vec4> readTangents(const tinygltf::Model& model, int accessor) {
+  const ElementSpan s = locate(model, accessor, 4);
+  if (!accepts(s, kDirectionFormats))
+    throw AccessorError{name(accessor) + ": tangents must be FLOAT or normalized BYTE/SHORT (MESH_PRIMITIVE_ATTRIBUTES_ACCESSOR_INVALID_FORMAT)"};
+  return readAll<glm::vec4>(model, accessor, s, [](const ElementSpan& span, std::uint64_t e) {
+    return glm::vec4(component(span, e, 0), component(span, e, 1), component(span, e, 2), component(span, e, 3));
+  });
 }
 
 std::vector<glm::vec3> readVec3(const tinygltf::Model& model, int accessor) {
@@ -241,11 +303,8 @@ std::vector<float> readScalars(const tinygltf::Model& model, int accessor) {
 
 std::vector<glm::vec2> readVec2(const tinygltf::Model& model, int accessor) {
   const ElementSpan s = locate(model, accessor, 2);
-  const bool floatOrUnorm = s.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ||
-                            (s.normalized && (s.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
-                                              s.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT));
-  if (!floatOrUnorm)
-    throw AccessorError{name(accessor) + ": texture coordinates must be FLOAT or normalized UNSIGNED_BYTE/SHORT (MESH_PRIMITIVE_ATTRIBUTES_ACCESSOR_INVALID_FORMAT)"};
+  if (!accepts(s, kTexcoordFormats))
+    throw AccessorError{name(accessor) + ": texture coordinates must be FLOAT, BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT (MESH_PRIMITIVE_ATTRIBUTES_ACCESSOR_INVALID_FORMAT)"};
   return readAll<glm::vec2>(model, accessor, s,
                             [](const ElementSpan& span, std::uint64_t e) { return glm::vec2(component(span, e, 0), component(span, e, 1)); });
 }

@@ -30,11 +30,20 @@ struct AccessorError {
 // reading it allocates before it is read.
 std::uint64_t accessorCount(const tinygltf::Model& model, int accessor);
 
-// Float VEC3 (POSITION, NORMAL).
+// Mesh attributes take KHR_mesh_quantization's formats besides FLOAT:
+// normalized integers become floats by glTF's formulas (c / 255, c / 65535,
+// max(c / 127, -1), max(c / 32767, -1)), other integers are their values.
+// VEC3 POSITION: float, or (normalized or not) byte/short, signed or unsigned.
+std::vector<glm::vec3> readPositions(const tinygltf::Model& model, int accessor);
+// VEC3 NORMAL: float, or normalized signed byte/short.
+std::vector<glm::vec3> readNormals(const tinygltf::Model& model, int accessor);
+// VEC4 TANGENT: float, or normalized signed byte/short.
+std::vector<glm::vec4> readTangents(const tinygltf::Model& model, int accessor);
+// Float VEC3 (an animation's translations and scales).
 std::vector<glm::vec3> readVec3(const tinygltf::Model& model, int accessor);
-// Float VEC4 (TANGENT).
+// Float VEC4 (an animation's rotations).
 std::vector<glm::vec4> readVec4(const tinygltf::Model& model, int accessor);
-// VEC2 of float, or normalized unsigned byte/short (TEXCOORD_n).
+// VEC2 TEXCOORD_n: float, or (normalized or not) byte/short, signed or unsigned.
 std::vector<glm::vec2> readVec2(const tinygltf::Model& model, int accessor);
 // VEC3 or VEC4 of float, or normalized unsigned byte/short (COLOR_n), as
 // linear RGBA: VEC3 gets alpha 1.

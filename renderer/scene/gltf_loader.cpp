@@ -14,9 +14,11 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
+#include <utility>
 
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
@@ -377,8 +379,10 @@ void readRefraction(const tinygltf::Material& src, const std::string& where, Mat
   }
   if (const auto found = src.extensions.find("KHR_materials_ior"); found != src.extensions.end()) {
     if (const auto n = property(found->second, "KHR_materials_ior", "ior")) {
-      if (std::isfinite(*n) && *n >= 1) material.ior = static_cast<float>(*n);
-      else warnings.push_back(where + ": KHR_materials_ior.ior " + std::to_string(*n) + " is below 1; ignored");
+      // 0 is the extension's specular-glossiness compatibility mode: an infinite index, whose Fresnel term is 1 at every angle.
+      if (*n == 0) material.ior = std::numeric_limits<float>::infinity();
+      else if (std::isfinite(*n) && *n >= 1) material.ior = static_cast<float>(*n);
+      else warnings.push_back(where + ": KHR_materials_ior.ior " + std::to_string(*n) + " is neither 0 nor 1 or more; ignored");
     }
   }
   if (const auto found = src.extensions.find("KHR_materials_volume"); found != src.extensions.end()) {
@@ -579,7 +583,7 @@ bool convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& p
   pricePrimitive(model, prim, mode, position->second, name, budget);
   const std::string positions = "POSITION " + at("accessors", static_cast<std::size_t>(std::max(position->second, 0)));
   try {
-    mesh.positions = readVec3(model, position->second);
+    mesh.positions = readPositions(model, position->second);
     std::vector<std::uint32_t> triangles;
     if (prim.indices >= 0) {
       triangles = readIndices(model, prim.indices);
@@ -642,7 +646,7 @@ bool convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& p
     bool normalsOk = false;
     if (const auto normal = prim.attributes.find("NORMAL"); normal != prim.attributes.end()) {
       try {
-        mesh.normals = readVec3(model, normal->second);
+        mesh.normals = readNormals(model, normal->second);
         if (mesh.normals.size() != vertexCount) {
           warnings.push_back(name + ": NORMAL has " + std::to_string(mesh.normals.size()) + " elements for " + std::to_string(vertexCount) +
                              " positions (MESH_PRIMITIVE_UNEQUAL_ACCESSOR_COUNT); normals recomputed");
@@ -704,7 +708,7 @@ bool convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& p
     if (corners == 3 && needsTangents(model, prim) && !mesh.texcoordSet(normalTextureSet(model, prim)).empty()) {
       if (const auto tangent = prim.attributes.find("TANGENT"); tangent != prim.attributes.end()) {
         try {
-          mesh.tangents = readVec4(model, tangent->second);
+          mesh.tangents = readTangents(model, tangent->second);
           std::size_t bad = 0;
           for (const glm::vec4& t : mesh.tangents)
             if (!std::isfinite(t.x + t.y + t.z) || !(std::fabs(glm::length(glm::vec3(t)) - 1.0f) < 1e-2f) || !(t.w == 1.0f || t.w == -1.0f)) ++bad;
@@ -1072,8 +1076,9 @@ struct NodeWalker {
   }
 };
 
-const std::set<std::string> kSupportedExtensions = {"KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_materials_ior",
-                                                    "KHR_materials_transmission", "KHR_materials_volume", "KHR_texture_transform"};
+const std::set<std::string> kSupportedExtensions = {"KHR_lights_punctual",        "KHR_materials_emissive_strength", "KHR_materials_ior",
+                                                    "KHR_materials_transmission", "KHR_materials_unlit",             "KHR_materials_volume",
+                                                    "KHR_mesh_quantization",      "KHR_texture_transform"};
 
 // glTF's rule: a file whose extensionsRequired names an extension the reader
 // lacks is refused. Checked before tinygltf parses, which would otherwise
@@ -1095,7 +1100,91 @@ void checkRequiredExtensions(const std::string& path, const nlohmann::json& docu
 // - skins[].inverseBindMatrices: optional (identity matrices). tinygltf
 //   parses the skin and then reports the property missing; that report is
 //   dropped (kTolerated below). facet draws no skinning either way.
+// - accessors[].bufferView: optional (the accessor's elements are zeros,
+//   then its sparse substitutions). tinygltf reads such an accessor but
+//   refuses a primitive whose indices name one ("invalid bufferView"). The
+//   primitive's indices are taken out of the document before tinygltf
+//   parses it and put back on the model after (IndicesWithoutView below);
+//   the accessor itself is read as any other (scene/gltf_accessor.h).
 const char* const kTolerated[] = {"'inverseBindMatrices' property is missing in Skin."};
+
+// Primitives whose indices accessor has no bufferView: (mesh, primitive) -> that accessor.
+using IndicesWithoutView = std::map<std::pair<std::size_t, std::size_t>, int>;
+
+// Takes those primitives' "indices" out of the document; what it took.
+IndicesWithoutView removeIndicesWithoutView(nlohmann::json& document) {
+  IndicesWithoutView taken;
+  const auto meshes = document.find("meshes");
+  const auto accessors = document.find("accessors");
+  if (meshes == document.end() || !meshes->is_array() || accessors == document.end() || !accessors->is_array()) return taken;
+  for (std::size_t m = 0; m < meshes->size(); ++m) {
+    nlohmann::json& mesh = (*meshes)[m];
+    if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array()) continue;
+    nlohmann::json& primitives = mesh["primitives"];
+    for (std::size_t p = 0; p < primitives.size(); ++p) {
+      nlohmann::json& primitive = primitives[p];
+      if (!primitive.is_object() || !primitive.contains("indices") || !primitive["indices"].is_number_unsigned()) continue;
+      const std::uint64_t a = primitive["indices"].get<std::uint64_t>();
+      if (a >= accessors->size() || !(*accessors)[a].is_object() || (*accessors)[a].contains("bufferView")) continue;
+      taken[{m, p}] = static_cast<int>(a);
+      primitive.erase("indices");
+    }
+  }
+  return taken;
+}
+
+// A buffer without a uri holds no data, except a GLB's buffers[0], which is
+// its BIN chunk. glTF allows one that nothing reads (a placeholder);
+// tinygltf 2.7 refuses it in a .gltf ("'uri' is missing") and copies the
+// BIN chunk into it in a GLB (refusing it when it is longer). Each unused
+// one is handed to tinygltf as one zero byte from a data: URI; one that a
+// bufferView lies in is refused, naming the bufferView and what reads it.
+// True when it changed the document.
+bool replacePlaceholderBuffers(const std::string& path, nlohmann::json& document, bool binary) {
+  const auto buffers = document.find("buffers");
+  if (buffers == document.end() || !buffers->is_array()) return false;
+  const auto array = [&](const char* key) -> const nlohmann::json* {
+    const auto found = document.find(key);
+    return found != document.end() && found->is_array() ? &*found : nullptr;
+  };
+  const auto refersTo = [](const nlohmann::json& object, const char* key, std::size_t index) {
+    if (!object.is_object()) return false;
+    const auto found = object.find(key);
+    return found != object.end() && found->is_number_unsigned() && found->get<std::uint64_t>() == index;
+  };
+  // What reads bufferViews[v]: an accessor (its own bufferView or its sparse parts) or an image; empty for nothing.
+  const auto readerOf = [&](std::size_t v) -> std::string {
+    if (const nlohmann::json* accessors = array("accessors"))
+      for (std::size_t a = 0; a < accessors->size(); ++a) {
+        const nlohmann::json& accessor = (*accessors)[a];
+        if (refersTo(accessor, "bufferView", v)) return at("accessors", a);
+        if (!accessor.is_object() || !accessor.contains("sparse") || !accessor["sparse"].is_object()) continue;
+        for (const char* part : {"indices", "values"})
+          if (accessor["sparse"].contains(part) && refersTo(accessor["sparse"][part], "bufferView", v))
+            return at("accessors", a) + ".sparse." + part;
+      }
+    if (const nlohmann::json* images = array("images"))
+      for (std::size_t i = 0; i < images->size(); ++i)
+        if (refersTo((*images)[i], "bufferView", v)) return at("images", i);
+    return {};
+  };
+  bool changed = false;
+  for (std::size_t b = binary ? 1 : 0; b < buffers->size(); ++b) {
+    nlohmann::json& buffer = (*buffers)[b];
+    if (!buffer.is_object() || buffer.contains("uri")) continue;
+    if (const nlohmann::json* views = array("bufferViews"))
+      for (std::size_t v = 0; v < views->size(); ++v) {
+        if (!refersTo((*views)[v], "buffer", b)) continue;
+        const std::string reader = readerOf(v);
+        throw Error(path + ": " + at("buffers", b) + ": has no uri, so it holds no data, but " + at("bufferViews", v) + " lies in it" +
+                    (reader.empty() ? std::string() : " and " + reader + " reads that bufferView"));
+      }
+    buffer["uri"] = "data:application/octet-stream;base64,AA==";
+    buffer["byteLength"] = 1;
+    changed = true;
+  }
+  return changed;
+}
 
 // Removes the animation channels with no target node; true when it removed any.
 bool removeChannelsWithoutNode(nlohmann::json& document, Warnings& warnings) {
@@ -1168,11 +1257,14 @@ Scene loadGltfFromMemory(const std::string& bytes, const std::string& path, cons
     throw Error(path + ": JSON nested deeper than " + std::to_string(kMaxGltfJsonDepth) + " levels");
   Warnings warnings;
   std::string repaired;  // the bytes tinygltf parses when the document or the GLB layout had to change
+  IndicesWithoutView indicesWithoutView;  // put back on the model once tinygltf has parsed it
   {
     nlohmann::json document = parseGltfJson(path, json);
     checkRequiredExtensions(path, document);
     checkGltfDocument(path, document, assetFolder, kMaxGltfFileBytes);
-    const bool changed = removeChannelsWithoutNode(document, warnings);
+    indicesWithoutView = removeIndicesWithoutView(document);
+    const bool placeholders = replacePlaceholderBuffers(path, document, layout.binary);
+    const bool changed = removeChannelsWithoutNode(document, warnings) || !indicesWithoutView.empty() || placeholders;
     const std::string_view bin = layout.hasBin ? std::string_view(bytes).substr(layout.binOffset, layout.binLength) : std::string_view();
     if (changed) repaired = layout.binary ? glbBytes(document.dump(), bin) : document.dump();
     else if (!layout.plain) repaired = glbBytes(std::string(json), bin);
@@ -1215,6 +1307,9 @@ Scene loadGltfFromMemory(const std::string& bytes, const std::string& path, cons
   for (const std::string& required : model.extensionsRequired)
     if (!kSupportedExtensions.count(required))
       throw Error(path + ": requires extension " + quoteInput(required) + ", which facet does not support");
+  for (const auto& [primitive, accessor] : indicesWithoutView)
+    if (primitive.first < model.meshes.size() && primitive.second < model.meshes[primitive.first].primitives.size())
+      model.meshes[primitive.first].primitives[primitive.second].indices = accessor;
 
   Scene scene;
   scene.source = path;

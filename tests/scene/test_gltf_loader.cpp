@@ -17,6 +17,7 @@
 #include "common/json_text.h"
 #include "pipeline/frame_inputs.h"
 #include "pipeline/material_coefficients.h"
+#include "ray/optics.h"
 #include "scene/gltf_loader.h"
 #include "scene/load_scene.h"
 #include "scene/memory_budget.h"
@@ -356,6 +357,201 @@ TEST_CASE("glTF bad input: sparse accessors are read, their indices and values h
   nlohmann::json pastBuffer = sparseTriangle(2, 12);
   pastBuffer["bufferViews"][4]["byteOffset"] = 8;  // 8 + 12 > the buffer's 16 bytes
   CHECK(hasWarning(loadJson(pastBuffer), "bufferViews[4]: byteOffset 8 + byteLength 12 runs past its buffer of 16 bytes (BUFFER_VIEW_TOO_LONG)"));
+}
+
+TEST_CASE("glTF accessors without a bufferView read as zeros, then their sparse values, as indices and as attributes, priced by count") {
+  // Indices: three UNSIGNED_INT zeros without a bufferView, elements 1 and 2 replaced by 1 and 2 (sparse).
+  const auto withIndices = [](bool sparse, bool binary) {
+    nlohmann::json j = triangle();
+    const std::string bytes = u32(1) + u32(2) + u32(1) + u32(2);
+    j["buffers"].push_back({{"byteLength", bytes.size()}, {"uri", dataUri(bytes)}});
+    j["bufferViews"].push_back({{"buffer", 1}, {"byteLength", 8}});
+    j["bufferViews"].push_back({{"buffer", 1}, {"byteOffset", 8}, {"byteLength", 8}});
+    j["accessors"].push_back({{"componentType", 5125}, {"count", 3}, {"type", "SCALAR"}});
+    if (sparse)
+      j["accessors"][3]["sparse"] = {{"count", 2}, {"indices", {{"bufferView", 3}, {"componentType", 5125}}}, {"values", {{"bufferView", 4}}}};
+    j["meshes"][0]["primitives"][0]["indices"] = 3;
+    if (!binary) return loadJson(j, "zeros.gltf");
+    const std::string bin = triangleBuffer();
+    j["buffers"][0].erase("uri");
+    return loadGltfFromMemory(glb(j.dump(), bin), "zeros.glb", "");
+  };
+  for (const bool binary : {false, true}) {
+    CAPTURE(binary);
+    const Scene sparse = withIndices(true, binary);
+    REQUIRE(sparse.meshes.size() == 1);
+    CHECK(sparse.meshes[0].indices == std::vector<std::uint32_t>{0, 1, 2});
+    CHECK(sparse.triangleCount() == 1);
+    const Scene zeros = withIndices(false, binary);
+    REQUIRE(zeros.meshes.size() == 1);
+    CHECK(zeros.meshes[0].indices == std::vector<std::uint32_t>{0, 0, 0});
+  }
+  // Positions: zeros but vertex 1, from a sparse accessor without a bufferView.
+  nlohmann::json j = triangle();
+  const std::string bytes = u32(1) + floats({2, 0, 0});
+  j["buffers"].push_back({{"byteLength", bytes.size()}, {"uri", dataUri(bytes)}});
+  j["bufferViews"].push_back({{"buffer", 1}, {"byteLength", 4}});
+  j["bufferViews"].push_back({{"buffer", 1}, {"byteOffset", 4}, {"byteLength", 12}});
+  j["accessors"][0] = {{"componentType", 5126}, {"count", 3}, {"type", "VEC3"},
+                       {"sparse", {{"count", 1}, {"indices", {{"bufferView", 3}, {"componentType", 5125}}}, {"values", {{"bufferView", 4}}}}}};
+  const Scene positions = loadJson(j);
+  REQUIRE(positions.meshes.size() == 1);
+  CHECK(positions.meshes[0].positions == std::vector<glm::vec3>{glm::vec3(0), glm::vec3(2, 0, 0), glm::vec3(0)});
+  // The zeros are priced as any accessor's elements, before they are made.
+  nlohmann::json huge = triangle();
+  huge["accessors"].push_back({{"componentType", 5125}, {"count", 1 << 28}, {"type", "SCALAR"}});
+  huge["meshes"][0]["primitives"][0]["indices"] = 3;
+  CHECK_THROWS_WITH_AS(loadJson(huge, "huge.gltf"), doctest::Contains("huge.gltf: meshes[0].primitives[0]: 3 vertices (accessors[0]) and 268435456 indices need"),
+                       Error);
+}
+
+TEST_CASE("glTF buffers without a uri: unused ones load (a .gltf's, a GLB's beyond buffer 0), a used one is refused naming who reads it") {
+  // A .gltf: the triangle's buffer plus buffers[1] with no uri (and so no data), which no bufferView names.
+  nlohmann::json j = triangle();
+  j["buffers"].push_back({{"byteLength", 1000}});
+  const Scene text = loadJson(j, "unused.gltf");
+  CHECK(text.triangleCount() == 1);
+  CHECK(text.warnings.empty());
+  // A GLB: buffers[0] is the BIN chunk, buffers[1] a placeholder longer than the chunk.
+  nlohmann::json b = j;
+  b["buffers"][0].erase("uri");
+  const Scene binary = loadGltfFromMemory(glb(b.dump(), triangleBuffer()), "unused.glb", "");
+  CHECK(binary.triangleCount() == 1);
+  CHECK(binary.worldBounds().max.x == doctest::Approx(1.0f));
+  CHECK(binary.warnings.empty());
+  // Used: a bufferView in it, read by an accessor (the indices), or by nothing.
+  j["bufferViews"].push_back({{"buffer", 1}, {"byteLength", 12}});
+  j["accessors"].push_back({{"bufferView", 3}, {"componentType", 5125}, {"count", 3}, {"type", "SCALAR"}});
+  j["meshes"][0]["primitives"][0]["indices"] = 3;
+  CHECK_THROWS_WITH_AS(loadJson(j, "used.gltf"),
+                       "used.gltf: buffers[1]: has no uri, so it holds no data, but bufferViews[3] lies in it and accessors[3] reads that bufferView", Error);
+  b["bufferViews"] = j["bufferViews"];
+  b["accessors"] = j["accessors"];
+  b["accessors"].erase(3);
+  b["meshes"][0]["primitives"][0].erase("indices");
+  CHECK_THROWS_WITH_AS(loadGltfFromMemory(glb(b.dump(), triangleBuffer()), "used.glb", ""),
+                       "used.glb: buffers[1]: has no uri, so it holds no data, but bufferViews[3] lies in it", Error);
+}
+
+TEST_CASE("glTF data: URIs for buffers inside a GLB load, beside the BIN chunk or without one") {
+  // buffers[0] the BIN chunk, buffers[1] a data: URI holding the second triangle's positions.
+  nlohmann::json j = triangle();
+  j["buffers"][0].erase("uri");
+  j["buffers"].push_back({{"byteLength", 36}, {"uri", dataUri(floats({0, 0, 1, 1, 0, 1, 0, 1, 1}))}});
+  j["bufferViews"].push_back({{"buffer", 1}, {"byteLength", 36}});
+  j["accessors"].push_back({{"bufferView", 3}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}, {"min", {0, 0, 1}}, {"max", {1, 1, 1}}});
+  j["meshes"][0]["primitives"].push_back({{"attributes", {{"POSITION", 3}}}});
+  const Scene both = loadGltfFromMemory(glb(j.dump(), triangleBuffer()), "both.glb", "");
+  CHECK(both.triangleCount() == 2);
+  CHECK(both.worldBounds().max.z == doctest::Approx(1.0f));
+  CHECK(both.warnings.empty());
+  // Only data: URIs, no BIN chunk.
+  nlohmann::json only = triangle();
+  const Scene uris = loadGltfFromMemory(glb(only.dump(), ""), "uris.glb", "");
+  CHECK(uris.triangleCount() == 1);
+  CHECK(uris.warnings.empty());
+}
+
+namespace {
+
+// A quad over (0, 0)-(1, 1) facing +z: its POSITION, NORMAL and TEXCOORD_0 each `count` bytes a vertex in
+// their own bufferView (that stride), of componentType `type` and `normalized` as given; indices 0 1 2 0 2 3.
+struct QuadAttribute {
+  int type;
+  bool normalized;
+  std::size_t stride;
+  std::string bytes;  // four elements, each padded to the stride
+};
+
+nlohmann::json quad(const QuadAttribute& position, const QuadAttribute& normal, const QuadAttribute& texcoord, const nlohmann::json& node) {
+  const std::string indices = std::string{0, 1, 2, 0, 2, 3, 0, 0};
+  const std::string bin = position.bytes + normal.bytes + texcoord.bytes + indices;
+  nlohmann::json j = nlohmann::json::parse(R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+    "extensionsUsed": ["KHR_mesh_quantization"], "extensionsRequired": ["KHR_mesh_quantization"],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2}, "indices": 3}]}]})");
+  j["nodes"] = nlohmann::json::array({node});
+  j["nodes"][0]["mesh"] = 0;
+  j["buffers"] = nlohmann::json::array({{{"byteLength", bin.size()}, {"uri", dataUri(bin)}}});
+  std::size_t offset = 0;
+  int index = 0;
+  for (const QuadAttribute* a : {&position, &normal, &texcoord}) {
+    j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", a->bytes.size()}, {"byteStride", a->stride}});
+    j["accessors"].push_back({{"bufferView", index}, {"componentType", a->type}, {"normalized", a->normalized}, {"count", 4},
+                              {"type", index == 2 ? "VEC2" : "VEC3"}});
+    offset += a->bytes.size();
+    ++index;
+  }
+  j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", 6}});
+  j["accessors"].push_back({{"bufferView", 3}, {"componentType", 5121}, {"count", 6}, {"type", "SCALAR"}});
+  return j;
+}
+
+// Four elements of `components` values of type T each, padded with zeros to `stride` bytes.
+template <class T>
+std::string elements(std::initializer_list<std::initializer_list<T>> values, std::size_t stride) {
+  std::string out;
+  for (const auto& element : values) {
+    std::string e;
+    for (T v : element) e.append(reinterpret_cast<const char*>(&v), sizeof v);
+    e.resize(stride, '\0');
+    out += e;
+  }
+  return out;
+}
+
+// The mesh's vertex positions placed by its instance's node transform.
+std::vector<glm::vec3> placedPositions(const Scene& scene) {
+  std::vector<glm::vec3> out;
+  for (const glm::vec3& p : scene.meshes.at(0).positions) out.push_back(glm::vec3(scene.instances.at(0).worldFromModel * glm::vec4(p, 1.0f)));
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("glTF KHR_mesh_quantization: integer positions, normals and texture coordinates read as the float quad, placed exactly") {
+  const QuadAttribute floatPositions{5126, false, 12, floats({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0})};
+  const QuadAttribute floatNormals{5126, false, 12, floats({0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1})};
+  const QuadAttribute floatTexcoords{5126, false, 8, floats({0, 0, 1, 0, 1, 1, 0, 1})};
+  nlohmann::json reference = quad(floatPositions, floatNormals, floatTexcoords, nlohmann::json::object());
+  reference.erase("extensionsUsed");
+  reference.erase("extensionsRequired");
+  const Scene expected = loadJson(reference, "float.gltf");
+  REQUIRE(expected.triangleCount() == 2);
+  const std::vector<glm::vec3> expectedPositions = placedPositions(expected);
+
+  struct Variant {
+    const char* name;
+    QuadAttribute position, normal, texcoord;
+    nlohmann::json node;
+  };
+  const Variant variants[] = {
+      // Unsigned shorts as their values (0 and 2), scaled by the node by 1/2; normalized bytes; unsigned bytes as their values.
+      {"ushort", {5123, false, 8, elements<std::uint16_t>({{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}}, 8)},
+       {5120, true, 4, elements<std::int8_t>({{0, 0, 127}, {0, 0, 127}, {0, 0, 127}, {0, 0, 127}}, 4)},
+       {5121, false, 4, elements<std::uint8_t>({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 4)}, {{"scale", {0.5, 0.5, 0.5}}}},
+      // Normalized bytes (127 is 1); normalized shorts; normalized unsigned shorts.
+      {"byte", {5120, true, 4, elements<std::int8_t>({{0, 0, 0}, {127, 0, 0}, {127, 127, 0}, {0, 127, 0}}, 4)},
+       {5122, true, 8, elements<std::int16_t>({{0, 0, 32767}, {0, 0, 32767}, {0, 0, 32767}, {0, 0, 32767}}, 8)},
+       {5123, true, 4, elements<std::uint16_t>({{0, 0}, {65535, 0}, {65535, 65535}, {0, 65535}}, 4)}, nlohmann::json::object()},
+      // Normalized bytes mirrored in x by the node: -128 is clamped to -1; signed shorts as their values.
+      {"mirrored", {5120, true, 4, elements<std::int8_t>({{0, 0, 0}, {-128, 0, 0}, {-127, 127, 0}, {0, 127, 0}}, 4)},
+       {5120, true, 4, elements<std::int8_t>({{0, 0, 127}, {0, 0, 127}, {0, 0, 127}, {0, 0, 127}}, 4)},
+       {5122, false, 4, elements<std::int16_t>({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 4)}, {{"scale", {-1, 1, 1}}}},
+  };
+  for (const Variant& v : variants) {
+    CAPTURE(v.name);
+    const Scene scene = loadJson(quad(v.position, v.normal, v.texcoord, v.node), "quantized.gltf");
+    CHECK(scene.warnings.empty());
+    REQUIRE(scene.triangleCount() == 2);
+    CHECK(placedPositions(scene) == expectedPositions);
+    CHECK(scene.meshes[0].normals == expected.meshes[0].normals);
+    CHECK(scene.meshes[0].texcoords == expected.meshes[0].texcoords);
+  }
+  // What the extension does not allow stays refused by name: unsigned or not-normalized normals.
+  const Scene odd = loadJson(quad(floatPositions, {5121, true, 4, elements<std::uint8_t>({{0, 0, 255}, {0, 0, 255}, {0, 0, 255}, {0, 0, 255}}, 4)},
+                                  floatTexcoords, nlohmann::json::object()),
+                             "odd.gltf");
+  CHECK(hasWarning(odd, "meshes[0].primitives[0]: NORMAL accessors[1]: normals must be FLOAT or normalized BYTE/SHORT"));
 }
 
 TEST_CASE("glTF bad input: a node hierarchy that is not a set of trees is refused at once, naming the node") {
@@ -725,7 +921,7 @@ TEST_CASE("glTF KHR_materials_transmission, _ior and _volume: what the ray trace
   CHECK(odd.materials[0].ior == 1.5f);
   CHECK(std::isinf(odd.materials[0].attenuationDistance));
   CHECK(hasWarning(odd, "materials[0]: KHR_materials_transmission.transmissionFactor 1.500000 is not in [0, 1]; ignored"));
-  CHECK(hasWarning(odd, "materials[0]: KHR_materials_ior.ior 0.500000 is below 1; ignored"));
+  CHECK(hasWarning(odd, "materials[0]: KHR_materials_ior.ior 0.500000 is neither 0 nor 1 or more; ignored"));
 
   j["materials"][0]["extensions"]["KHR_materials_ior"]["ior"] = "glass";
   CHECK_THROWS_WITH_AS(loadJson(j), doctest::Contains("materials[0]: KHR_materials_ior.ior is not a number"), Error);
@@ -737,6 +933,37 @@ TEST_CASE("glTF KHR_materials_transmission, _ior and _volume: what the ray trace
   j["extensionsRequired"] = {"KHR_materials_transmission", "KHR_materials_ior", "KHR_materials_volume"};
   j["extensionsUsed"] = j["extensionsRequired"];
   CHECK_NOTHROW(loadJson(j));
+}
+
+TEST_CASE("glTF KHR_materials_unlit is supported: used or required, it loads without a warning and the material is unlit") {
+  nlohmann::json j = triangle();
+  j["materials"] = {{{"extensions", {{"KHR_materials_unlit", nlohmann::json::object()}}}}};
+  j["meshes"][0]["primitives"][0]["material"] = 0;
+  j["extensionsUsed"] = {"KHR_materials_unlit"};
+  j["extensionsRequired"] = {"KHR_materials_unlit"};
+  const Scene scene = loadJson(j, "unlit.gltf");
+  CHECK(scene.warnings.empty());
+  REQUIRE(scene.materials.size() == 1);
+  CHECK(scene.materials[0].unlit);
+  CHECK(scene.triangleCount() == 1);
+}
+
+TEST_CASE("glTF KHR_materials_ior's ior 0 is valid: an infinite index, whose Fresnel term reflects all light at every angle") {
+  nlohmann::json j = triangle();
+  j["materials"] = {{{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}}, {"KHR_materials_ior", {{"ior", 0}}}}}}};
+  j["extensionsUsed"] = {"KHR_materials_transmission", "KHR_materials_ior"};
+  const Scene scene = loadJson(j, "mirror.gltf");
+  CHECK(scene.warnings.empty());
+  REQUIRE(scene.materials.size() == 1);
+  CHECK(std::isinf(scene.materials[0].ior));
+  CHECK(std::isinf(courseMaterial(scene.materials[0], {}).ior));
+  // Entering or leaving, at any angle: F = 1, nothing is transmitted.
+  const float inf = std::numeric_limits<float>::infinity();
+  for (const float c : {0.0f, 0.5f, 1.0f}) {
+    CHECK(ray::fresnelSchlick(1.0f, inf, c, 1.0f) == 1.0f);
+    CHECK(ray::fresnelSchlick(inf, 1.0f, c, c) == 1.0f);
+  }
+  CHECK_FALSE(ray::refracted(glm::vec3(0, 0, -1), glm::vec3(0, 0, 1), inf, 1.0f));
 }
 
 TEST_CASE("glTF bad input: positions that cannot be framed are dropped, naming the accessor, and the rest is framed") {
