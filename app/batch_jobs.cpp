@@ -120,8 +120,9 @@ std::vector<JobLine> parseJobFile(std::string_view text, const std::string& path
     try {
       BatchJob job = parseJob(line, folder);
       entry.output = job.output;
-      // Two jobs writing one file would race; the second is the mistake.
-      const auto [at, fresh] = outputLines.emplace(std::filesystem::path(job.output).lexically_normal().string(), number);
+      // Two jobs writing one file would race; the second is the mistake. One
+      // file whatever the spelling: out/a.png, $PWD/out/a.png, link/a.png.
+      const auto [at, fresh] = outputLines.emplace(fileIdentityKey(job.output), number);
       if (!fresh) throw Error("output " + shownPath(job.output) + " is written by line " + std::to_string(at->second) + " already");
       entry.job = std::move(job);
     } catch (const Error& e) {
@@ -133,7 +134,7 @@ std::vector<JobLine> parseJobFile(std::string_view text, const std::string& path
   // written, as the jobs' order on the threads falls; this job's own output, after.
   for (JobLine& entry : lines) {
     if (!entry.job || entry.job->expected.empty()) continue;
-    const auto writer = outputLines.find(std::filesystem::path(entry.job->expected).lexically_normal().string());
+    const auto writer = outputLines.find(fileIdentityKey(entry.job->expected));
     if (writer == outputLines.end()) continue;
     entry.problem = path + ":" + std::to_string(entry.line) + ": expected " + shownPath(entry.job->expected) +
                     (writer->second == entry.line ? " is this job's own output" : " is written by line " + std::to_string(writer->second));

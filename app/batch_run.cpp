@@ -155,10 +155,14 @@ bool upToDate(const std::string& output, const std::string& hash, int width, int
 // One job, start to end; throws facet::Error for what makes it fail.
 void runJob(const BatchJob& job, const BatchOptions& options, SceneCache& scenes, NamedFilesDigests& digests, Worker& worker, JobOutcome& outcome) {
   // Before any work: a frame nobody can write is not drawn.
-  checkOutputFile(job.output, {job.scene, job.expected}, MissingFolders::Created);
+  checkOutputFile(job.output, {job.scene, job.expected, options.jobFile}, MissingFolders::Created);
   const std::shared_ptr<const LoadedScene> loaded = scenes.get(job.scene);
   RenderSettings asked = settingsFor(baseSettings(job), job.assignments, job.size, loaded->scene);
   forEachNamedFile(asked, [&](std::string& file) { file = resolvedPath(file, job.folder); });  // as the job's other paths
+  // Nor a file the scene was read from (its buffers, images) or one the settings name.
+  std::vector<std::string> read = loaded->scene.files;
+  for (const std::string& file : namedFiles(asked)) read.push_back(file);
+  if (const std::string same = sameFileAsInput(job.output, read); !same.empty()) throw Error(same);
   const std::string settingsText = settingsToJson(asked).dump();
   // The scene's files, and the maps, volume and sprites the settings name.
   const std::string files = loaded->hashed + digests.of(namedFiles(asked));

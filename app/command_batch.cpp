@@ -91,6 +91,13 @@ int runJobs(const BatchCommandOptions& options) {
   const std::string& path = options.inputs.front();
   if (!options.junit.empty()) checkOutputFile(options.junit, {path}, MissingFolders::Refuse);
   const std::vector<JobLine> all = readJobFile(path);
+  // The report is none of the files a job reads or writes (a golden it compares against).
+  if (!options.junit.empty()) {
+    std::vector<std::string> files;
+    for (const JobLine& j : all)
+      if (j.job) files.insert(files.end(), {j.job->scene, j.job->expected, j.job->output});
+    checkOutputFile(options.junit, files, MissingFolders::Refuse);
+  }
   std::vector<JobLine> jobs;
   for (std::size_t k = 0; k < all.size(); ++k)
     if (inShard(k, shard)) jobs.push_back(all[k]);

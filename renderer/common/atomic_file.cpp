@@ -259,6 +259,12 @@ std::string sameFileAsInput(const std::string& path, const std::vector<std::stri
   return {};
 }
 
+std::string fileIdentityKey(const std::string& path) {
+  const FileIdentity id = identityOf(path);
+  if (id.exists) return "inode " + std::to_string(id.device) + ":" + std::to_string(id.inode);
+  return "name " + id.canonical;
+}
+
 void checkDistinctOutputs(const std::vector<NamedOutput>& outputs) {
   std::vector<FileIdentity> ids;
   ids.reserve(outputs.size());

@@ -47,6 +47,11 @@ struct NamedOutput {
   std::string option;
 };
 
+// A key equal for two paths exactly when they are one file by the rule of
+// checkDistinctOutputs: the device and inode of an existing file, the
+// canonical name of one not written yet.
+std::string fileIdentityKey(const std::string& path);
+
 // Throws facet::Error when two of `outputs` are one file: the same existing
 // file (device and inode), or the same canonical name for one not written
 // yet ("out/a.png", "$PWD/out/a.png" and "link/a.png" alike), naming the

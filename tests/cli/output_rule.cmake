@@ -46,4 +46,37 @@ facet_run_command(COMMAND ${render} box/BoxTextured.gltf -o box/render.png --sha
 if(NOT EXISTS ${DIR}/box/render.png OR NOT EXISTS ${DIR}/box/shadows.png)
   message(FATAL_ERROR "distinct outputs were not written${report}")
 endif()
+# batch: a job's output is never the job file nor a file of its scene; two
+# jobs' outputs and a job's expected image are compared as files, not as
+# spellings; --junit is none of the jobs' files. The bad jobs fail alone (4).
+file(WRITE ${DIR}/jobs.jsonl
+"{\"scene\":\"builtin:cube\",\"size\":\"16x16\",\"backend\":\"cpu\",\"output\":\"jobs.jsonl\"}
+{\"scene\":\"box/BoxTextured.gltf\",\"size\":\"16x16\",\"backend\":\"cpu\",\"output\":\"box/BoxTextured0.bin\"}
+{\"scene\":\"builtin:cube\",\"size\":\"16x16\",\"backend\":\"cpu\",\"output\":\"out/a.png\"}
+{\"scene\":\"builtin:cube\",\"size\":\"16x16\",\"backend\":\"cpu\",\"output\":\"${DIR}/out/a.png\"}
+{\"scene\":\"builtin:cube\",\"size\":\"16x16\",\"backend\":\"cpu\",\"output\":\"out/b.png\",\"expected\":\"link/out/b.png\"}
+")
+file(SHA256 ${DIR}/jobs.jsonl jobs_before)
+facet_run_command(COMMAND ${FACET} batch jobs.jsonl WORKING_DIRECTORY ${DIR} EXPECT 4)
+foreach(pattern "line 1 [^\n]*FILE ERROR[^\n]*jobs.jsonl: is an input of this command"
+                "line 2 [^\n]*FILE ERROR[^\n]*BoxTextured0.bin: is the input [^\n]*BoxTextured0.bin under another name"
+                "line 3 [^\n]*PASS"
+                "line 4 [^\n]*FILE ERROR[^\n]*output [^\n]*out/a.png is written by line 3 already"
+                "line 5 [^\n]*FILE ERROR[^\n]*expected [^\n]*link/out/b.png is this job's own output")
+  if(NOT out MATCHES "${pattern}")
+    message(FATAL_ERROR "batch: expected a line matching ${pattern}${report}")
+  endif()
+endforeach()
+file(SHA256 ${DIR}/jobs.jsonl jobs_after)
+file(SHA256 ${DIR}/box/BoxTextured0.bin bin_after)
+if(NOT jobs_before STREQUAL jobs_after OR NOT bin_before STREQUAL bin_after)
+  message(FATAL_ERROR "batch replaced its job file or a scene's buffer")
+endif()
+file(WRITE ${DIR}/golden.jsonl "{\"scene\":\"builtin:cube\",\"size\":\"16x16\",\"backend\":\"cpu\",\"output\":\"out/c.png\",\"expected\":\"out/a.png\"}\n")
+file(SHA256 ${DIR}/out/a.png golden_before)
+facet_run_command(COMMAND ${FACET} batch golden.jsonl --junit ./out/a.png WORKING_DIRECTORY ${DIR} EXPECT 4)
+file(SHA256 ${DIR}/out/a.png golden_after)
+if(NOT err MATCHES "out/a.png: is the input" OR NOT golden_before STREQUAL golden_after OR EXISTS ${DIR}/out/c.png)
+  message(FATAL_ERROR "batch --junit may replace the golden a job compares against${report}")
+endif()
 message(STATUS "outputs: never an input, never twice")
