@@ -82,7 +82,9 @@ folder is a failure for its case.
 purple to crimson where they differ within --fail, orange to pale yellow
 where they fail. -o FOLDER writes FOLDER/index.html, one page with the
 expected, actual and heat-map images of every case, worst first, and the
-images beside it under FOLDER/images.
+images beside it under FOLDER/images. FOLDER is new, empty, or an older
+report (it holds the facet-report.txt file facet writes in each); any other
+folder is left as it is.
 
 Exit codes (idiff's; with folders, the worst over all cases):
   0  PASS: within the warn thresholds

@@ -29,13 +29,18 @@ bool isPngName(const fs::path& name) {
   return ext == ".png";
 }
 
-// What a report folder holds: index.html, images/ and PNG files in it. A
-// folder with anything else is someone's work, and never replaced.
+// The file facet writes in every report folder: a folder without it is not
+// one of facet's, whatever it holds (someone's web page has index.html and
+// images/*.png too).
+constexpr const char* kReportMarker = "facet-report.txt";
+
+// What a report folder holds: the marker, index.html, images/ and PNG files
+// in it. A folder with anything else is someone's work, and never replaced.
 std::string foreignEntry(const fs::path& folder) {
   std::error_code ec;
   for (const fs::directory_entry& entry : fs::directory_iterator(folder, ec)) {
     const std::string name = entry.path().filename().string();
-    if (name == "index.html" && entry.is_regular_file(ec) && !entry.is_symlink(ec)) continue;
+    if ((name == "index.html" || name == kReportMarker) && entry.is_regular_file(ec) && !entry.is_symlink(ec)) continue;
     if (name == "images" && entry.is_directory(ec) && !entry.is_symlink(ec)) {
       for (const fs::directory_entry& image : fs::directory_iterator(entry.path(), ec))
         if (!isPngName(image.path()) || !image.is_regular_file(ec) || image.is_symlink(ec)) return "images/" + image.path().filename().string();
@@ -76,6 +81,9 @@ void checkReportFolder(const std::string& folder, const std::vector<std::string>
   if (const std::string entry = foreignEntry(folder); !entry.empty())
     throw Error(shownPath(folder) + ": is a folder that is not a facet report (it holds " + shownPath(entry) +
                 "); give a new folder or remove this one");
+  if (!fs::is_empty(folder, ec) && !fs::is_regular_file(fs::path(folder) / kReportMarker, ec))
+    throw Error(shownPath(folder) + ": is a folder that is not a facet report (facet writes " + kReportMarker +
+                " in each of its reports); give a new folder or remove this one");
 }
 
 ReportFolder::ReportFolder(const std::string& folder, ReportWriters writers)
@@ -105,6 +113,9 @@ ReportCase ReportFolder::writeImages(int index, const ComparedFiles& compared, c
 std::string ReportFolder::finish(std::vector<ReportCase> cases, const ReportContext& context) {
   const std::string html = reportHtml(std::move(cases), context);
   writeStaged(staged_.path(), folder_, [&] { writers_.text((fs::path(staged_.path()) / "index.html").string(), html); });
+  writeStaged(staged_.path(), folder_, [&] {
+    writers_.text((fs::path(staged_.path()) / kReportMarker).string(), "a report of facet diff: facet diff -o may replace this folder\n");
+  });
   staged_.commit();
   return (fs::path(folder_) / "index.html").string();
 }

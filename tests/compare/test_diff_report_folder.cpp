@@ -87,7 +87,7 @@ TEST_CASE("a report that fails after N files leaves no folder, and an older repo
   writeReport(folder, 4, defaultReportWriters(), "first");
   const std::vector<std::string> before = namesIn(folder);
   const std::string page = readAll(folder / "index.html");
-  REQUIRE(before.size() == 14);  // index.html, images/, 12 images
+  REQUIRE(before.size() == 15);  // facet-report.txt, index.html, images/, 12 images
   for (const int allowed : {0, 3, 6}) {  // 6: a second report of two cases, its page fails
     CAPTURE(allowed);
     int written = 0;
@@ -106,10 +106,10 @@ TEST_CASE("a complete report replaces an older one entirely") {
   const std::string page = writeReport(folder, 1, defaultReportWriters(), "second");
   CHECK(page == (folder / "index.html").string());
   CHECK(readAll(folder / "index.html").find("second") != std::string::npos);
-  CHECK(namesIn(folder) == std::vector<std::string>{"images", "images/001-case0.actual.png", "images/001-case0.diff.png",
+  CHECK(namesIn(folder) == std::vector<std::string>{"facet-report.txt", "images", "images/001-case0.actual.png", "images/001-case0.diff.png",
                                                     "images/001-case0.expected.png", "index.html"});
   CHECK(readPng((folder / "images" / "001-case0.diff.png").string()).width() == 8);
-  CHECK(namesIn(dir).size() == 6);
+  CHECK(namesIn(dir).size() == 7);
   fs::remove_all(dir);
 }
 
@@ -131,7 +131,17 @@ TEST_CASE("a folder that is not a report is never replaced by one") {
   CHECK(readAll(folder / "notes.txt") == "notes");
   CHECK(namesIn(dir).size() == 4);
   fs::remove(folder / "notes.txt");
-  writeReport(folder, 1, defaultReportWriters(), "x");  // index.html and images/ only: a report's shape, replaced
-  CHECK(readAll(folder / "index.html") != "my page");
+  // index.html and images/*.png only, a report's shape (someone's web page), but no marker: kept.
+  std::ofstream(folder / "images" / "photo.png") << "png";
+  CHECK_THROWS_WITH_AS(writeReport(folder, 1, defaultReportWriters(), "x"),
+                       (folder.string() + ": is a folder that is not a facet report (facet writes facet-report.txt in each of its reports); give a new folder or remove this one").c_str(),
+                       Error);
+  CHECK(readAll(folder / "index.html") == "my page");
+  CHECK(readAll(folder / "images" / "photo.png") == "png");
+  // An empty folder is taken.
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  writeReport(folder, 1, defaultReportWriters(), "x");
+  CHECK(fs::is_regular_file(folder / "facet-report.txt"));
   fs::remove_all(dir);
 }
