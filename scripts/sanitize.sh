@@ -40,4 +40,4 @@ echo "sanitize: ASan + UBSan"
 ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:strict_string_checks=1" run_tests
 echo "sanitize: LeakSanitizer on the tests that load no GL driver"
 ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1" run_tests \
-  -E '^(gl\.|viewer\.|stages:|agreement(:|\.start$|\.summary$)|pathological|robustness\.|cli\.bench_(small|draws_maps_every_frame|keep_shadow_maps|lean_matches_cpu|sweep_quick)$|cli\.batch_jobs$)'
+  -E '^(gl\.|viewer\.|stages:|docs\.examples:|agreement(:|\.start$|\.summary$)|pathological|robustness\.|cli\.bench_(small|draws_maps_every_frame|keep_shadow_maps|lean_matches_cpu|sweep_quick)$|cli\.batch_jobs$)'
