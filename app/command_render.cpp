@@ -153,8 +153,11 @@ Command addRenderCommand(CLI::App& app) {
     // buffers, images) or one the settings name (maps, volume, sprites).
     std::vector<std::string> read = loaded->files;
     for (const std::string& file : namedFiles(asked)) read.push_back(file);
+    // Each file's identity once: a turntable has thousands of outputs.
+    std::set<std::string> readKeys;
+    for (const std::string& file : read) readKeys.insert(fileIdentityKey(file));
     for (const NamedOutput& output : toWrite)
-      if (const std::string same = sameFileAsInput(output.path, read); !same.empty()) throw Error(same);
+      if (readKeys.count(fileIdentityKey(output.path))) throw Error(sameFileAsInput(output.path, read));
     FrameSpine spine(loaded, options->threads);
     // Frame k of a turntable: the asked move, turned a further k/N of a circle about camera.up.
     const auto orbitOf = [&](int k) {
