@@ -12,16 +12,36 @@ CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo 
 targets=(gltf_loader cpu_rasterizer png_reader settings_json)
 cmake --build build-fuzz --parallel "$(nproc)" --target "${targets[@]/#/fuzz_}"
 mkdir -p build-fuzz/findings
-for target in "${targets[@]}"; do
-  corpus="build-fuzz/corpus/$target"
+# fuzz_one TARGET: runs one target from its corpus, its summary lines into
+# build-fuzz/TARGET.log.
+fuzz_one() {
+  local target=$1 corpus="build-fuzz/corpus/$1"
   mkdir -p "$corpus"
   cp -n tests/fuzz/corpus/"$target"/* tests/fuzz/regressions/"$target"/* "$corpus"/ 2>/dev/null || true
-  echo "fuzz_$target: $seconds s"
   "build-fuzz/tests/fuzz/fuzz_$target" -max_total_time="$seconds" -rss_limit_mb=4096 -max_len=65536 \
     -artifact_prefix=build-fuzz/findings/"$target"- -print_final_stats=1 "$corpus" 2>&1 |
-    grep -E '^(stat::number_of_executed_units|stat::peak_rss_mb|#[0-9]+ +DONE)|ERROR|SUMMARY|runtime error' || true
-  if ls build-fuzz/findings/"$target"-* >/dev/null 2>&1; then
-    echo "fuzz_$target found a crash: $(ls build-fuzz/findings/"$target"-*)" >&2
-    exit 1
+    grep -E '^(stat::number_of_executed_units|stat::peak_rss_mb|#[0-9]+ +DONE)|ERROR|SUMMARY|runtime error' \
+      >"build-fuzz/$target.log" || true
+}
+# One target per core at a time: each fuzzer is single-threaded.
+running=0
+for target in "${targets[@]}"; do
+  echo "fuzz_$target: $seconds s"
+  fuzz_one "$target" &
+  running=$((running + 1))
+  if [ "$running" -ge "$(nproc)" ]; then
+    wait -n || true
+    running=$((running - 1))
   fi
 done
+wait
+status=0
+for target in "${targets[@]}"; do
+  echo "fuzz_$target:"
+  cat "build-fuzz/$target.log"
+  if ls build-fuzz/findings/"$target"-* >/dev/null 2>&1; then
+    echo "fuzz_$target found a crash: $(ls build-fuzz/findings/"$target"-*)" >&2
+    status=1
+  fi
+done
+exit "$status"
