@@ -7,7 +7,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
 ./scripts/install-deps.sh
+# -O1 and line tables, as for the sanitizer run (scripts/sanitize.sh).
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFACET_BUILD_FUZZERS=ON \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
   -DFACET_BUILD_GL=OFF -DFACET_BUILD_TESTS=OFF >/dev/null
 targets=(gltf_loader cpu_rasterizer png_reader settings_json)
 cmake --build build-fuzz --parallel "$(nproc)" --target "${targets[@]/#/fuzz_}"
