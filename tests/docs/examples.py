@@ -1,14 +1,18 @@
-"""Runs every shell example of one Markdown file, as a reader would, so that
+"""Runs the shell examples of one Markdown file, as a reader would, so that
 an example that no longer works is a failing test.
 
-    examples.py FACET SOURCE_DIR SCRATCH_DIR FILE.md
+    examples.py FACET SOURCE_DIR SCRATCH_DIR FILE.md [LINE]
+    examples.py --list FILE.md
+
+With LINE, only the example that starts on that line runs (one ctest entry
+per example, so that they run side by side); --list prints the line of
+each example, one per line.
 
 An example is a code block (indented by four spaces, or fenced as ```sh,
 ```bash or ```console) whose first line starts with a command: facet,
 ./build/app/facet, ./scripts/..., $, mkdir, cmake, ffmpeg, valgrind,
 xvfb-run, python3. Other blocks (JSON, diagrams, tables of output) are
-text. The examples run one after another, in the order of the file, in
-SCRATCH_DIR, which holds copies of assets/ and docs/ (so that the examples'
+text. An example runs in SCRATCH_DIR, which holds copies of assets/ and docs/ (so that the examples'
 relative paths work and nothing is written into the source tree); `facet`
 and ./build/app/facet are the facet built. Each command must exit 0. In a
 block whose lines start with `$ `, those lines are the commands and the
@@ -19,7 +23,7 @@ between allowed), with a reason the reader sees too:
 
     <!-- not run: REASON -->
 
-Every such block is listed in this test's output, with its reason.
+Such a block is reported as skipped (exit code 77), with its reason.
 """
 import os
 import re
@@ -27,10 +31,15 @@ import shutil
 import stat
 import subprocess
 import sys
+import time
 
-facet, source, scratch, doc = sys.argv[1:5]
-facet = os.path.abspath(facet)
-name = os.path.relpath(doc, source)
+if sys.argv[1] == "--list":
+    doc = sys.argv[2]
+else:
+    facet, source, scratch, doc = sys.argv[1:5]
+    only = int(sys.argv[5]) if len(sys.argv) > 5 else None
+    facet = os.path.abspath(facet)
+    name = os.path.relpath(doc, source)
 lines = open(doc, encoding="utf-8").read().split("\n")
 
 COMMAND = re.compile(r"^(facet\b|\./build/app/facet\b|\./scripts/|\$ |mkdir\b|cmake\b|ctest\b|ffmpeg\b|valgrind\b|xvfb-run\b|python3\b)")
@@ -77,6 +86,18 @@ def reason_before(start):
     return None
 
 
+def examples():
+    """(first line number, lines, first line of the block's markup) of each example."""
+    for first, block, start in blocks():
+        if block and COMMAND.match(block[0]):
+            yield first, block, start
+
+
+if sys.argv[1] == "--list":
+    for first, _, _ in examples():
+        print(first)
+    sys.exit(0)
+
 # The scratch folder: copies of what the examples read, and facet where they call it.
 shutil.rmtree(scratch, ignore_errors=True)
 os.makedirs(os.path.join(scratch, "build", "app"))
@@ -90,10 +111,10 @@ env = dict(os.environ, PATH=bin_dir + os.pathsep + os.environ.get("PATH", ""))
 
 run = skipped = 0
 failures = []
-for first, block, start in blocks():
-    text = [l for l in block]
-    if not text or not COMMAND.match(text[0]):
+for first, block, start in examples():
+    if only is not None and first != only:
         continue
+    text = list(block)
     reason = reason_before(start)
     if reason is not None:
         print(f"not run: {name}:{first}: {text[0]}\n  because {reason}")
@@ -120,7 +141,9 @@ for first, block, start in blocks():
             steps.append([first + offset, l, None])
     for number, command, expected in steps:
         print(f"$ {command}    ({name}:{number})", flush=True)
+        began = time.monotonic()
         result = subprocess.run(["bash", "-o", "pipefail", "-c", command], cwd=scratch, env=env, capture_output=True, text=True)
+        print(f"  ({time.monotonic() - began:.1f} s)")
         run += 1
         shown = (result.stdout + result.stderr).strip().splitlines()
         for out in shown[-5:]:
@@ -136,5 +159,6 @@ print(f"{name}: {run} commands run, {skipped} blocks not run (reasons above), {l
 for failure in failures:
     print("FAILED " + failure)
 if run == 0 and skipped == 0:
-    print(f"{name}: no example found")
-sys.exit(1 if failures else 0)
+    print(f"{name}: no example found" + (f" on line {only}" if only is not None else ""))
+    sys.exit(1)
+sys.exit(1 if failures else 77 if run == 0 else 0)
