@@ -175,7 +175,6 @@ Command addRenderCommand(CLI::App& app) {
     };
     PreparedFrame frame = prepare(0);
 #if FACET_HAVE_GL
-    if (options->backend == "gl") refuseCpuOnlyFrame(frame.inputs);  // before the driver is loaded
     if (options->backend == "auto") {
       try {
         refuseCpuOnlyFrame(frame.inputs);
@@ -184,6 +183,15 @@ Command addRenderCommand(CLI::App& app) {
       }
     }
 #endif
+    // Before the backend starts (GL: its driver): settings the backend named
+    // on the command line cannot draw are a command line that does not work.
+    if (stage.kind == StageKind::Image) {
+      try {
+        refuseUndrawnImage(options->backend, frame.inputs);
+      } catch (const Error& e) {
+        throw UsageError(e.what());
+      }
+    }
     if (probe && ((*probe)[0] >= frame.inputs.width || (*probe)[1] >= frame.inputs.height))
       throw UsageError("--probe " + options->probe + ": outside the " + std::to_string(frame.inputs.width) + "x" + std::to_string(frame.inputs.height) +
                        " frame");

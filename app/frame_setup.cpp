@@ -52,4 +52,12 @@ std::unique_ptr<Renderer> makeBackend(const std::string& backend, const std::str
   return makeGlBackend(context);
 }
 
+void refuseUndrawnImage(const std::string& backend, const FrameInputs& frame) {
+  if (backend == "reference") refuseReferenceImage(frame);
+  if (backend == "ray") refuseRayImage(frame);
+#if FACET_HAVE_GL
+  if (backend == "gl") refuseCpuOnlyFrame(frame);
+#endif
+}
+
 }  // namespace facet

@@ -16,4 +16,9 @@ namespace facet {
 // none.
 std::unique_ptr<Renderer> makeBackend(const std::string& backend, const std::string& context, int threads, RenderProgress progress = {});
 
+// What the named backend (gl, reference or ray; cpu and auto draw every
+// frame) refuses to draw of a frame's image, asked before it is made: the
+// backend's own refusal, facet::Error naming the settings key.
+void refuseUndrawnImage(const std::string& backend, const FrameInputs& frame);
+
 }  // namespace facet

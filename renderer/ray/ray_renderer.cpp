@@ -52,10 +52,7 @@ class RayRenderer final : public Renderer {
 
  private:
   RenderResult drawImage(const Scene& scene, const FrameInputs& frame) {
-    if (frame.areaAveraged)
-      throw Error("settings key 'antialiasing.pattern': area is the CPU rasterizer's exact coverage; the ray tracer samples grid or jittered");
-    if (frame.volume.placed)
-      throw Error("settings key 'volume.mode': raycast is drawn by the CPU rasterizer (--backend cpu); the ray tracer draws splat and isosurface");
+    refuseRayImage(frame);
     RenderResult result;
     const TracedScene& traced = prepare(scene, frame, frame.ray.spheres, result);
     // Paths per pixel: ray.samples, each jittered over the pixel; with one, the antialiasing
@@ -178,5 +175,12 @@ class RayRenderer final : public Renderer {
 }  // namespace
 
 std::unique_ptr<Renderer> makeRayRenderer(int threads, RenderProgress progress) { return std::make_unique<RayRenderer>(threads, std::move(progress)); }
+
+void refuseRayImage(const FrameInputs& frame) {
+  if (frame.areaAveraged)
+    throw Error("settings key 'antialiasing.pattern': area is the CPU rasterizer's exact coverage; the ray tracer samples grid or jittered");
+  if (frame.volume.placed)
+    throw Error("settings key 'volume.mode': raycast is drawn by the CPU rasterizer (--backend cpu); the ray tracer draws splat and isosurface");
+}
 
 }  // namespace facet

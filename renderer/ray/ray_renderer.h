@@ -18,4 +18,9 @@ using RenderProgress = std::function<void(double done)>;
 // threads <= 0: one per core.
 std::unique_ptr<Renderer> makeRayRenderer(int threads, RenderProgress progress = {});
 
+// What the ray tracer refuses of a frame: the rasterizer's area-weighted
+// averaging and its ray-cast volume. Throws facet::Error naming the settings
+// key; the renderer calls it, and `render` before it starts one.
+void refuseRayImage(const FrameInputs& frame);
+
 }  // namespace facet

@@ -18,6 +18,15 @@
 namespace facet {
 namespace {
 
+// The reference follows one triangle at a time through the z-buffer, its only hidden-surface removal, at the pixel centres.
+void refuseHiddenSurface(const FrameInputs& frame) {
+  if (!frame.samples.empty())
+    throw Error("settings key 'antialiasing.samples': the reference backend draws one sample per pixel; --backend cpu and gl supersample");
+  if (frame.hsr != HiddenSurface::ZBuffer)
+    throw Error("settings key 'hsr': the reference backend has the z-buffer only; --backend cpu draws " +
+                std::string(kHiddenSurfaceNames[static_cast<std::size_t>(frame.hsr)]));
+}
+
 using namespace cpu::reference;
 
 class ReferenceRenderer final : public Renderer {
@@ -28,11 +37,8 @@ class ReferenceRenderer final : public Renderer {
   RenderResult render(const Scene& scene, const FrameInputs& frame, const FrameOutputs& asked) override {
     refuseUndrawn(asked, {FrameOutput::Image, FrameOutput::TriangleIds, FrameOutput::FragmentCounts});
     check_(scene, frame);
-    if (asked.has(FrameOutput::Image) || asked.has(FrameOutput::TriangleIds)) refuseHiddenSurface(frame);
-    if (asked.has(FrameOutput::Image) && frame.volume.placed)
-      throw Error("settings key 'volume.mode': raycast is drawn by the CPU backend (--backend cpu); the readable reference draws splat and isosurface");
-    if (asked.has(FrameOutput::Image) && frame.areaAveraged)
-      throw Error("settings key 'antialiasing.pattern': area-weighted averaging is the CPU backend's (--backend cpu); the reference samples pixel centres");
+    if (asked.has(FrameOutput::Image)) refuseReferenceImage(frame);
+    if (asked.has(FrameOutput::TriangleIds)) refuseHiddenSurface(frame);
     const auto start = std::chrono::steady_clock::now();
     const ShadowMaps maps = shadowPass(scene, frame);  // Gouraud lights its vertices with them, whatever is asked
     RenderResult result;
@@ -70,18 +76,18 @@ class ReferenceRenderer final : public Renderer {
   static Target targetOf(const FrameInputs& frame) {
     return {frame.width, frame.height, std::vector<float>(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 1.0f)};
   }
-  // The reference follows one triangle at a time through the z-buffer, its only hidden-surface removal, at the pixel centres.
-  static void refuseHiddenSurface(const FrameInputs& frame) {
-    if (!frame.samples.empty())
-      throw Error("settings key 'antialiasing.samples': the reference backend draws one sample per pixel; --backend cpu and gl supersample");
-    if (frame.hsr != HiddenSurface::ZBuffer)
-      throw Error("settings key 'hsr': the reference backend has the z-buffer only; --backend cpu draws " +
-                  std::string(kHiddenSurfaceNames[static_cast<std::size_t>(frame.hsr)]));
-  }
 };
 
 }  // namespace
 
 std::unique_ptr<Renderer> makeReferenceRenderer() { return std::make_unique<ReferenceRenderer>(); }
+
+void refuseReferenceImage(const FrameInputs& frame) {
+  refuseHiddenSurface(frame);
+  if (frame.volume.placed)
+    throw Error("settings key 'volume.mode': raycast is drawn by the CPU backend (--backend cpu); the readable reference draws splat and isosurface");
+  if (frame.areaAveraged)
+    throw Error("settings key 'antialiasing.pattern': area-weighted averaging is the CPU backend's (--backend cpu); the reference samples pixel centres");
+}
 
 }  // namespace facet

@@ -15,4 +15,10 @@ namespace facet {
 // One thread, no tiles, no batching; much slower than makeCpuRenderer.
 std::unique_ptr<Renderer> makeReferenceRenderer();
 
+// What the reference refuses of a frame whose image it is asked for: more
+// than one sample a pixel, hidden-surface removal other than the z-buffer,
+// a ray-cast volume, area-weighted averaging. Throws facet::Error naming the
+// settings key; the renderer calls it, and `render` before it loads one.
+void refuseReferenceImage(const FrameInputs& frame);
+
 }  // namespace facet
