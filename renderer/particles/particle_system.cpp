@@ -353,6 +353,17 @@ std::vector<Particle> simulateParticles(const Emitter& emitter, float time, floa
   if (!range.indexable)
     throw Error(name + ".rate: " + number(emitter.rate) + " particles a second from " + name + ".startTime " + number(emitter.startTime) +
                 " s bear more than 2^52 particles by time " + number(time) + " s, past which their birth times are not exact");
+  // The work, priced before it starts: births are evenly spaced, so the
+  // steps are the count times the mean of the oldest and youngest ages.
+  if (count > 0) {
+    const double oldest = static_cast<double>(time) - birthTime(emitter, range.first);
+    const double youngest = static_cast<double>(time) - birthTime(emitter, range.end - 1);
+    const double steps = static_cast<double>(count) * (oldest + youngest) / 2.0 / static_cast<double>(step);
+    if (steps > kMaxParticleSteps)
+      throw Error(name + ": " + std::to_string(count) + " particles alive at time " + number(time) + " s, integrated with " + name + ".step " +
+                  number(step) + " s, take " + number(steps) + " steps, more than the " + number(kMaxParticleSteps) +
+                  " a frame may take; a larger step, a shorter lifetime or a lower rate takes fewer");
+  }
 
   std::vector<Particle> particles;
   try {

@@ -40,6 +40,7 @@ void addSprites(Scene& scene, const std::vector<Sprite>& sprites, const CameraSe
 
   Mesh mesh;
   mesh.name = name;
+  mesh.sprites = true;
   mesh.positions.reserve(4 * sprites.size());
   mesh.normals.reserve(4 * sprites.size());
   mesh.texcoords.reserve(4 * sprites.size());

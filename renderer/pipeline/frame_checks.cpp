@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "common/error.h"
@@ -89,6 +90,65 @@ void checkFrameMemory(const Scene& scene, const FrameInputs& frame) {
                 (fits >= static_cast<std::uint64_t>(kMinShadowMapSize) ? std::to_string(fits) + " or less fits" : "no size fits") +
                 ", or shadows.enabled=false)");
   }
+}
+
+// Three significant digits: 1.23e+09.
+std::string figure(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", v);
+  return text;
+}
+
+// The shadow pass's work on sprite quads, which overlap by the thousand and
+// may each cover a whole face: Σ over the shadow-casting sprites, lights and
+// faces of the texels of the quad's bounding box in the face's window
+// (clipped to the face; a quad across the plane of the light's eye counts
+// the whole face), against kMaxShadowSpriteTexels. Only sprite meshes:
+// ordinary surfaces do not stack so.
+void checkSpriteShadows(const Scene& scene, const FrameInputs& frame) {
+  if (frame.shadowLayerCount == 0) return;
+  const double side = frame.shadows.mapSize;
+  const double face = side * side;
+  double texels = 0.0;
+  std::uint64_t sprites = 0;
+  for (const FrameInstance& instance : frame.instances) {
+    const Mesh& mesh = scene.meshes[static_cast<std::size_t>(instance.mesh)];
+    if (!mesh.sprites || !frame.materials[static_cast<std::size_t>(instance.material)].castsShadow) continue;
+    sprites += mesh.positions.size() / 4;
+    for (const FrameLight& light : frame.lights) {
+      if (!light.hasShadowMap) continue;
+      for (int f = 0; f < light.frustum.faceCount; ++f) {
+        const glm::mat4 clipFromModel = light.frustum.clipFromWorld[static_cast<std::size_t>(f)] * instance.worldFromModel;
+        for (std::size_t q = 0; q + 3 < mesh.positions.size(); q += 4) {
+          glm::vec2 low(1.0f), high(-1.0f);
+          int behind = 0;
+          for (std::size_t k = q; k < q + 4; ++k) {
+            const glm::vec4 clip = clipFromModel * glm::vec4(mesh.positions[k], 1.0f);
+            if (!(clip.w > 0.0f)) {
+              ++behind;
+              continue;
+            }
+            const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+            low = glm::min(low, ndc);
+            high = glm::max(high, ndc);
+          }
+          if (behind == 4) continue;  // wholly behind the light's eye: not in this face
+          if (behind > 0) {           // across the eye's plane: up to the whole face
+            texels += face;
+            continue;
+          }
+          low = glm::max(low, glm::vec2(-1.0f));
+          high = glm::min(high, glm::vec2(1.0f));
+          if (high.x > low.x && high.y > low.y)
+            texels += static_cast<double>(high.x - low.x) * static_cast<double>(high.y - low.y) / 4.0 * face;
+        }
+      }
+    }
+  }
+  if (texels > kMaxShadowSpriteTexels)
+    throw Error("settings key 'shadows.mapSize': the shadow maps of " + std::to_string(sprites) + " sprites (volume splats, particles) would take " +
+                figure(texels) + " texel writes, more than the " + figure(kMaxShadowSpriteTexels) +
+                " a frame may take; a smaller shadows.mapSize, smaller sprites, or shadows.enabled=false");
 }
 
 }  // namespace
@@ -180,6 +240,7 @@ void checkFrame(const Scene& scene, const FrameInputs& frame) {
     throw Error("settings key 'shadows.pcfRadius': " + std::to_string(frame.shadows.pcfRadius) + " is not in [0, " + std::to_string(kMaxPcfRadius) +
                 "]");
   checkFrameMemory(scene, frame);  // last: the sizes it prices are within their limits
+  checkSpriteShadows(scene, frame);
 }
 
 void FrameCheck::operator()(const Scene& scene, const FrameInputs& frame) {

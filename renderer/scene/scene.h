@@ -44,6 +44,9 @@ struct Mesh {
   // The builtin unit sphere (scene/primitives.h): the ray tracer may trace it
   // as the sphere it approximates (renderer/PIPELINE.md, "Ray tracing").
   bool sphere = false;
+  // One camera-facing quad per sprite, four positions each (particles/sprites.h):
+  // thousands overlap, so their shadow pass is priced by the texels they cover.
+  bool sprites = false;
   int material = -1;                  // index into Scene::materials, -1 = the default material
 
   // The texture coordinate set a texture reference names (Material::TexcoordSets): TEXCOORD_0 or TEXCOORD_1.

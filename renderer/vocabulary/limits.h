@@ -95,6 +95,14 @@ inline constexpr std::size_t kMaxTracedPrimitives = (std::size_t{1} << 31) - 1;
 inline constexpr std::size_t kMaxEmitters = 16;
 inline constexpr std::uint64_t kMaxParticles = 4'000'000;  // alive at once, over every emitter of a frame
 inline constexpr double kMaxStepsPerParticle = 1e7;        // lifetime / step: a particle's cost is bounded
+// The integration steps of one emitter's frame, Σ age / step over its live
+// particles: the product of the two limits above would be hours of work.
+inline constexpr double kMaxParticleSteps = 1e10;
+// The texels the shadow pass writes for sprites (splats, particles), Σ over
+// sprites, shadowed lights and faces of the map area each quad covers: every
+// one is a masked fragment in both backends, so this is the pass's time.
+// nibabel's MRI splatted at the defaults takes 1.44e8 (docs/performance.md).
+inline constexpr double kMaxShadowSpriteTexels = 5e8;
 // A volume's box, (samples - 1)·spacing along each axis in the file's units:
 // past this its corners, squared in ray and camera arithmetic, leave float's
 // range (1e9² is 1e18, far below 3.4e38).
