@@ -145,7 +145,8 @@ TEST_CASE("PNG: every colour type and bit depth decodes, interlaced or not, and 
                {4, 16, {0, 0, 0, 0}},  {6, 8, {0, 0, 0, 0}},   {6, 16, {0, 0, 0, 0}}};
   for (const auto& kind : kinds)
     for (const int interlace : {0, 1})
-      for (const auto& [w, h] : {std::pair{1u, 1u}, std::pair{13u, 7u}, std::pair{3u, 17u}}) {
+      for (const auto& size : {std::pair{1u, 1u}, std::pair{13u, 7u}, std::pair{3u, 17u}}) {
+        const unsigned w = size.first, h = size.second;  // named, not bound: CAPTURE's lambda takes them
         CAPTURE(kind.colorType);
         CAPTURE(kind.bitDepth);
         CAPTURE(interlace);

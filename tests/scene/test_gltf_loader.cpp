@@ -321,7 +321,8 @@ TEST_CASE("glTF bad input: an image whose bufferView lies past its buffer is ref
                                          "the end of buffers[0], which has 111 bytes (BUFFER_VIEW_TOO_LONG)"),
                        Error);
   // Just past the end (it read invalid memory and drew), and a length that overflows offset + length.
-  for (const auto& [offset, length] : {std::pair<std::uint64_t, std::uint64_t>{40, 75}, {1, 0xffffffffffffffffull}}) {
+  for (const auto& view : {std::pair<std::uint64_t, std::uint64_t>{40, 75}, {1, 0xffffffffffffffffull}}) {
+    const std::uint64_t offset = view.first, length = view.second;  // named, not bound: CAPTURE's lambda takes them
     CAPTURE(offset);
     nlohmann::json j = triangle();
     j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", length}});
@@ -755,7 +756,8 @@ TEST_CASE("glTF bad input: KHR_lights_punctual lights must have a known type and
   CHECK_THROWS_WITH_AS(loadJson(withLight({{"type", 7}})), doctest::Contains("lights[0]: type '7' is not one of"), Error);
   CHECK_THROWS_WITH_AS(loadJson(withLight({{"intensity", 1}})), doctest::Contains("lights[0]: has no type"), Error);
   // 0 ≤ innerConeAngle < outerConeAngle ≤ π/2 (defaults 0 and π/4).
-  for (const auto& [inner, outer] : std::vector<std::pair<double, double>>{{0, -1.0}, {0, 1.6}, {0.5, 0.5}, {0.6, 0.5}, {-0.1, 0.5}, {0, 0}}) {
+  for (const auto& cone : std::vector<std::pair<double, double>>{{0, -1.0}, {0, 1.6}, {0.5, 0.5}, {0.6, 0.5}, {-0.1, 0.5}, {0, 0}}) {
+    const double inner = cone.first, outer = cone.second;  // named, not bound: CAPTURE's lambda takes them
     CAPTURE(inner);
     CAPTURE(outer);
     CHECK_THROWS_WITH_AS(loadJson(withLight({{"type", "spot"}, {"name", "desk"}, {"spot", {{"innerConeAngle", inner}, {"outerConeAngle", outer}}}})),
@@ -779,7 +781,7 @@ TEST_CASE("glTF bad input: KHR_lights_punctual lights must have a known type and
 TEST_CASE("glTF bad input: a texture whose sampler does not exist is refused") {
   nlohmann::json j = triangle();
   j["images"] = {{{"uri", dataUri(pngHeader(4, 4))}}};
-  j["samplers"] = {nlohmann::json::object()};
+  j["samplers"] = nlohmann::json::array({nlohmann::json::object()});  // {object()} alone is an object to clang
   j["textures"] = {{{"source", 0}, {"sampler", 5}}};
   CHECK_THROWS_WITH_AS(loadJson(j), "bad.gltf: textures[0]: sampler '5' does not exist (UNRESOLVED_REFERENCE: the file has 1 sampler)", Error);
   j["textures"][0]["sampler"] = 0;

@@ -115,7 +115,9 @@ TEST_CASE("every settings field has a human label, and every measure a unit") {
     if (measure && !kPureNumbers.count(f.key)) CHECK_FALSE(f.info.unit.empty());
     if (kPureNumbers.count(f.key)) CHECK(f.info.unit.empty());
   }
-  for (const auto& [key, label] : headers) {
+  for (const auto& header : headers) {
+    const auto& key = header.first;  // named, not bound: INFO's lambda takes them
+    const auto& label = header.second;
     INFO(key, " labelled \"", label, "\"");
     CHECK_FALSE(label.empty());
     CHECK_FALSE(camelCase(label));

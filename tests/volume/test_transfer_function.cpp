@@ -92,7 +92,8 @@ TEST_CASE("transfer function presets: each spans the data range with increasing 
     CHECK(std::find(names.begin(), names.end(), name) != names.end());
   for (const std::string_view name : names) {
     CAPTURE(name);
-    for (const auto& [lo, hi] : {std::pair{-610.0f, 30393.0f}, std::pair{0.0f, 1.0f}, std::pair{7.0f, 7.0f}}) {
+    for (const auto& range : {std::pair{-610.0f, 30393.0f}, std::pair{0.0f, 1.0f}, std::pair{7.0f, 7.0f}}) {
+      const float lo = range.first, hi = range.second;  // named, not bound: CAPTURE's lambda takes them
       CAPTURE(lo);
       const TransferFunction f = parseTransferFunction(name, lo, hi);
       REQUIRE(f.points.size() >= 2);
