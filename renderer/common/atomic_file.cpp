@@ -5,11 +5,10 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 #include <random>
-#include <sstream>
 #include <tuple>
+#include <utility>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -301,25 +300,68 @@ void checkOutputFile(const std::string& path, const std::vector<std::string>& in
   checkCanCreateIn(folderOf(d.file), path, missing);
 }
 
+namespace {
+
+// Opens `path` for reading and returns the descriptor and the size of what
+// was opened. O_NONBLOCK: a FIFO or a device is not waited on; fstat looks
+// at what was opened, not at what the path named a moment before. Throws
+// facet::Error naming the path when it cannot be opened or is not a regular
+// file.
+std::pair<int, std::uint64_t> openRegularFile(const std::string& path, const std::string& shown) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+  if (fd < 0) {
+    const int code = errno;
+    if (code == ENOENT || code == ENOTDIR) throw Error(shown + ": no such file");
+    if (code == EACCES) throw Error(shown + ": cannot open (" + std::strerror(code) + ")");
+    throw Error(shown + ": " + describeErrno(code));  // e.g. "too many levels of symbolic links", not "no such file"
+  }
+  struct stat info {};
+  if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode)) {
+    ::close(fd);
+    throw Error(shown + ": not a regular file");
+  }
+  return {fd, static_cast<std::uint64_t>(info.st_size)};
+}
+
+// Up to `most` bytes of the open regular file `fd`, from its start; closes it.
+std::string readOpenFile(int fd, std::uint64_t most, const std::string& shown) {
+  std::string bytes;
+  char chunk[1 << 16];
+  while (bytes.size() < most) {
+    const auto wanted = static_cast<std::size_t>(std::min<std::uint64_t>(sizeof chunk, most - bytes.size()));
+    const ssize_t got = ::read(fd, chunk, wanted);
+    if (got < 0 && errno == EINTR) continue;
+    if (got < 0) {
+      const int code = errno;
+      ::close(fd);
+      throw Error(shown + ": read failed (" + describeErrno(code) + ")");
+    }
+    if (got == 0) break;
+    bytes.append(chunk, static_cast<std::size_t>(got));
+  }
+  ::close(fd);
+  return bytes;
+}
+
+}  // namespace
+
 std::string readFile(const std::string& path, std::uint64_t maxBytes) {
-  namespace fs = std::filesystem;
   const std::string shown = shownPath(path);
-  std::error_code ec;
-  const auto status = fs::status(path, ec);
-  if (ec && ec.value() != ENOENT && ec.value() != ENOTDIR)
-    throw Error(shown + ": " + describeErrno(ec.value()));  // e.g. "too many levels of symbolic links", not "no such file"
-  if (ec || !fs::exists(status)) throw Error(shown + ": no such file");
-  if (!fs::is_regular_file(status)) throw Error(shown + ": not a regular file");
-  const auto size = fs::file_size(path, ec);
-  if (ec) throw Error(shown + ": cannot read (" + ec.message() + ")");
-  if (size > maxBytes)
+  const auto [fd, size] = openRegularFile(path, shown);
+  if (size > maxBytes) {
+    ::close(fd);
     throw Error(shown + ": file is " + std::to_string(size) + " bytes, more than the limit of " + std::to_string(maxBytes));
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(shown + ": cannot open (" + std::strerror(errno) + ")");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (!in && !in.eof()) throw Error(shown + ": read failed");
-  return std::move(buffer).str();
+  }
+  std::string bytes = readOpenFile(fd, maxBytes + 1, shown);
+  if (bytes.size() > maxBytes)  // it grew while read
+    throw Error(shown + ": file is more than the limit of " + std::to_string(maxBytes) + " bytes");
+  return bytes;
+}
+
+std::string readFileStart(const std::string& path, std::uint64_t bytes) {
+  const std::string shown = shownPath(path);
+  const auto [fd, size] = openRegularFile(path, shown);
+  return readOpenFile(fd, std::min(size, bytes), shown);
 }
 
 }  // namespace facet

@@ -73,7 +73,13 @@ std::string folderOf(const std::string& path);
 
 // Reads a whole file; throws facet::Error naming the path when it cannot, when
 // it is not a regular file, or when it is larger than maxBytes.
+// The file is opened without waiting (O_NONBLOCK) and checked as opened
+// (fstat), so a FIFO or a device never blocks the read.
 std::string readFile(const std::string& path, std::uint64_t maxBytes);
+
+// The first `bytes` bytes of a regular file (all of a shorter one), opened as
+// readFile opens it; throws facet::Error naming the path as it does.
+std::string readFileStart(const std::string& path, std::uint64_t bytes);
 
 // A path as an error line shows it: as given when it is printable UTF-8 of a
 // sensible length, otherwise quoteInput() (common/quote.h).

@@ -9,7 +9,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -132,11 +131,7 @@ std::string_view trimmed(std::string_view text) {
 // its "data file" field, so that teem never parses an endless line, reads
 // standard input, or walks a numbered list of thousands of data files.
 void checkHeaderText(const std::string& path, const std::string& shown) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(shown + ": cannot open (" + describeErrno(errno) + ")");
-  std::string head(kMaxNrrdHeaderBytes + 1, '\0');
-  in.read(head.data(), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(in.gcount()));
+  const std::string head = readFileStart(path, kMaxNrrdHeaderBytes + 1);  // never waits on a FIFO
   if (head.rfind("NRRD000", 0) != 0) {
     if (head.size() >= 2 && static_cast<unsigned char>(head[0]) == 0x1f && static_cast<unsigned char>(head[1]) == 0x8b)
       throw Error(shown + ": not a NRRD file but gzip data (NRRD compresses its samples, not the header: use encoding: gzip)");

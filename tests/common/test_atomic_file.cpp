@@ -219,6 +219,24 @@ TEST_CASE("a loop of symbolic links is named as one, when read and when written"
   fs::remove_all(dir);
 }
 
+TEST_CASE("a named pipe or a device is refused as an input as opened, without waiting for a writer") {
+  const fs::path dir = scratch("read_fifo");
+  const fs::path fifo = dir / "pipe";
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  // An open that waited for a writer would wait for ever: SIGALRM ends the
+  // test binary instead, a failure ctest reports.
+  ::alarm(10);
+  CHECK(messageOf([&] { readFile(fifo.string(), 100); }) == fifo.string() + ": not a regular file");
+  CHECK(messageOf([&] { readFileStart(fifo.string(), 100); }) == fifo.string() + ": not a regular file");
+  CHECK(messageOf([&] { readFile("/dev/zero", 100); }) == "/dev/zero: not a regular file");
+  ::alarm(0);
+  // The start of a regular file, or all of a shorter one.
+  writeText(dir / "text", "NRRD0004\ntype: float\n");
+  CHECK(readFileStart((dir / "text").string(), 8) == "NRRD0004");
+  CHECK(readFileStart((dir / "text").string(), 1000) == "NRRD0004\ntype: float\n");
+  fs::remove_all(dir);
+}
+
 TEST_CASE("an output that is one of the command's inputs is refused, whatever it is called") {
   const fs::path dir = scratch("inputs");
   fs::create_directories(dir / "sub");
