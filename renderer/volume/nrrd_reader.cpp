@@ -127,8 +127,24 @@ std::string_view trimmed(std::string_view text) {
   return text;
 }
 
-// Looks at the header before teem does: the magic, the header's length, and
-// its "data file" field, so that teem never parses an endless line, reads
+// teem answers a size of -4 or 2^64 with "axis 0 size is zero!", which
+// is not what is wrong: each size is checked here as written, a whole
+// number from 1 to 2^31 - 1.
+void checkSizes(std::string_view sizes, const std::string& shown) {
+  std::size_t axis = 0;
+  while (!sizes.empty()) {
+    const std::size_t end = std::min(sizes.find_first_of(" \t"), sizes.size());
+    const std::string_view size = sizes.substr(0, end);
+    sizes = trimmed(sizes.substr(end));
+    const bool digits = !size.empty() && size.find_first_not_of("0123456789") == std::string_view::npos;
+    if (!digits || size.size() > 10 || std::stoull(std::string(size)) < 1 || std::stoull(std::string(size)) > 2147483647ull)
+      throw Error(shown + ": sizes: axis " + std::to_string(axis) + " has " + quoteInput(size) + " samples, not a whole number from 1 to 2147483647");
+    ++axis;
+  }
+}
+
+// Looks at the header before teem does: the magic, the header's length, its
+// sizes, and its "data file" field, so that teem never parses an endless line, reads
 // standard input, or walks a numbered list of thousands of data files.
 void checkHeaderText(const std::string& path, const std::string& shown) {
   const std::string head = readFileStart(path, kMaxNrrdHeaderBytes + 1);  // never waits on a FIFO
@@ -152,8 +168,12 @@ void checkHeaderText(const std::string& path, const std::string& shown) {
     const std::size_t colon = line.find(':');
     if (colon == std::string_view::npos || line[0] == '#' || (colon + 1 < line.size() && line[colon + 1] == '=')) continue;
     const std::string key = lowerCase(trimmed(line.substr(0, colon)));
-    if (key != "data file" && key != "datafile") continue;
     const std::string_view value = trimmed(line.substr(colon + 1));
+    if (key == "sizes") {
+      checkSizes(value, shown);
+      continue;
+    }
+    if (key != "data file" && key != "datafile") continue;
     if (value == "-") throw Error(shown + ": data file '-' (standard input) is not read");
     if (value.rfind("LIST", 0) == 0 || value.find_first_of(" \t") != std::string_view::npos)
       throw Error(shown + ": samples split over several data files are not supported (one data file)");

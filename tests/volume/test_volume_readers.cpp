@@ -383,6 +383,11 @@ TEST_CASE("NRRD reader: broken files are refused with one line naming the file")
   }
   SUBCASE("headers teem or facet cannot use") {
     checkNrrdError(dir, "sizes.nrrd", nrrdHeader("uchar", "2 2 x") + "\n" + std::string(8, '\0'), "sizes");
+    // teem called these "axis 0 size is zero!": the size as written, and which axis.
+    checkNrrdError(dir, "negative.nrrd", nrrdHeader("uchar", "-4 2 2") + "\n" + std::string(16, '\0'),
+                   "sizes: axis 0 has '-4' samples, not a whole number from 1 to 2147483647");
+    checkNrrdError(dir, "wraps.nrrd", nrrdHeader("uchar", "2 18446744073709551616 2") + "\n" + std::string(16, '\0'),
+                   "sizes: axis 1 has '18446744073709551616' samples, not a whole number from 1 to 2147483647");
     checkNrrdError(dir, "type.nrrd", nrrdHeader("shrt", "2 2 2") + "\n" + std::string(16, '\0'), "type");
     checkNrrdError(dir, "text.nrrd", "1 2 3\n4 5 6\n", "not a NRRD file");
     checkNrrdError(dir, "empty.nrrd", "", "not a NRRD file");
